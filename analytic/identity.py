@@ -1,0 +1,224 @@
+"""Deciding whether two formulas agree: symbolically when sympy can, else at many random points.
+
+Every "agrees" in the engine goes through :func:`prove_zero` (an expression vanishes identically) or
+:func:`prove_proportional` (two residuals differ by a factor that is a non-zero constant).  The
+symbolic route rewrites trigonometric and hyperbolic functions as exponentials and expands; that
+decides sums of products of exponentials of linear forms, which is what stitching produces.  Where it
+does not reach zero the expression is evaluated at random points of the physical domain at high
+precision, and the result says which route decided it.
+"""
+
+from __future__ import annotations
+
+import random
+from dataclasses import dataclass
+
+import mpmath
+import sympy as sp
+
+__all__ = [
+    "Verdict",
+    "prove_zero",
+    "prove_proportional",
+    "exponential_polynomial",
+    "factor_between",
+    "random_points",
+    "DOMAIN",
+]
+
+#: The physical domain of each primary symbol, for random sampling: (low, high).
+DOMAIN: dict[str, tuple[float, float]] = {
+    "m": (0.01, 0.95),
+    "tau": (0.2, 6.0),
+    "T": (0.2, 6.0),
+    "Q": (1.5, 40.0),
+    "t": (-3.0, 3.0),
+    "theta": (-1.2, 1.2),
+    "psi": (0.3, 9.0),
+    "omega_1": (0.5, 8.0),
+    "omega_2": (0.5, 8.0),
+    "omega_0": (0.5, 8.0),
+    "gamma": (0.01, 0.4),
+    "A_1": (-2.0, 2.0),
+    "B_1": (-2.0, 2.0),
+    "A_2": (-2.0, 2.0),
+    "B_2": (-2.0, 2.0),
+    "A": (-2.0, 2.0),
+    "B": (-2.0, 2.0),
+}
+
+
+@dataclass(frozen=True)
+class Verdict:
+    """Outcome of an identity check.
+
+    ``holds``: whether the identity holds; ``route``: ``"symbolic"`` (simplified to zero / to a
+    constant) or ``"numeric"`` (``points`` random points at ``dps`` digits, worst value ``worst``).
+    """
+
+    holds: bool
+    route: str
+    points: int = 0
+    dps: int = 0
+    worst: float = 0.0
+    factor: sp.Expr | None = None
+
+    def describe(self) -> str:
+        if self.route == "symbolic":
+            what = "simplifies symbolically to zero"
+            if self.factor is not None and self.factor != 1:
+                what = f"equal up to the constant factor {sp.sstr(self.factor)} (symbolic)"
+            return what
+        return (
+            f"checked numerically at {self.points} random points with {self.dps} digits "
+            f"(largest relative residual {self.worst:.1e}); sympy did not reduce it to zero"
+        )
+
+
+_TRIG = (sp.sin, sp.cos, sp.tan, sp.sinh, sp.cosh, sp.tanh)
+
+
+def _z_mapping(exprs):
+    rewritten = [sp.sympify(e).rewrite(_TRIG, sp.exp) for e in exprs]
+    exps = set().union(*(e.atoms(sp.exp) for e in rewritten))
+    monos: dict[sp.Expr, list[sp.Rational]] = {}
+    for ex in exps:
+        for term in sp.Add.make_args(sp.expand(ex.args[0])):
+            c, rest = term.as_coeff_Mul()
+            monos.setdefault(rest, []).append(sp.Rational(c))
+    zs = {}
+    for k, (mono, cs) in enumerate(sorted(monos.items(), key=lambda kv: sp.default_sort_key(kv[0]))):
+        lcm = 1
+        for c in cs:
+            lcm = sp.ilcm(lcm, c.q)
+        zs[mono] = (sp.Symbol(f"_z{k}"), lcm)
+    rep = {}
+    for ex in exps:
+        val = sp.Integer(1)
+        for term in sp.Add.make_args(sp.expand(ex.args[0])):
+            c, rest = term.as_coeff_Mul()
+            z, lcm = zs[rest]
+            val *= z ** (c * lcm)
+        rep[ex] = val
+    back = {z: sp.exp(mono / lcm) for mono, (z, lcm) in zs.items()}
+    return [e.xreplace(rep) for e in rewritten], back
+
+
+def exponential_polynomial(*exprs: sp.Expr) -> list[sp.Expr]:
+    """Rewrite trigonometric and hyperbolic functions as exponentials, then each exponential as a
+    monomial in fresh symbols ``_z0, _z1, ...`` (one per linear form in the exponents), with one
+    mapping shared by all ``exprs``.
+
+    An expression built from sums and products of such functions with rational coefficients becomes
+    a rational function; it vanishes identically iff that rational function is zero.  Only the
+    functions in ``_TRIG`` are rewritten (``x**2`` must not become ``exp(2 log x)``).
+    """
+    return _z_mapping(exprs)[0]
+
+
+def factor_between(a: sp.Expr, b: sp.Expr) -> sp.Expr | None:
+    """The factor ``F`` with ``a = F * b`` if it is free of the oscillating parts, else ``None``.
+
+    Both sides become rational functions of the exponential monomials (:func:`exponential_polynomial`)
+    and their ratio is cancelled; a ratio that still depends on a monomial carrying ``I`` (an
+    oscillation) is not a factor we accept.  Real exponentials (``p = exp(-gamma T)``) may remain.
+    """
+    (za, zb), back = _z_mapping([a, b])
+    ratio = sp.cancel(za / zb)
+    osc = {z for z, e in back.items() if e.args[0].has(sp.I)}
+    if ratio.free_symbols & osc:
+        return None
+    return sp.simplify(ratio.xreplace(back))
+
+
+def _symbolic_zero(expr: sp.Expr) -> bool:
+    if expr == 0:
+        return True
+    try:
+        return sp.cancel(exponential_polynomial(expr)[0]) == 0
+    except (TypeError, ValueError, NotImplementedError, sp.PolynomialError):  # pragma: no cover
+        return False
+
+
+def random_points(symbols, count: int, seed: int = 20130101):
+    """``count`` dicts of random values for ``symbols`` inside :data:`DOMAIN` (fixed seed)."""
+    rng = random.Random(seed)
+    out = []
+    for _ in range(count):
+        point = {}
+        for s in symbols:
+            lo, hi = DOMAIN.get(s.name, (0.1, 2.0))
+            point[s] = sp.Float(rng.uniform(lo, hi), 30)
+        out.append(point)
+    return out
+
+
+def _numeric_zero(expr: sp.Expr, scale: sp.Expr, points: int, dps: int) -> tuple[bool, float]:
+    symbols = sorted(expr.free_symbols | scale.free_symbols, key=lambda s: s.name)
+    f = sp.lambdify(symbols, expr, modules="mpmath")
+    h = sp.lambdify(symbols, scale, modules="mpmath")
+    worst = mpmath.mpf(0)
+    tol = mpmath.mpf(10) ** (-(dps - 10))
+    with mpmath.workdps(dps):
+        for pt in random_points(symbols, points):
+            args = [mpmath.mpf(str(pt[s])) for s in symbols]
+            try:
+                val = f(*args)
+                ref = h(*args)
+            except (ZeroDivisionError, ValueError):
+                continue
+            val = abs(mpmath.mpmathify(val))
+            ref = abs(mpmath.mpmathify(ref))
+            rel = val / ref if ref > tol else val
+            worst = max(worst, rel)
+    return worst < tol, float(worst)
+
+
+def prove_zero(expr: sp.Expr, *, scale: sp.Expr | None = None, points: int = 24, dps: int = 40) -> Verdict:
+    """Decide whether ``expr`` vanishes identically on the physical domain.
+
+    ``scale`` (default: 1) sets what a residual is measured against in the numeric route; pass the
+    size of the terms that cancel so that the check is relative.
+    """
+    expr = sp.sympify(expr)
+    if _symbolic_zero(expr):
+        return Verdict(True, "symbolic")
+    scale = sp.Integer(1) if scale is None else sp.sympify(scale)
+    ok, worst = _numeric_zero(expr, scale, points, dps)
+    return Verdict(ok, "numeric", points, dps, worst)
+
+
+def prove_proportional(a: sp.Expr, b: sp.Expr, *, points: int = 24, dps: int = 40) -> Verdict:
+    """Decide whether ``a = c * b`` for a non-zero constant ``c`` (two forms of one equation ``= 0``).
+
+    Tries ``a - b`` and ``a + b`` symbolically first, then the ratio ``a / b`` at random points.
+    """
+    a, b = sp.sympify(a), sp.sympify(b)
+    for c in (sp.Integer(1), sp.Integer(-1)):
+        if _symbolic_zero(a - c * b):
+            return Verdict(True, "symbolic", factor=c)
+    za, zb = exponential_polynomial(a, b)
+    ratio = sp.cancel(za / zb)
+    if ratio.free_symbols == set() and ratio != 0:
+        return Verdict(True, "symbolic", factor=ratio)
+    symbols = sorted(a.free_symbols | b.free_symbols, key=lambda s: s.name)
+    fa = sp.lambdify(symbols, a, modules="mpmath")
+    fb = sp.lambdify(symbols, b, modules="mpmath")
+    ratios = []
+    with mpmath.workdps(dps):
+        for pt in random_points(symbols, points):
+            args = [mpmath.mpf(str(pt[s])) for s in symbols]
+            try:
+                va, vb = mpmath.mpmathify(fa(*args)), mpmath.mpmathify(fb(*args))
+            except (ZeroDivisionError, ValueError):
+                continue
+            if abs(vb) < mpmath.mpf(10) ** (-dps // 2):
+                continue
+            ratios.append(va / vb)
+        if not ratios:
+            return Verdict(False, "numeric", points, dps, float("inf"))
+        c0 = ratios[0]
+        worst = max(abs(rt - c0) / max(abs(c0), mpmath.mpf(1)) for rt in ratios)
+        ok = abs(c0) > mpmath.mpf(10) ** (-10) and worst < mpmath.mpf(10) ** (-(dps - 10))
+        factor = sp.nsimplify(sp.Float(str(c0), 20), rational=True) if ok else None
+    return Verdict(ok, "numeric", len(ratios), dps, float(worst), factor)

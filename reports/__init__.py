@@ -1,0 +1,1 @@
+"""The front: the ``paramres`` command line, LaTeX report, figures and tables."""

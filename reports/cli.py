@@ -1,0 +1,67 @@
+"""The ``paramres`` command: one sub-command per module in :mod:`reports.commands`.
+
+Each command module defines ``register(subparsers)``, which adds its parser and sets
+``func(args) -> int`` as the parser's default.  Bad input of any kind -- an argparse error or an
+:class:`verify.inputs.InputError` raised anywhere below -- ends as ``paramres: error: ...`` on stderr
+with exit status 2 and no traceback.
+"""
+
+from __future__ import annotations
+
+import argparse
+import importlib
+import pkgutil
+import sys
+
+from verify.inputs import InputError
+
+from . import commands
+
+__all__ = ["main", "build_parser"]
+
+PROG = "paramres"
+
+
+class _Parser(argparse.ArgumentParser):
+    def error(self, message: str):  # argparse calls this for malformed command lines
+        self.print_usage(sys.stderr)
+        self.exit(2, f"{PROG}: error: {message}\n")
+
+
+def build_parser() -> argparse.ArgumentParser:
+    parser = _Parser(
+        prog=PROG,
+        description=(
+            "Regions of parametric excitation of a pendulum whose length is modulated by a square "
+            "wave: symbolic derivations, certified high-precision boundaries, checks of the paper "
+            "(Butikov, 'Pendulum with modulated length II'). Periods are in units of T0, depth is m "
+            "(0 < m < 1), friction is the quality factor Q."
+        ),
+    )
+    sub = parser.add_subparsers(dest="command", metavar="COMMAND", parser_class=_Parser)
+    sub.required = True
+    for info in sorted(pkgutil.iter_modules(commands.__path__), key=lambda i: i.name):
+        if info.name.startswith("_"):
+            continue
+        module = importlib.import_module(f"{commands.__name__}.{info.name}")
+        module.register(sub)
+    return parser
+
+
+def main(argv: list[str] | None = None) -> int:
+    parser = build_parser()
+    args = parser.parse_args(argv)
+    try:
+        return int(args.func(args) or 0)
+    except InputError as exc:
+        print(f"{PROG}: error: {exc}", file=sys.stderr)
+        return 2
+    except KeyboardInterrupt:  # pragma: no cover
+        print(f"{PROG}: interrupted", file=sys.stderr)
+        return 130
+    except BrokenPipeError:  # pragma: no cover - e.g. `paramres table | head`
+        return 0
+
+
+if __name__ == "__main__":  # pragma: no cover
+    sys.exit(main())

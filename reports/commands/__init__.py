@@ -1,0 +1,1 @@
+"""One module per ``paramres`` sub-command; each defines ``register(subparsers)``."""
