@@ -22,6 +22,7 @@ __all__ = [
     "prove_proportional",
     "exponential_polynomial",
     "factor_between",
+    "prove_multiple",
     "random_points",
     "DOMAIN",
 ]
@@ -124,11 +125,42 @@ def factor_between(a: sp.Expr, b: sp.Expr) -> sp.Expr | None:
     oscillation) is not a factor we accept.  Real exponentials (``p = exp(-gamma T)``) may remain.
     """
     (za, zb), back = _z_mapping([a, b])
+    if zb == 0:
+        return None
     ratio = sp.cancel(za / zb)
     osc = {z for z, e in back.items() if e.args[0].has(sp.I)}
-    if ratio.free_symbols & osc:
+    if ratio.free_symbols & osc or ratio == 0:
         return None
-    return sp.simplify(ratio.xreplace(back))
+    return sp.factor(ratio).xreplace(back)
+
+
+def prove_multiple(a: sp.Expr, b: sp.Expr) -> Verdict:
+    """Decide whether ``a = F * b`` for a factor ``F`` free of the oscillating parts.
+
+    When :func:`factor_between` finds ``F`` the identity holds by construction (the ratio of the two
+    rational functions *is* ``F``), so this is a symbolic proof and ``F`` is recorded in the verdict.
+    Otherwise falls back to :func:`prove_proportional` (a constant factor, numerically if need be).
+    """
+    screen = _ratio_screen(a, b)
+    if screen is not None:
+        return screen
+    fac = factor_between(a, b)
+    if fac is not None:
+        return Verdict(True, "symbolic", factor=fac)
+    # the exact ratio depends on an oscillation: not a multiple (the numeric look guards against a
+    # relation between the symbols that the rational-function view cannot see)
+    return prove_proportional(a, b, points=12, dps=30, numeric_only=True)
+
+
+def _ratio_screen(a: sp.Expr, b: sp.Expr) -> Verdict | None:
+    """A cheap structural look first: if one side oscillates in an argument the other does not
+    have, no factor free of oscillations can join them; decide that case numerically (constant
+    ratio or not) instead of attempting an expensive cancellation.  ``None``: go on."""
+    (za, zb), back = _z_mapping([a, b])
+    osc = {z for z, e in back.items() if e.args[0].has(sp.I)}
+    if (za.free_symbols & osc) != (zb.free_symbols & osc):
+        return prove_proportional(a, b, points=12, dps=30, numeric_only=True)
+    return None
 
 
 def _symbolic_zero(expr: sp.Expr) -> bool:
@@ -155,8 +187,8 @@ def random_points(symbols, count: int, seed: int = 20130101):
 
 def _numeric_zero(expr: sp.Expr, scale: sp.Expr, points: int, dps: int) -> tuple[bool, float]:
     symbols = sorted(expr.free_symbols | scale.free_symbols, key=lambda s: s.name)
-    f = sp.lambdify(symbols, expr, modules="mpmath")
-    h = sp.lambdify(symbols, scale, modules="mpmath")
+    f = sp.lambdify(symbols, expr, modules="mpmath", dummify=True)
+    h = sp.lambdify(symbols, scale, modules="mpmath", dummify=True)
     worst = mpmath.mpf(0)
     tol = mpmath.mpf(10) ** (-(dps - 10))
     with mpmath.workdps(dps):
@@ -188,22 +220,26 @@ def prove_zero(expr: sp.Expr, *, scale: sp.Expr | None = None, points: int = 24,
     return Verdict(ok, "numeric", points, dps, worst)
 
 
-def prove_proportional(a: sp.Expr, b: sp.Expr, *, points: int = 24, dps: int = 40) -> Verdict:
+def prove_proportional(
+    a: sp.Expr, b: sp.Expr, *, points: int = 24, dps: int = 40, numeric_only: bool = False
+) -> Verdict:
     """Decide whether ``a = c * b`` for a non-zero constant ``c`` (two forms of one equation ``= 0``).
 
-    Tries ``a - b`` and ``a + b`` symbolically first, then the ratio ``a / b`` at random points.
+    Tries ``a - b`` and ``a + b`` symbolically first (unless ``numeric_only``), then the ratio
+    ``a / b`` at random points.
     """
     a, b = sp.sympify(a), sp.sympify(b)
-    for c in (sp.Integer(1), sp.Integer(-1)):
-        if _symbolic_zero(a - c * b):
-            return Verdict(True, "symbolic", factor=c)
-    za, zb = exponential_polynomial(a, b)
-    ratio = sp.cancel(za / zb)
-    if ratio.free_symbols == set() and ratio != 0:
-        return Verdict(True, "symbolic", factor=ratio)
+    if not numeric_only:
+        for c in (sp.Integer(1), sp.Integer(-1)):
+            if _symbolic_zero(a - c * b):
+                return Verdict(True, "symbolic", factor=c)
+        za, zb = exponential_polynomial(a, b)
+        ratio = sp.cancel(za / zb)
+        if ratio.free_symbols == set() and ratio != 0:
+            return Verdict(True, "symbolic", factor=ratio)
     symbols = sorted(a.free_symbols | b.free_symbols, key=lambda s: s.name)
-    fa = sp.lambdify(symbols, a, modules="mpmath")
-    fb = sp.lambdify(symbols, b, modules="mpmath")
+    fa = sp.lambdify(symbols, a, modules="mpmath", dummify=True)
+    fb = sp.lambdify(symbols, b, modules="mpmath", dummify=True)
     ratios = []
     with mpmath.workdps(dps):
         for pt in random_points(symbols, points):

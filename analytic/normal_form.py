@@ -173,12 +173,12 @@ def edge_factor_link(kind: EdgeKind) -> Link:
     multiple = factor_between(det, fac)
     if multiple is None:  # pragma: no cover - would mean the shape is not an edge of this factor
         return Link(f"edge factor of {kind.value}", det, fac, "not proportional", Verdict(False, "symbolic"))
-    multiple = sp.factor(multiple)
-    return _link(
+    return Link(
         f"edge factor of {kind.value}",
         det,
         multiple * fac,
         "product to sum in the quarter-period phases; q = (1+m)^2 omega1 / ((1-m)^2 omega2)",
+        Verdict(True, "symbolic", factor=multiple),
     )
 
 

@@ -123,13 +123,14 @@ class StitchingSystem:
 
 
 def _linear_matrix(residuals, unknowns) -> sp.Matrix:
+    """Coefficients of the unknowns in each residual, kept in the factored form the conditions
+    produce (``(1+m)**2`` stays ``(1+m)**2``); linearity and homogeneity are checked."""
     rows = []
     for res in residuals:
-        res = sp.expand(res)
-        row = [sp.expand(sp.diff(res, u)) for u in unknowns]
+        row = [sp.diff(res, u) for u in unknowns]
         rest = sp.expand(res - sum(c * u for c, u in zip(row, unknowns)))
-        if rest != 0:  # pragma: no cover - a bug in a segment definition
-            raise ValueError(f"condition is not linear homogeneous in {unknowns}: {rest}")
+        if rest != 0 or any(sp.diff(c, u) != 0 for c in row for u in unknowns):  # pragma: no cover
+            raise ValueError(f"condition is not linear homogeneous in {unknowns}: {res}")
         rows.append(row)
     return sp.Matrix(rows)
 

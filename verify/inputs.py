@@ -23,6 +23,7 @@ __all__ = [
     "as_damping",
     "as_range",
     "as_tolerance",
+    "as_period",
     "DIGITS_RANGE",
     "MAX_ORDER",
 ]
@@ -45,7 +46,7 @@ def as_depth(m) -> Fraction | mpmath.mpf:
     an mpmath ``mpf`` is kept as it is.
     """
     if isinstance(m, bool):
-        raise InputError(f"depth m must be a number in (0, 1), got {m!r}")
+        raise InputError(f"depth m = {m!r} is not a number; allowed range 0 < m < 1")
     try:
         if isinstance(m, Fraction):
             val = m
@@ -53,11 +54,11 @@ def as_depth(m) -> Fraction | mpmath.mpf:
             val = Fraction(m)
         elif isinstance(m, float):
             if not math.isfinite(m):
-                raise InputError(f"depth m must be a finite number in (0, 1), got {m!r}")
+                raise InputError(f"depth m = {m!r} is not finite; allowed range 0 < m < 1")
             val = Fraction(m)
         elif isinstance(m, mpmath.mpf):
             if not mpmath.isfinite(m):
-                raise InputError(f"depth m must be a finite number in (0, 1), got {m}")
+                raise InputError(f"depth m = {m} is not finite; allowed range 0 < m < 1")
             if not 0 < m < 1:
                 raise InputError(f"depth m = {m} is outside the allowed range 0 < m < 1")
             return m
@@ -225,3 +226,41 @@ def as_range(spec: str, *, name: str = "m", low=Fraction(0), high=Fraction(1), m
     if count > max_points:
         raise InputError(f"{name} range {spec!r} has {count} points; at most {max_points} allowed")
     return [start + k * step for k in range(count)]
+
+
+#: the largest modulation period accepted, in units of T0
+MAX_PERIOD = 10**6
+
+
+def as_period(T, *, name: str = "period T/T0") -> Fraction | mpmath.mpf:
+    """A modulation period in units of ``T0``, ``0 < T <= MAX_PERIOD``, kept exact where it can be
+    (the same conversions as :func:`as_depth`)."""
+    if isinstance(T, bool):
+        raise InputError(f"{name} must be a number > 0, got {T!r}")
+    try:
+        if isinstance(T, mpmath.mpf):
+            if not mpmath.isfinite(T):
+                raise InputError(f"{name} must be finite, got {T}")
+            val = T
+        elif isinstance(T, float):
+            if not math.isfinite(T):
+                raise InputError(f"{name} must be finite, got {T!r}")
+            val = Fraction(T)
+        elif isinstance(T, str):
+            text = T.strip()
+            if not re.fullmatch(r"[+-]?(\d+(\.\d*)?|\.\d+)([eE][+-]?\d+)?(/\d+)?", text):
+                raise InputError(
+                    f"{name} = {T!r} is not a number; allowed range 0 < T <= {MAX_PERIOD}"
+                )
+            val = Fraction(text)
+        else:
+            val = Fraction(T)
+    except (TypeError, ValueError, ZeroDivisionError) as exc:
+        if isinstance(exc, InputError):
+            raise
+        raise InputError(
+            f"{name} = {T!r} is not a number; allowed range 0 < T <= {MAX_PERIOD}"
+        ) from None
+    if not 0 < val <= MAX_PERIOD:
+        raise InputError(f"{name} = {T} is outside the allowed range 0 < T <= {MAX_PERIOD}")
+    return val

@@ -1,0 +1,83 @@
+"""The catalogue: every numbered formula of the paper, printed form against derived form.
+
+A row is produced by a *provider*: a function registered with :func:`row` that builds the printed
+formula (transcribed from the paper: the thing being checked), derives the same result with the
+engine, decides agreement through :mod:`analytic.identity` and explains a difference.  Providers live
+in the modules listed in :data:`PROVIDERS`; :func:`catalogue` runs them all and returns the rows in
+the order of the paper's equation numbers.
+"""
+
+from __future__ import annotations
+
+import importlib
+import re
+from collections.abc import Callable
+from dataclasses import asdict, dataclass
+from functools import lru_cache
+
+from .cache import disk_cached
+
+__all__ = ["Row", "row", "catalogue", "PROVIDERS", "equation_key"]
+
+#: modules whose import registers providers
+PROVIDERS = ("analytic.catalogue_rows", "analytic.catalogue_series")
+
+
+@dataclass(frozen=True)
+class Row:
+    """One numbered result.
+
+    ``status`` is ``"agrees"`` or ``"differs"``; ``printed`` and ``derived`` are LaTeX; ``how`` says
+    how agreement was established (symbolic simplification to zero, or the numeric identity check
+    and its size) or what the correct form is and how the printed one differs.
+    """
+
+    equation: str
+    status: str
+    printed: str
+    derived: str
+    how: str
+    title: str = ""
+
+    def as_json(self) -> dict:
+        d = asdict(self)
+        return {k: d[k] for k in ("equation", "status", "printed", "derived", "how", "title")}
+
+
+_REGISTRY: dict[str, Callable[[], Row | list[Row]]] = {}
+
+
+def row(equation: str):
+    """Register the provider of the row(s) for ``equation`` (``"18"``, ``"10-11"``, ``"IC-15"``)."""
+
+    def deco(fn: Callable[[], Row | list[Row]]):
+        if equation in _REGISTRY:
+            raise ValueError(f"two providers for equation {equation}")
+        _REGISTRY[equation] = fn
+        return fn
+
+    return deco
+
+
+def equation_key(label: str) -> tuple:
+    """Sort key: the first number in the label, then the label (``"IC-15"`` sorts after ``"15"``)."""
+    nums = re.findall(r"\d+", label)
+    return (int(nums[0]) if nums else 10**6, 0 if label[0].isdigit() else 1, label)
+
+
+@lru_cache(maxsize=1)
+@disk_cached("catalogue")
+def catalogue() -> tuple[Row, ...]:
+    """All rows, in the order of the paper's equation numbers (cached on disk, see
+    :mod:`analytic.cache`)."""
+    for name in PROVIDERS:
+        try:
+            importlib.import_module(name)
+        except ModuleNotFoundError as exc:  # a provider module not written yet
+            if exc.name != name:
+                raise
+    rows: list[Row] = []
+    for label in sorted(_REGISTRY, key=equation_key):
+        out = _REGISTRY[label]()
+        rows.extend(out if isinstance(out, list) else [out])
+    return tuple(rows)

@@ -1,0 +1,34 @@
+"""The catalogue command, and the CLI's handling of bad command lines."""
+
+import json
+import subprocess
+import sys
+
+import pytest
+
+from reports.cli import main
+
+
+def _run(*args):
+    return subprocess.run([sys.executable, "-m", "reports.cli", *args], capture_output=True, text=True)
+
+
+def test_catalogue_json(capsys):
+    assert main(["catalogue", "--json"]) == 0
+    rows = json.loads(capsys.readouterr().out)
+    assert {"equation", "status", "printed", "derived", "how"} <= set(rows[0])
+    assert any(r["status"] == "differs" for r in rows)
+
+
+def test_catalogue_text_only_differs(capsys):
+    assert main(["catalogue", "--only", "differs"]) == 0
+    out = capsys.readouterr().out
+    assert "(23)" in out and "ok " not in out
+
+
+@pytest.mark.parametrize("args", [["catalogue", "--bogus"], ["nonsense"], [], ["catalogue", "--only", "maybe"]])
+def test_bad_command_lines(args):
+    r = _run(*args)
+    assert r.returncode == 2
+    assert "paramres: error:" in r.stderr
+    assert "Traceback" not in r.stderr

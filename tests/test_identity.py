@@ -1,0 +1,49 @@
+"""The identity checks that every 'agrees' of the engine rests on: they must prove true identities
+and refuse false ones (a checker that always says yes would make every other test meaningless)."""
+
+import sympy as sp
+
+from analytic.identity import factor_between, prove_multiple, prove_proportional, prove_zero
+
+x, y, b = sp.symbols("x y beta", positive=True)
+K = sp.Symbol("K")
+
+
+def test_true_trig_identity_is_symbolic():
+    v = prove_zero(sp.cos(x) ** 2 + sp.sin(x) ** 2 - 1)
+    assert v.holds and v.route == "symbolic"
+
+
+def test_product_to_sum_with_free_coefficient():
+    lhs = 2 * sp.cos(x - y) * sp.cos(x + y) - K * sp.sin(x - y) * sp.sin(x + y)
+    rhs = (K + 2) * sp.cos(x) ** 2 - (K - 2) * sp.cos(y) ** 2 - 2
+    assert prove_zero(lhs - rhs).holds
+    assert not prove_zero(lhs - rhs - sp.cos(y) ** 2 / 1000).holds
+
+
+def test_powers_are_not_rewritten_as_exponentials():
+    # x**2 must stay algebraic: (1+b)^3/(1-b)^3 style identities
+    q = ((1 + b) / (1 - b)) ** 3
+    r = b * (3 + b**2) / (1 + 3 * b**2)
+    assert prove_zero((q - 1) / (q + 1) - r).holds
+    assert not prove_zero((q - 1) / (q + 1) - r * (1 + b / 10**6)).holds
+
+
+def test_false_identity_is_refused_numerically():
+    v = prove_zero(sp.sin(2 * x) - 2 * sp.sin(x))
+    assert not v.holds and v.route == "numeric" and v.worst > 1e-3
+
+
+def test_factor_between_finds_non_oscillating_factor():
+    fac = factor_between((1 + b) * sp.sin(2 * x), sp.sin(x) * sp.cos(x))
+    assert sp.simplify(fac - 2 * (1 + b)) == 0
+    # a ratio that oscillates is not a factor we accept
+    assert factor_between(sp.sin(2 * x), sp.sin(x)) is None
+
+
+def test_prove_multiple_and_proportional():
+    assert prove_multiple(sp.exp(-x) * (sp.cos(x) + 1), 2 * sp.cos(x / 2) ** 2).holds
+    assert not prove_multiple(sp.cos(x) + 1, sp.cos(x) - 1).holds
+    v = prove_proportional(sp.sin(2 * x), 4 * sp.sin(x) * sp.cos(x))
+    assert v.holds and v.factor == sp.Rational(1, 2)
+    assert not prove_proportional(sp.sin(x), sp.cos(x)).holds

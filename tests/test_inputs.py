@@ -1,0 +1,76 @@
+"""Input checks: every bad value refused with a message naming it and the allowed range."""
+
+from fractions import Fraction
+
+import mpmath
+import pytest
+
+from verify.inputs import (
+    InputError,
+    as_damping,
+    as_depth,
+    as_digits,
+    as_order,
+    as_orders,
+    as_quality,
+    as_range,
+)
+
+
+@pytest.mark.parametrize("m,expected", [("3/5", Fraction(3, 5)), ("0.3", Fraction(3, 10)), (Fraction(1, 7), Fraction(1, 7)),
+                                        ("1e-12", Fraction(1, 10**12)), (0.5, Fraction(1, 2))])
+def test_depth_exact(m, expected):
+    assert as_depth(m) == expected
+
+
+def test_depth_mpf_kept():
+    v = mpmath.mpf("0.25")
+    assert as_depth(v) is v
+
+
+@pytest.mark.parametrize("bad", [0, 1, "1", "-0.1", "1.5", "nan", float("nan"), float("inf"), "abc", "", "3/0", True, None])
+def test_depth_refused(bad):
+    with pytest.raises(InputError) as e:
+        as_depth(bad)
+    assert "0 < m < 1" in str(e.value) or "not a number" in str(e.value)
+
+
+@pytest.mark.parametrize("bad", [0, -1, "0", "1.5", 2.5, "x", True, 10**9])
+def test_order_refused(bad):
+    with pytest.raises(InputError):
+        as_order(bad)
+
+
+def test_orders_parsing():
+    assert as_orders("1-6") == [1, 2, 3, 4, 5, 6]
+    assert as_orders("5,1,3") == [1, 3, 5]
+    assert as_orders(range(1, 4)) == [1, 2, 3]
+    for bad in ("", "6-1", "0-3", "a-b", "1,,2"):
+        with pytest.raises(InputError):
+            as_orders(bad)
+
+
+def test_quality():
+    assert as_quality(None) is None and as_quality("none") is None
+    assert as_quality("7") == 7
+    for bad in (0, -3, "0", "nan", float("nan"), float("inf"), "x"):
+        with pytest.raises(InputError):
+            as_quality(bad)
+
+
+def test_digits_and_damping():
+    assert as_digits("50") == 50
+    for bad in (4, 10**5, "x", 3.5, -1):
+        with pytest.raises(InputError):
+            as_digits(bad)
+    assert as_damping("PAPER") == "paper"
+    with pytest.raises(InputError):
+        as_damping("viscous")
+
+
+def test_range():
+    assert len(as_range("0.1:0.9:0.1")) == 9
+    assert as_range("0.05:0.05:0.1") == [Fraction(1, 20)]
+    for bad in ("0.1:0.9", "0:0.5:0.1", "0.1:1:0.1", "0.5:0.1:0.1", "0.1:0.9:0", "a:b:c", "0.1:0.9:-0.1"):
+        with pytest.raises(InputError):
+            as_range(bad)
