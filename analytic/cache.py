@@ -55,7 +55,14 @@ def disk_cached(name: str):
             try:
                 with open(path, "rb") as fh:
                     return pickle.load(fh)
-            except (OSError, pickle.UnpicklingError, EOFError, AttributeError, ImportError, TypeError):
+            except (
+                OSError,
+                pickle.UnpicklingError,
+                EOFError,
+                AttributeError,
+                ImportError,
+                TypeError,
+            ):
                 pass
             value = fn()
             try:

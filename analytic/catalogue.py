@@ -2,7 +2,8 @@
 
 A row is produced by a *provider*: a function registered with :func:`row` that builds the printed
 formula (transcribed from the paper: the thing being checked), derives the same result with the
-engine, decides agreement through :mod:`analytic.identity` and explains a difference.  Providers live
+engine, decides agreement through :mod:`analytic.identity` and explains a difference.  Providers
+live
 in the modules listed in :data:`PROVIDERS`; :func:`catalogue` runs them all and returns the rows in
 the order of the paper's equation numbers.
 """
@@ -60,7 +61,8 @@ def row(equation: str):
 
 
 def equation_key(label: str) -> tuple:
-    """Sort key: the first number in the label, then the label (``"IC-15"`` sorts after ``"15"``)."""
+    """Sort key: the first number in the label, then the label (``"IC-15"`` sorts after
+    ``"15"``)."""
     nums = re.findall(r"\d+", label)
     return (int(nums[0]) if nums else 10**6, 0 if label[0].isdigit() else 1, label)
 

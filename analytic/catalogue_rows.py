@@ -1,9 +1,11 @@
 """Catalogue rows for the paper's exact (non-series) results: printed form against derived form.
 
 Agreement means: each printed equation is a non-vanishing multiple of the derived one once the
-abbreviations (``q, p, omega_av, ...``) are expanded, decided by :mod:`analytic.identity` (the factor
+abbreviations (``q, p, omega_av, ...``) are expanded, decided by :mod:`analytic.identity` (the
+factor
 is found as the ratio of the two sides and must be free of the oscillating parts; otherwise random
-points at 40 digits).  A difference is described by the smallest sub-expressions in which the printed
+points at 40 digits).  A difference is described by the smallest sub-expressions in which the
+printed
 and derived forms part (:func:`difference`), and the derived form is given as the correct one.
 """
 
@@ -48,7 +50,7 @@ def difference(a: sp.Basic, b: sp.Basic) -> list[tuple[sp.Basic, sp.Basic]]:
     if len(a.args) != len(b.args):
         return [(a, b)]
     out = []
-    for x, y in zip(a.args, b.args):
+    for x, y in zip(a.args, b.args, strict=True):
         out.extend(difference(x, y))
     return out
 
@@ -89,7 +91,9 @@ def _how_agrees(verdicts: list[Verdict], extra: str = "") -> str:
         text += " up to the non-vanishing factor" + ("s " if len(facs) > 1 else " ")
         text += ", ".join(f"${sp.latex(f)}$" for f in facs)
     if routes == {"symbolic"}:
-        text += "; decided symbolically (exact rational identity after expanding the abbreviations)."
+        text += (
+            "; decided symbolically (exact rational identity after expanding the abbreviations)."
+        )
     else:
         num = [v for v in verdicts if v.route == "numeric"]
         text += "; " + num[0].describe() + "."
@@ -100,18 +104,24 @@ def _how_differs(pe: sp.Equality, de: sp.Equality) -> str:
     flipped = sp.Eq(-de.lhs, -de.rhs, evaluate=False)
     parts = min(difference(pe, de), difference(pe, flipped), key=len)
     de = de if parts == difference(pe, de) else flipped
-    shown = "; ".join(f"printed ${sp.latex(x)}$ where the derivation gives ${sp.latex(y)}$" for x, y in parts[:3])
+    shown = "; ".join(
+        f"printed ${sp.latex(x)}$ where the derivation gives ${sp.latex(y)}$" for x, y in parts[:3]
+    )
     return f"Misprint: {shown}. The correct form is ${sp.latex(de)}$."
 
 
 def _compare_row(label: str, title: str, derived: tuple, extra: str = "") -> Row:
     pr = printed()[label]
-    verdicts = [compare_equations(p_, d_) for p_, d_ in zip(pr, derived)]
+    verdicts = [compare_equations(p_, d_) for p_, d_ in zip(pr, derived, strict=True)]
     if all(v.holds for v in verdicts):
-        return Row(label, "agrees", _latex(pr), _latex(derived), _how_agrees(verdicts, extra), title)
+        return Row(
+            label, "agrees", _latex(pr), _latex(derived), _how_agrees(verdicts, extra), title
+        )
     bad = [k for k, v in enumerate(verdicts) if not v.holds]
     how = " ".join(_how_differs(pr[k], derived[k]) for k in bad)
-    return Row(label, "differs", _latex(pr), _latex(derived), how + (" " + extra if extra else ""), title)
+    return Row(
+        label, "differs", _latex(pr), _latex(derived), how + (" " + extra if extra else ""), title
+    )
 
 
 def _steps(key: str, label: str) -> tuple:
@@ -125,11 +135,17 @@ def _steps(key: str, label: str) -> tuple:
 def _eq1() -> Row:
     # exact tuning (6) at m -> 0: T_av -> T0
     n = S.n
-    Tav_m = (2 * sp.pi / ((S.omega0 / sp.sqrt(1 + S.m) + S.omega0 / sp.sqrt(1 - S.m)) / 2))
+    Tav_m = 2 * sp.pi / ((S.omega0 / sp.sqrt(1 + S.m) + S.omega0 / sp.sqrt(1 - S.m)) / 2)
     T_lim = sp.limit(n * Tav_m / 2, S.m, 0)
-    derived = (sp.Eq(sp.Symbol(r"\omega"), 2 * sp.pi / T_lim), sp.Eq(S.T, T_lim.subs(S.omega0, 2 * sp.pi / S.T0)))
+    derived = (
+        sp.Eq(sp.Symbol(r"\omega"), 2 * sp.pi / T_lim),
+        sp.Eq(S.T, T_lim.subs(S.omega0, 2 * sp.pi / S.T0)),
+    )
     pr = printed()["1"]
-    v = [prove_zero(sp.simplify(pr[0].rhs - derived[0].rhs)), prove_zero(sp.simplify(pr[1].rhs - derived[1].rhs))]
+    v = [
+        prove_zero(sp.simplify(pr[0].rhs - derived[0].rhs)),
+        prove_zero(sp.simplify(pr[1].rhs - derived[1].rhs)),
+    ]
     ok = all(x.holds for x in v)
     return Row(
         "1",
@@ -173,7 +189,8 @@ def _eq23() -> Row:
         "agrees" if ok else "differs",
         _latex(pr),
         _latex(derived),
-        "Derived from J phi'' = torque with J = M l^2, gravity -M g l sin(phi) and drag -c l^2 phi' on "
+        "Derived from J phi'' = torque with J = M l^2, gravity -M g l sin(phi) and drag -c l^2 "
+        "phi' on "
         "the bob: 2 gamma = c/M does not depend on l (same in both halves), omega_i^2 = g/l_i with "
         "l_i = l_0 (1 +- m); decided symbolically.",
         "Equations of motion in each half",
@@ -186,9 +203,17 @@ def _eq4() -> Row:
     J1, J2 = Mb * (l0 * (1 + S.m)) ** 2, Mb * (l0 * (1 - S.m)) ** 2
     d = sp.Function(r"\dot{\varphi}")
     derived = (sp.Eq(sp.factor(J1 / (Mb * l0**2)) * d(1), sp.factor(J2 / (Mb * l0**2)) * d(2)),)
-    v = prove_zero(sp.expand(J1 / (Mb * l0**2) - inertia(1)) + sp.expand(J2 / (Mb * l0**2) - inertia(2)))
-    r = _compare_row("4", "Angular-momentum jump", derived, "Angular momentum J phi' with J = M l^2 conserved.")
-    return r if v.holds else Row(r.equation, "differs", r.printed, r.derived, "inertia mismatch", r.title)
+    v = prove_zero(
+        sp.expand(J1 / (Mb * l0**2) - inertia(1)) + sp.expand(J2 / (Mb * l0**2) - inertia(2))
+    )
+    r = _compare_row(
+        "4", "Angular-momentum jump", derived, "Angular momentum J phi' with J = M l^2 conserved."
+    )
+    return (
+        r
+        if v.holds
+        else Row(r.equation, "differs", r.printed, r.derived, "inertia mismatch", r.title)
+    )
 
 
 @row("5")
@@ -216,30 +241,40 @@ def _shape_row(labels: tuple[str, str], kind: EdgeKind, title: str, amp: dict) -
         derived = (sp.Eq(phi[half](S.t), seg.phi), sp.Eq(dphi[half](S.t), seg.dphi))
         ok = same.holds and consistent.holds
         how = (
-            f"The printed segment is the engine's edge shape {kind.value} and its printed velocity is the "
+            f"The printed segment is the engine's edge shape {kind.value} and its printed "
+            "velocity is the "
             "time derivative of the printed angle; decided symbolically."
             if ok
             else f"shape: {same.describe()}; velocity: {consistent.describe()}"
         )
-        rows.append(Row(label, "agrees" if ok else "differs", _latex(pr), _latex(derived), how, title))
+        rows.append(
+            Row(label, "agrees" if ok else "differs", _latex(pr), _latex(derived), how, title)
+        )
     return rows
 
 
 @row("8-9")
 def _eq89() -> list[Row]:
-    return _shape_row(("8", "9"), EdgeKind.ODD_COS_SIN, "Segments on the lower edge of the first interval", {})
+    return _shape_row(
+        ("8", "9"), EdgeKind.ODD_COS_SIN, "Segments on the lower edge of the first interval", {}
+    )
 
 
 @row("16-17")
 def _eq1617() -> list[Row]:
     return _shape_row(
-        ("16", "17"), EdgeKind.ODD_SIN_COS, "Segments on the upper edge of the first interval", {S.B1: S.A1, S.B2: S.A2}
+        ("16", "17"),
+        EdgeKind.ODD_SIN_COS,
+        "Segments on the upper edge of the first interval",
+        {S.B1: S.A1, S.B2: S.A2},
     )
 
 
 @row("20-21")
 def _eq2021() -> list[Row]:
-    return _shape_row(("20", "21"), EdgeKind.EVEN_COS_COS, "Segments on the lower edge of the second interval", {})
+    return _shape_row(
+        ("20", "21"), EdgeKind.EVEN_COS_COS, "Segments on the lower edge of the second interval", {}
+    )
 
 
 # ---------------------------------------------------------------- odd orders, no friction
@@ -272,13 +307,17 @@ def _eq14() -> Row:
 
 @row("15")
 def _eq15() -> Row:
-    return _compare_row("15", "Fixed-point form for Delta T (first interval)", _steps("edge-odd-cos-sin", "15"))
+    return _compare_row(
+        "15", "Fixed-point form for Delta T (first interval)", _steps("edge-odd-cos-sin", "15")
+    )
 
 
 @row("IC-15")
 def _ic15() -> Row:
     return _compare_row(
-        "IC-15", "Stationary initial condition on the lower edge (after eq. 15)", _steps("initial", "IC-15")
+        "IC-15",
+        "Stationary initial condition on the lower edge (after eq. 15)",
+        _steps("initial", "IC-15"),
     )
 
 
@@ -287,14 +326,19 @@ def _ic15() -> Row:
 
 @row("22")
 def _eq22() -> Row:
-    return _compare_row("22", "Angle continuity at t = 0 (second interval)", _steps("edge-even-cos-cos", "22"))
+    return _compare_row(
+        "22", "Angle continuity at t = 0 (second interval)", _steps("edge-even-cos-cos", "22")
+    )
 
 
 @row("23")
 def _eq23() -> Row:
-    r = _compare_row("23", "Momentum jump at t = 0 (second interval)", _steps("edge-even-cos-cos", "23"))
+    r = _compare_row(
+        "23", "Momentum jump at t = 0 (second interval)", _steps("edge-even-cos-cos", "23")
+    )
     if r.status == "differs":
-        # does the printed (24) follow from the printed (22)-(23)?  (it follows from the derived ones)
+        # does the printed (24) follow from the printed (22)-(23)?  (it follows from the derived
+        # ones)
         p22, p23, p24 = printed()["22"][0], printed()["23"][0], printed()["24"][0]
         rows = [sp.expand(e.lhs - e.rhs) for e in (p22, p23)]
         Mp = sp.Matrix([[sp.diff(x, u) for u in (S.A1, S.A2)] for x in rows])
@@ -321,13 +365,17 @@ def _eq25() -> Row:
 
 @row("26")
 def _eq26() -> Row:
-    return _compare_row("26", "Fixed-point form for Delta T (second interval)", _steps("edge-even-cos-cos", "26"))
+    return _compare_row(
+        "26", "Fixed-point form for Delta T (second interval)", _steps("edge-even-cos-cos", "26")
+    )
 
 
 @row("IC-26")
 def _ic26() -> Row:
     return _compare_row(
-        "IC-26", "Stationary initial condition on the lower edge of the second interval", _steps("initial", "IC-26")
+        "IC-26",
+        "Stationary initial condition on the lower edge of the second interval",
+        _steps("initial", "IC-26"),
     )
 
 
@@ -345,7 +393,7 @@ def _eq2830() -> Row:
         sp.Eq(phi[2](S.t), s2.phi),
         sp.Eq(dphi[2](S.t), s2.dphi),
     )
-    vs = [prove_zero(a.rhs - b.rhs) for a, b in zip(pr, derived)]
+    vs = [prove_zero(a.rhs - b.rhs) for a, b in zip(pr, derived, strict=True)]
     true_d = sp.diff(s1.phi, S.t)
     dropped = sp.simplify(true_d - s1.dphi)
     ok = all(v.holds for v in vs)
@@ -354,8 +402,10 @@ def _eq2830() -> Row:
         "agrees" if ok else "differs",
         _latex(pr),
         _latex(derived),
-        "The printed segments are the engine's 'paper' damping model; decided symbolically. As the text "
-        f"says, the printed velocity is not the derivative of the angle: it drops ${sp.latex(dropped)}$ "
+        "The printed segments are the engine's 'paper' damping model; decided symbolically. As "
+        "the text "
+        "says, the printed velocity is not the derivative of the angle: it drops "
+        f"${sp.latex(dropped)}$ "
         "(valid for gamma << omega). The 'exact' model keeps it.",
         "Damped segments (paper model)",
     )
@@ -373,14 +423,18 @@ def _eq31() -> Row:
         dphi[1](S.T / 2): s1.dphi.subs(S.t, S.T / 2),
         dphi[2](-S.T / 2): s2.dphi.subs(S.t, -S.T / 2),
     }
-    vs = [prove_zero(sp.expand((a.lhs - a.rhs).subs(sub) - (b.lhs - b.rhs))) for a, b in zip(pr, (c3, c4))]
+    vs = [
+        prove_zero(sp.expand((a.lhs - a.rhs).subs(sub) - (b.lhs - b.rhs)))
+        for a, b in zip(pr, (c3, c4), strict=True)
+    ]
     ok = all(v.holds for v in vs)
     return Row(
         "31",
         "agrees" if ok else "differs",
         _latex(pr),
         _latex((c3.equation, c4.equation)),
-        "The anti-periodicity conditions the engine builds for odd orders (angle, and angular momentum across "
+        "The anti-periodicity conditions the engine builds for odd orders (angle, and angular "
+        "momentum across "
         "t = T/2); decided symbolically.",
         "Periodicity conditions, odd orders with friction",
     )
@@ -418,26 +472,42 @@ def _eq35() -> Row:
 
 @row("36")
 def _eq36() -> Row:
-    return _compare_row("36", "Boundary equation, odd orders with friction", _steps("friction-odd", "36"),
-                        "Checked squared (one sign per edge).")
+    return _compare_row(
+        "36",
+        "Boundary equation, odd orders with friction",
+        _steps("friction-odd", "36"),
+        "Checked squared (one sign per edge).",
+    )
 
 
 @row("39")
 def _eq39() -> Row:
-    return _compare_row("39", "Fixed-point form with friction (first interval)", _steps("friction-odd", "39"),
-                        "Checked squared (one sign per edge).")
+    return _compare_row(
+        "39",
+        "Fixed-point form with friction (first interval)",
+        _steps("friction-odd", "39"),
+        "Checked squared (one sign per edge).",
+    )
 
 
 @row("41")
 def _eq41() -> Row:
-    return _compare_row("41", "Boundary equation, even orders with friction", _steps("friction-even", "41"),
-                        "Checked squared (one sign per edge).")
+    return _compare_row(
+        "41",
+        "Boundary equation, even orders with friction",
+        _steps("friction-even", "41"),
+        "Checked squared (one sign per edge).",
+    )
 
 
 @row("44")
 def _eq44() -> Row:
-    return _compare_row("44", "Fixed-point form with friction (second interval)", _steps("friction-even", "44"),
-                        "Checked squared (one sign per edge).")
+    return _compare_row(
+        "44",
+        "Fixed-point form with friction (second interval)",
+        _steps("friction-even", "44"),
+        "Checked squared (one sign per edge).",
+    )
 
 
 # ------------------------------------------------------------------ statements of the text
@@ -459,9 +529,20 @@ def _reference_row(label: str, title: str, candidates: tuple[str, ...]) -> Row:
     how = (
         f"{text} At p = 1 the (squared) equation ({eq_from}) is a non-vanishing multiple of "
         + (", ".join(f"({c})" for c in matches) if matches else "none of " + ", ".join(candidates))
-        + ("; the reference is right." if ok else f"; the reference should be ({matches[0]}), not ({eq_to}).")
+        + (
+            "; the reference is right."
+            if ok
+            else f"; the reference should be ({matches[0]}), not ({eq_to})."
+        )
     )
-    return Row(label, "agrees" if ok else "differs", _latex(at_p1), _latex(printed()[matches[0]][0]) if matches else "", how, title)
+    return Row(
+        label,
+        "agrees" if ok else "differs",
+        _latex(at_p1),
+        _latex(printed()[matches[0]][0]) if matches else "",
+        how,
+        title,
+    )
 
 
 @row("39-ref")
@@ -477,8 +558,12 @@ def _ref44() -> Row:
 @row("40-ref")
 def _ref40() -> Row:
     text, eq_from, _ = CLAIMS["40-ref"]
+
     def has_radicand(e) -> bool:
-        return any(isinstance(a, sp.Pow) and a.exp == sp.S.Half and a.base.has(S.p) for a in sp.preorder_traversal(e))
+        return any(
+            isinstance(a, sp.Pow) and a.exp == sp.S.Half and a.base.has(S.p)
+            for a in sp.preorder_traversal(e)
+        )
 
     holders = [k for k, eqs in printed().items() if any(has_radicand(e) for e in eqs)]
     ok = eq_from in holders
@@ -509,12 +594,26 @@ def _claim15() -> Row:
     side = "upper (right)" if sign13 > 0 else "lower (left)"
     status = "agrees" if same_as_13 and sign13 < 0 else "differs"
     how = (
-        f"{text} Derived: for n = 3 the shape (8)-(9) of eqs. (10)-(11) gives ${sp.latex(f13)}$, whose small-m "
-        f"root has Delta T {'>' if sign13 > 0 else '<'} 0: the {side} edge. Eq. (15) with T_av/2 -> 3 T_av/2 "
-        f"{'is' if same_as_17 else 'is not'} the equation of the other shape (16)-(17), and it is that one "
-        "that gives the left edge. In general the shape of (8)-(9) gives the lower edge for n = 1, 5, 9, ... "
-        "and the upper edge for n = 3, 7, 11, ... at small m, and the two shapes swap edges at every "
-        "closing of the interval. The printed (15) with n T_av/2 does give the left edge of every odd "
-        "interval at small m; the statement that it comes from (10)-(11) holds only for n = 1, 5, 9, ..."
+        f"{text} Derived: for n = 3 the shape (8)-(9) of eqs. (10)-(11) gives ${sp.latex(f13)}$, "
+        "whose small-m "
+        f"root has Delta T {'>' if sign13 > 0 else '<'} 0: the {side} edge. Eq. (15) with T_av/2 "
+        "-> 3 T_av/2 "
+        f"{'is' if same_as_17 else 'is not'} the equation of the other shape (16)-(17), and it is "
+        "that one "
+        "that gives the left edge. In general the shape of (8)-(9) gives the lower edge for n = "
+        "1, 5, 9, ... "
+        "and the upper edge for n = 3, 7, 11, ... at small m, and the two shapes swap edges at "
+        "every "
+        "closing of the interval. The printed (15) with n T_av/2 does give the left edge of every "
+        "odd "
+        "interval at small m; the statement that it comes from (10)-(11) holds only for n = 1, 5, "
+        "9, ..."
     )
-    return Row("15-n3", status, _latex(generalised), _latex((f13, f17)), how, "Left edge of the third interval (section 3.2)")
+    return Row(
+        "15-n3",
+        status,
+        _latex(generalised),
+        _latex((f13, f17)),
+        how,
+        "Left edge of the third interval (section 3.2)",
+    )

@@ -3,7 +3,8 @@
 Every "agrees" in the engine goes through :func:`prove_zero` (an expression vanishes identically) or
 :func:`prove_proportional` (two residuals differ by a factor that is a non-zero constant).  The
 symbolic route rewrites trigonometric and hyperbolic functions as exponentials and expands; that
-decides sums of products of exponentials of linear forms, which is what stitching produces.  Where it
+decides sums of products of exponentials of linear forms, which is what stitching produces.  Where
+it
 does not reach zero the expression is evaluated at random points of the physical domain at high
 precision, and the result says which route decided it.
 """
@@ -15,6 +16,7 @@ from dataclasses import dataclass
 
 import mpmath
 import sympy as sp
+from sympy.polys.fields import sfield
 
 __all__ = [
     "Verdict",
@@ -88,7 +90,9 @@ def _z_mapping(exprs):
             c, rest = term.as_coeff_Mul()
             monos.setdefault(rest, []).append(sp.Rational(c))
     zs = {}
-    for k, (mono, cs) in enumerate(sorted(monos.items(), key=lambda kv: sp.default_sort_key(kv[0]))):
+    for k, (mono, cs) in enumerate(
+        sorted(monos.items(), key=lambda kv: sp.default_sort_key(kv[0]))
+    ):
         lcm = 1
         for c in cs:
             lcm = sp.ilcm(lcm, c.q)
@@ -117,19 +121,38 @@ def exponential_polynomial(*exprs: sp.Expr) -> list[sp.Expr]:
     return _z_mapping(exprs)[0]
 
 
+def _field_elements(exprs):
+    """The expressions as elements of one field of rational functions (sympy's sparse ``sfield``,
+    much faster than ``cancel`` on large sums), or ``None`` if they do not fit one."""
+    try:
+        _, elems = sfield(list(exprs))
+        return elems
+    except (
+        sp.PolynomialError,
+        sp.CoercionFailed,
+        ValueError,
+        TypeError,
+        NotImplementedError,
+    ):  # pragma: no cover
+        return None
+
+
 def factor_between(a: sp.Expr, b: sp.Expr) -> sp.Expr | None:
     """The factor ``F`` with ``a = F * b`` if it is free of the oscillating parts, else ``None``.
 
-    Both sides become rational functions of the exponential monomials (:func:`exponential_polynomial`)
-    and their ratio is cancelled; a ratio that still depends on a monomial carrying ``I`` (an
-    oscillation) is not a factor we accept.  Real exponentials (``p = exp(-gamma T)``) may remain.
+    Both sides become rational functions of the exponential monomials
+    (:func:`exponential_polynomial`)
+    and of the other symbols; their quotient is computed exactly in a field of rational functions,
+    so a returned ``F`` is a proof of ``a = F b``.  ``F`` may keep real exponentials
+    (``p = exp(-gamma T)``) but no oscillating one.
     """
     (za, zb), back = _z_mapping([a, b])
     if zb == 0:
         return None
-    ratio = sp.cancel(za / zb)
     osc = {z for z, e in back.items() if e.args[0].has(sp.I)}
-    if ratio.free_symbols & osc or ratio == 0:
+    elems = _field_elements([za, zb])
+    ratio = (elems[0] / elems[1]).as_expr() if elems is not None else sp.cancel(za / zb)
+    if ratio == 0 or ratio.free_symbols & osc:
         return None
     return sp.factor(ratio).xreplace(back)
 
@@ -138,7 +161,8 @@ def prove_multiple(a: sp.Expr, b: sp.Expr) -> Verdict:
     """Decide whether ``a = F * b`` for a factor ``F`` free of the oscillating parts.
 
     When :func:`factor_between` finds ``F`` the identity holds by construction (the ratio of the two
-    rational functions *is* ``F``), so this is a symbolic proof and ``F`` is recorded in the verdict.
+    rational functions *is* ``F``), so this is a symbolic proof and ``F`` is recorded in the
+    verdict.
     Otherwise falls back to :func:`prove_proportional` (a constant factor, numerically if need be).
     """
     screen = _ratio_screen(a, b)
@@ -167,7 +191,9 @@ def _symbolic_zero(expr: sp.Expr) -> bool:
     if expr == 0:
         return True
     try:
-        return sp.cancel(exponential_polynomial(expr)[0]) == 0
+        z = exponential_polynomial(expr)[0]
+        elems = _field_elements([z])
+        return (elems[0] == 0) if elems is not None else sp.cancel(z) == 0
     except (TypeError, ValueError, NotImplementedError, sp.PolynomialError):  # pragma: no cover
         return False
 
@@ -206,7 +232,9 @@ def _numeric_zero(expr: sp.Expr, scale: sp.Expr, points: int, dps: int) -> tuple
     return worst < tol, float(worst)
 
 
-def prove_zero(expr: sp.Expr, *, scale: sp.Expr | None = None, points: int = 24, dps: int = 40) -> Verdict:
+def prove_zero(
+    expr: sp.Expr, *, scale: sp.Expr | None = None, points: int = 24, dps: int = 40
+) -> Verdict:
     """Decide whether ``expr`` vanishes identically on the physical domain.
 
     ``scale`` (default: 1) sets what a residual is measured against in the numeric route; pass the
@@ -223,7 +251,8 @@ def prove_zero(expr: sp.Expr, *, scale: sp.Expr | None = None, points: int = 24,
 def prove_proportional(
     a: sp.Expr, b: sp.Expr, *, points: int = 24, dps: int = 40, numeric_only: bool = False
 ) -> Verdict:
-    """Decide whether ``a = c * b`` for a non-zero constant ``c`` (two forms of one equation ``= 0``).
+    """Decide whether ``a = c * b`` for a non-zero constant ``c`` (two forms of one equation ``=
+    0``).
 
     Tries ``a - b`` and ``a + b`` symbolically first (unless ``numeric_only``), then the ratio
     ``a / b`` at random points.

@@ -3,15 +3,18 @@
 Everything else in :mod:`analytic` is built from what this module defines, and from nothing typed in
 from the paper.  Two layers of symbols are used:
 
-* the paper's own, abstract symbols ``omega1, omega2, gamma, T, m`` in which the stitching systems are
+* the paper's own, abstract symbols ``omega1, omega2, gamma, T, m`` in which the stitching systems
+are
   written (so that the derived determinants look like the printed ones), and
 * the project's units: time in units of ``T0 = 2*pi/omega0`` (so ``omega0 = 2*pi``), the period as
   ``tau = T/T0``, damping as the quality factor ``Q = omega0/(2*gamma)`` (so ``gamma*T0 = pi/Q``).
 
 :func:`physical` maps the first onto the second.
 
-The linearised equation in each half is ``phi'' + 2*gamma*phi' + omega_i**2*phi = 0`` (eqs. 2-3), with
-``omega1 = omega0/sqrt(1+m)`` while the bob is down (``0 < t < T/2``) and ``omega2 = omega0/sqrt(1-m)``
+The linearised equation in each half is ``phi'' + 2*gamma*phi' + omega_i**2*phi = 0`` (eqs. 2-3),
+with
+``omega1 = omega0/sqrt(1+m)`` while the bob is down (``0 < t < T/2``) and ``omega2 =
+omega0/sqrt(1-m)``
 while it is up (``-T/2 < t < 0``).  At a jump the angle is continuous and the angular momentum
 ``J*phi'`` with ``J ~ l**2`` is conserved (eq. 4): ``(1+m)**2 * phi1' = (1-m)**2 * phi2'``.
 """
@@ -201,7 +204,7 @@ def physical(expr: sp.Expr, *, damping: bool = True) -> sp.Expr:
     omega_av, Delta omega, T_av, T_0, C_i, S_i`` are replaced by what they stand for.
     """
     dq = derived_quantities()
-    subs = {key: val for key, val in dq.items()}
+    subs = dict(dq)
     subs.update(damped_frequency_relations())
     expr = expr.subs(subs)
     base = {

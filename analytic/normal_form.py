@@ -18,14 +18,16 @@ The chain, each link proven by :mod:`analytic.identity`:
        even (sigma = +1):  N = sin^2 x - r^2 sin^2 y + (1 - r^2) sinh^2(gamma T/2)
 
    with ``r^2 = (K-2)/(K+2)`` (so ``r = (q-1)/(q+1)`` when ``K = q + 1/q``) and the instability
-   inside the interval where ``N < 0``.  ``x = omega_av T/2`` is the paper's average phase (``psi``),
+   inside the interval where ``N < 0``.  ``x = omega_av T/2`` is the paper's average phase
+   (``psi``),
    ``y = beta x`` with ``beta = Delta omega / (2 omega_av)``, ``gamma T/2 = g x`` with
    ``g = gamma/omega_av``.  The exact model has the same normal form with the damped frequencies.
 6. Without friction ``N`` is a difference of squares: one factor per edge,
    ``cos x -+ r cos y`` (odd), ``sin x -+ r sin y`` (even); each factor is, up to a non-vanishing
    factor, the determinant of one symmetric edge shape (:func:`analytic.stitching.edge_system`).
 7. For order ``n`` put ``x = n pi/2 + theta`` (``theta = omega_av Delta T / 2``, the paper's unknown
-   in eqs. 15, 26, 39, 44): ``cos^2 x = sin^2 theta`` for odd ``n`` and ``sin^2 x = sin^2 theta`` for
+   in eqs. 15, 26, 39, 44): ``cos^2 x = sin^2 theta`` for odd ``n`` and ``sin^2 x = sin^2 theta``
+   for
    even ``n``, so for every order ``N = sin^2 theta - R(theta)`` with
    ``R = r^2 f(beta (n pi/2 + theta))^2 - (1 - r^2) sinh^2(g (n pi/2 + theta))``, ``f = cos`` (odd)
    or ``sin`` (even).
@@ -34,13 +36,13 @@ The chain, each link proven by :mod:`analytic.identity`:
 from __future__ import annotations
 
 from dataclasses import dataclass
-from functools import lru_cache
+from functools import cache
 
 import sympy as sp
 
 from .identity import Verdict, factor_between, prove_zero
-from .model import Damping, Regime, S, inertia
-from .stitching import EdgeKind, Parity, edge_system, floquet_condition, monodromy
+from .model import Damping, S, inertia
+from .stitching import EdgeKind, Parity, edge_system, monodromy
 
 __all__ = [
     "K",
@@ -94,7 +96,7 @@ def _phases(damping: Damping) -> tuple[sp.Expr, sp.Expr]:
     return S.omega1 * S.T / 2, S.omega2 * S.T / 2
 
 
-@lru_cache(maxsize=None)
+@cache
 def det_monodromy(damping: Damping = Damping.NONE) -> Link:
     """Step 2: ``det M = p**2`` (``= 1`` without friction)."""
     damping = Damping(damping)
@@ -103,7 +105,7 @@ def det_monodromy(damping: Damping = Damping.NONE) -> Link:
     return _link("det M", sp.expand(M.det()), p2, "product of the half-period maps and the jumps")
 
 
-@lru_cache(maxsize=None)
+@cache
 def trace_form(damping: Damping = Damping.NONE) -> Link:
     """Step 3: ``tr M = p (2 c1 c2 - K s1 s2)`` for under-damped (or undamped) halves."""
     damping = Damping(damping)
@@ -114,7 +116,7 @@ def trace_form(damping: Damping = Damping.NONE) -> Link:
     return _link("trace form", sp.expand(M.trace()), form, "entries of the half-period maps")
 
 
-@lru_cache(maxsize=None)
+@cache
 def trace_lemma(parity: Parity) -> Link:
     """Step 4, in ``K`` alone: the product-to-sum identity behind eqs. (13), (25), (35)-(36)."""
     a1, a2 = x - y, x + y
@@ -131,12 +133,14 @@ def normal_form(parity: Parity, *, symbols: tuple = None) -> sp.Expr:
 
     ``symbols = (x, y, r2, h)`` to use other symbols (defaults: ``x, y, r^2, h``).
     """
-    xs, ys, rs, hs = symbols if symbols is not None else (x, y, r2, sp.Symbol("h", nonnegative=True))
+    xs, ys, rs, hs = (
+        symbols if symbols is not None else (x, y, r2, sp.Symbol("h", nonnegative=True))
+    )
     f = sp.cos if Parity(parity) is Parity.ODD else sp.sin
     return f(xs) ** 2 - rs * f(ys) ** 2 + (1 - rs) * sp.sinh(hs) ** 2
 
 
-@lru_cache(maxsize=None)
+@cache
 def normal_form_link(parity: Parity) -> Link:
     """Step 5, for every model at once: with ``det M = p^2`` and the trace form (steps 2-3),
     ``1 + p^2 - sigma p (2 cos a1 cos a2 - K sin a1 sin a2) = p (K+2) N`` identically in ``K``,
@@ -147,17 +151,20 @@ def normal_form_link(parity: Parity) -> Link:
     p = sp.exp(-2 * h)
     lhs = 1 + p**2 - parity.sigma * p * (2 * sp.cos(a1) * sp.cos(a2) - Kc * sp.sin(a1) * sp.sin(a2))
     N = normal_form(parity, symbols=((a1 + a2) / 2, (a2 - a1) / 2, (Kc - 2) / (Kc + 2), h))
-    return _link("normal form", lhs, p * (Kc + 2) * N, "steps 2-4; r^2 = (K-2)/(K+2), 1 - r^2 = 4/(K+2)")
+    return _link(
+        "normal form", lhs, p * (Kc + 2) * N, "steps 2-4; r^2 = (K-2)/(K+2), 1 - r^2 = 4/(K+2)"
+    )
 
 
 def edge_factor(parity: Parity, epsilon: int, *, symbols: tuple = None) -> sp.Expr:
-    """Step 6: the undamped per-edge factor ``cos x - eps r cos y`` (odd) / ``sin x - eps r sin y``."""
+    """Step 6: the undamped per-edge factor ``cos x - eps r cos y`` (odd) / ``sin x - eps r sin
+    y``."""
     xs, ys, rs = symbols if symbols is not None else (x, y, sp.Symbol("r", positive=True))
     f = sp.cos if Parity(parity) is Parity.ODD else sp.sin
     return f(xs) - epsilon * rs * f(ys)
 
 
-@lru_cache(maxsize=None)
+@cache
 def edge_factor_link(kind: EdgeKind) -> Link:
     """Step 6 proven: the edge shape's determinant is a non-vanishing multiple of its factor.
 
@@ -172,7 +179,9 @@ def edge_factor_link(kind: EdgeKind) -> Link:
     fac = edge_factor(kind.parity, kind.epsilon, symbols=((a1 + a2) / 2, (a2 - a1) / 2, r))
     multiple = factor_between(det, fac)
     if multiple is None:  # pragma: no cover - would mean the shape is not an edge of this factor
-        return Link(f"edge factor of {kind.value}", det, fac, "not proportional", Verdict(False, "symbolic"))
+        return Link(
+            f"edge factor of {kind.value}", det, fac, "not proportional", Verdict(False, "symbolic")
+        )
     return Link(
         f"edge factor of {kind.value}",
         det,
@@ -202,7 +211,8 @@ def indicator_R(parity: Parity) -> sp.Expr:
 
 
 def parameters(damping: Damping = Damping.PAPER) -> dict[sp.Symbol, sp.Expr]:
-    """The normal-form parameters in the project's units (``T0 = 1``, ``Q``), from their definitions.
+    """The normal-form parameters in the project's units (``T0 = 1``, ``Q``), from their
+    definitions.
 
     Keys: ``r^2``, ``beta``, ``g`` and ``w = omega_av/omega0`` (so that ``T/T0 = x / (pi w)``);
     for the exact model they are built from the damped frequencies.  These are the definitions;

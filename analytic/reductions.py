@@ -1,9 +1,13 @@
 """The paper's chains of reductions, derived step by step, each step proven from the one before.
 
-``(12) -> (13) -> (15)``, ``(24) -> (25) -> (26)``, ``(32) -> (34) -> (35) -> (36) -> (37) -> (39)``,
-``(41) -> (42) -> (44)``, and the single results (5), (6), (14) and the stationary initial conditions.
-A :class:`Step` holds the equation the engine arrives at (in the paper's symbols), why it follows and
-the :class:`~analytic.identity.Verdict` of the check that it does; a :class:`Chain` is a titled list of
+``(12) -> (13) -> (15)``, ``(24) -> (25) -> (26)``, ``(32) -> (34) -> (35) -> (36) -> (37) ->
+(39)``,
+``(41) -> (42) -> (44)``, and the single results (5), (6), (14) and the stationary initial
+conditions.
+A :class:`Step` holds the equation the engine arrives at (in the paper's symbols), why it follows
+and
+the :class:`~analytic.identity.Verdict` of the check that it does; a :class:`Chain` is a titled
+list of
 steps that a report can print.  Nothing here is copied from the paper: the first step of every chain
 is built by :mod:`analytic.stitching` from the model.
 
@@ -20,7 +24,7 @@ import sympy as sp
 
 from .cache import disk_cached
 from .identity import Verdict, prove_multiple, prove_zero
-from .model import Damping, S, derived_quantities, inertia, physical
+from .model import Damping, S, derived_quantities, physical
 from .normal_form import edge_factor_link
 from .stitching import EdgeKind, Parity, edge_system, general_system, paper_system
 
@@ -147,7 +151,8 @@ def _edge_chain(kind: EdgeKind, numbers: tuple[str, str, str, str, str], n0: int
         Step(
             numbers[3],
             reduced,
-            "product to sum; divide by (1-m)^2 omega_2; q = (1+m)^2 omega_1 / ((1-m)^2 omega_2) (eq. 14)",
+            "product to sum; divide by (1-m)^2 omega_2; q = (1+m)^2 omega_1 / ((1-m)^2 omega_2) "
+            "(eq. 14)",
             _follows(_residual(reduced), det) if link.verdict.holds else link.verdict,
         )
     )
@@ -164,7 +169,8 @@ def _edge_chain(kind: EdgeKind, numbers: tuple[str, str, str, str, str], n0: int
         Step(
             numbers[4],
             delta,
-            f"T = {n0} T_av/2 + Delta T with omega_av T_av = 2 pi; divide by {sp.sstr((q + 1) * coeff)}",
+            f"T = {n0} T_av/2 + Delta T with omega_av T_av = 2 pi; divide by "
+            f"{sp.sstr((q + 1) * coeff)}",
             _follows_delta(_residual(delta), res_old),
         )
     )
@@ -178,7 +184,8 @@ def _edge_chain(kind: EdgeKind, numbers: tuple[str, str, str, str, str], n0: int
 
 
 def _follows_delta(new: sp.Expr, old: sp.Expr) -> Verdict:
-    """Like :func:`_follows` for forms written with ``T_av`` and ``Delta T``: ``T_av`` is replaced by
+    """Like :func:`_follows` for forms written with ``T_av`` and ``Delta T``: ``T_av`` is replaced
+    by
     ``2 pi / omega_av`` with ``omega_av`` kept as a symbol (it cancels in ``omega_av T_av``)."""
     sub = {Tav: 2 * sp.pi / wav}
     return prove_multiple(sp.expand(new.subs(sub)), sp.expand(old.subs(sub)))
@@ -186,7 +193,8 @@ def _follows_delta(new: sp.Expr, old: sp.Expr) -> Verdict:
 
 def odd_order_delta_form(kind: EdgeKind, n: int | sp.Expr) -> sp.Equality:
     """The Delta T form of an edge shape's equation around ``n T_av/2`` for any order ``n`` (of the
-    shape's parity): ``sin(omega_av Delta T/2) = s_n (q-1)/(q+1) f(Delta omega (n T_av/2 + Delta T)/4)``.
+    shape's parity): ``sin(omega_av Delta T/2) = s_n (q-1)/(q+1) f(Delta omega (n T_av/2 + Delta
+    T)/4)``.
 
     For the paper's eq.-13 shape the sign is ``s_n = -(-1)**((n-1)/2)``: negative (lower edge at
     small m) for n = 1, 5, 9, ..., positive (upper edge) for n = 3, 7, ...
@@ -195,14 +203,18 @@ def odd_order_delta_form(kind: EdgeKind, n: int | sp.Expr) -> sp.Equality:
     th = wav * DT / 2
     lhs_x = sp.expand_trig(f(n * sp.pi / 2 + th))
     coeff = sp.simplify(lhs_x / sp.sin(th))
-    return _eq(sp.sin(th), sp.simplify(kind.epsilon * (q - 1) / (q + 1) / coeff) * f(dw * (n * Tav / 2 + DT) / 4))
+    return _eq(
+        sp.sin(th),
+        sp.simplify(kind.epsilon * (q - 1) / (q + 1) / coeff) * f(dw * (n * Tav / 2 + DT) / 4),
+    )
 
 
 # ------------------------------------------------------------------------------- with friction
 
 
 def _friction_chain(parity: Parity) -> Chain:
-    """Paper model: (31) -> (32) -> (34) -> (36) -> (37) -> (39) (odd), (41) -> (42) -> (44) (even)."""
+    """Paper model: (31) -> (32) -> (34) -> (36) -> (37) -> (39) (odd), (41) -> (42) -> (44)
+    (even)."""
     odd = parity is Parity.ODD
     gen = general_system(parity, Damping.PAPER)
     psys = paper_system(parity)
@@ -216,8 +228,8 @@ def _friction_chain(parity: Parity) -> Chain:
             Step(
                 "32" if odd else "",
                 _eq(sp.collect(sp.expand(rows[k]), [S.A, S.B]), 0),
-                "conditions at t = 0 solved (B_2 = B_1 = B, A_2 = q A); multiplied by exp(-gamma T/2)"
-                + ("; divided by (1-m)^2 omega_2" if k == 1 else ""),
+                "conditions at t = 0 solved (B_2 = B_1 = B, A_2 = q A); multiplied by exp(-gamma "
+                "T/2)" + ("; divided by (1-m)^2 omega_2" if k == 1 else ""),
                 Verdict(True, "symbolic"),
             )
         )
@@ -237,7 +249,14 @@ def _friction_chain(parity: Parity) -> Chain:
         c1c2 = _eq(S.C1 * S.C2, half * (sp.cos(dw * T / 2) + sp.cos(wav * T)))
         s1s2 = _eq(S.S1 * S.S2, half * (sp.cos(dw * T / 2) - sp.cos(wav * T)))
         for e in (c1c2, s1s2):
-            steps.append(Step("35", e, "product to sum", prove_zero(substitute_abbreviations(_residual(e), keep=(q, p)))))
+            steps.append(
+                Step(
+                    "35",
+                    e,
+                    "product to sum",
+                    prove_zero(substitute_abbreviations(_residual(e), keep=(q, p))),
+                )
+            )
     f = sp.cos if odd else sp.sin
     rad = (q - 1) ** 2 * f(dw * T / 4) ** 2 - q * (p + 1 / p - 2)
     e36 = _eq((q + 1) * f(wav * T / 2), PM * sp.sqrt(rad))
@@ -270,7 +289,8 @@ def _friction_chain(parity: Parity) -> Chain:
         Step(
             "39" if odd else "44",
             e39,
-            f"T = {n0} T_av/2 + Delta T; f(omega_av T/2) = {sp.sstr(coeff)} sin(omega_av Delta T/2); "
+            f"T = {n0} T_av/2 + Delta T; f(omega_av T/2) = {sp.sstr(coeff)} sin(omega_av Delta "
+            "T/2); "
             "p + 1/p - 2 = (p-1)^2/p (checked squared)",
             _follows_delta(_squared_residual(e39), old),
         )
@@ -295,13 +315,22 @@ def _single_results() -> Chain:
     # (6): phase gained per modulation period
     n = S.n
     e6 = _eq(T, n * Tav / 2)
-    v6 = prove_zero(sp.expand((w1 * T / 2 + w2 * T / 2 - n * sp.pi).subs(T, n * sp.pi / wav).subs(wav, (w1 + w2) / 2)))
+    v6 = prove_zero(
+        sp.expand(
+            (w1 * T / 2 + w2 * T / 2 - n * sp.pi).subs(T, n * sp.pi / wav).subs(wav, (w1 + w2) / 2)
+        )
+    )
     steps.append(Step("6", e6, "omega_1 T/2 + omega_2 T/2 = n pi", v6))
     # (14): q in terms of m
     e14 = _eq(q, ((1 + m) / (1 - m)) ** sp.Rational(3, 2))
     v14 = prove_zero(physical(substitute_abbreviations(_residual(e14))))
     steps.append(
-        Step("14", e14, "q = (1+m)^2 omega_1 / ((1-m)^2 omega_2) with omega_i = omega_0/sqrt(1 -+ m)", v14)
+        Step(
+            "14",
+            e14,
+            "q = (1+m)^2 omega_1 / ((1-m)^2 omega_2) with omega_i = omega_0/sqrt(1 -+ m)",
+            v14,
+        )
     )
     return Chain("single", "Single results", ("5", "6", "14"), tuple(steps))
 
@@ -332,9 +361,16 @@ def _initial_conditions() -> Chain:
         seg1 = edge_system(kind).segments[0]
         check = prove_zero(sp.expand(seg1.dphi.subs(S.t, 0) - ratio * seg1.phi.subs(S.t, 0)))
         steps.append(
-            Step(label, _eq(dphi0, ratio * phi0), f"edge shape {kind.value}: its first segment at t = 0", check)
+            Step(
+                label,
+                _eq(dphi0, ratio * phi0),
+                f"edge shape {kind.value}: its first segment at t = 0",
+                check,
+            )
         )
-    return Chain("initial", "Stationary initial conditions on the edges", ("IC-15", "IC-26"), tuple(steps))
+    return Chain(
+        "initial", "Stationary initial conditions on the edges", ("IC-15", "IC-26"), tuple(steps)
+    )
 
 
 @lru_cache(maxsize=1)

@@ -1,8 +1,10 @@
 """Stitching: the homogeneous systems for the segment amplitudes, built from the conditions.
 
-A stationary oscillation on a boundary of an interval of instability is a solution that repeats after
+A stationary oscillation on a boundary of an interval of instability is a solution that repeats
+after
 one modulation period (even orders, ``sigma = +1``) or changes sign after it (odd orders,
-``sigma = -1``).  It is made of two free-oscillation segments, ``phi1`` on ``0 < t < T/2`` (bob down)
+``sigma = -1``).  It is made of two free-oscillation segments, ``phi1`` on ``0 < t < T/2`` (bob
+down)
 and ``phi2`` on ``-T/2 < t < 0`` (bob up), joined by
 
 * continuity of the angle at ``t = 0``,
@@ -10,7 +12,8 @@ and ``phi2`` on ``-T/2 < t < 0`` (bob up), joined by
 * (anti)periodicity across ``t = T/2``: ``phi1(T/2) = sigma phi2(-T/2)`` and
   ``(1+m)**2 phi1'(T/2) = sigma (1-m)**2 phi2'(-T/2)`` (eq. 31 for odd orders).
 
-:func:`general_system` builds all four conditions for the general segments of any damping model (four
+:func:`general_system` builds all four conditions for the general segments of any damping model
+(four
 unknowns); :func:`edge_system` uses the symmetric shapes of the undamped boundary oscillations (the
 paper's eqs. 8-9, 16-17, 20-21 and a fourth kind the paper does not write), for which the conditions
 at ``T/2`` repeat those at ``t = 0`` and two unknowns remain; :func:`paper_system` eliminates two
@@ -22,7 +25,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 from enum import Enum
-from functools import lru_cache
+from functools import cache
 
 import sympy as sp
 
@@ -64,7 +67,8 @@ class EdgeKind(str, Enum):
 
     Each half is a segment centred on its own midpoint (``t = T/4`` for the bob-down half,
     ``t = -T/4`` for the bob-up half), either even (``cos``) or odd (``sin``) about it.  Mixed
-    parities are anti-periodic (odd orders), equal parities periodic (even orders).  The paper writes
+    parities are anti-periodic (odd orders), equal parities periodic (even orders).  The paper
+    writes
     ``ODD_COS_SIN`` (eqs. 8-9, lower edge of the first interval), ``ODD_SIN_COS`` (eqs. 16-17, upper
     edge) and ``EVEN_COS_COS`` (eqs. 20-21, lower edge of the second); ``EVEN_SIN_SIN`` is the
     remaining one (the other edge of even intervals).
@@ -128,7 +132,7 @@ def _linear_matrix(residuals, unknowns) -> sp.Matrix:
     rows = []
     for res in residuals:
         row = [sp.diff(res, u) for u in unknowns]
-        rest = sp.expand(res - sum(c * u for c, u in zip(row, unknowns)))
+        rest = sp.expand(res - sum(c * u for c, u in zip(row, unknowns, strict=True)))
         if rest != 0 or any(sp.diff(c, u) != 0 for c in row for u in unknowns):  # pragma: no cover
             raise ValueError(f"condition is not linear homogeneous in {unknowns}: {res}")
         rows.append(row)
@@ -149,7 +153,9 @@ def _conditions(seg1: Segment, seg2: Segment, sigma: int, with_period: bool) -> 
         word = "anti-periodicity" if sigma < 0 else "periodicity"
         conds += [
             Condition(
-                f"{word} of the angle across t = T/2", at(seg1.phi, T / 2), sigma * at(seg2.phi, -T / 2)
+                f"{word} of the angle across t = T/2",
+                at(seg1.phi, T / 2),
+                sigma * at(seg2.phi, -T / 2),
             ),
             Condition(
                 f"{word} of the angular momentum across t = T/2",
@@ -160,14 +166,19 @@ def _conditions(seg1: Segment, seg2: Segment, sigma: int, with_period: bool) -> 
     return conds
 
 
-@lru_cache(maxsize=None)
 def general_system(
     parity: Parity,
     damping: Damping = Damping.NONE,
     regimes: tuple[Regime, Regime] = (Regime.UNDER, Regime.UNDER),
 ) -> StitchingSystem:
     """All four stitching conditions for the general segments; unknowns ``A1, B1, A2, B2``."""
-    parity, damping = Parity(parity), Damping(damping)
+    return _general_system(Parity(parity), Damping(damping), tuple(Regime(r) for r in regimes))
+
+
+@cache
+def _general_system(
+    parity: Parity, damping: Damping, regimes: tuple[Regime, Regime]
+) -> StitchingSystem:
     seg1 = segment(S.omega1, S.A1, S.B1, damping, regimes[0])
     seg2 = segment(S.omega2, S.A2, S.B2, damping, regimes[1])
     conds = _conditions(seg1, seg2, parity.sigma, True)
@@ -195,7 +206,7 @@ _PAPER_SIGNS = {
 }
 
 
-@lru_cache(maxsize=None)
+@cache
 def edge_system(kind: EdgeKind) -> StitchingSystem:
     """The undamped boundary oscillation of a given symmetric shape; unknowns ``A1, A2``.
 
@@ -216,7 +227,14 @@ def edge_system(kind: EdgeKind) -> StitchingSystem:
     M = _linear_matrix([c.residual for c in conds], unknowns)
     det = sp.expand(M.det())
     return StitchingSystem(
-        f"edge kind {kind.value}", kind.parity, Damping.NONE, (seg1, seg2), unknowns, tuple(conds), M, det
+        f"edge kind {kind.value}",
+        kind.parity,
+        Damping.NONE,
+        (seg1, seg2),
+        unknowns,
+        tuple(conds),
+        M,
+        det,
     )
 
 
@@ -232,10 +250,11 @@ def implied_rows(kind: EdgeKind) -> tuple[sp.Matrix, sp.Matrix]:
     return rows[2:, :], rows[:2, :]
 
 
-@lru_cache(maxsize=None)
+@cache
 def paper_system(parity: Parity) -> StitchingSystem:
     """The appendix's route (eqs. 31-32): general paper-model segments, with the conditions at
-    ``t = 0`` solved first, which gives ``B2 = B1 = B`` and ``A2 = q A1 = q A``; the (anti)periodicity
+    ``t = 0`` solved first, which gives ``B2 = B1 = B`` and ``A2 = q A1 = q A``; the
+    (anti)periodicity
     conditions, multiplied by ``exp(-gamma T/2)`` (the momentum one also divided by
     ``(1-m)**2 omega2``), are a 2 x 2 system for ``A, B`` in the abbreviations ``C_i, S_i, p, q``.
     """
@@ -258,10 +277,15 @@ def paper_system(parity: Parity) -> StitchingSystem:
         res = sp.expand(c.residual.subs(sub) * sp.exp(-S.gamma * S.T / 2))
         res = sp.powsimp(res).subs(sp.exp(-S.gamma * S.T), S.p).subs(abbreviations)
         if k == 1:  # the momentum condition: (1+m)^2 omega1 = q (1-m)^2 omega2
-            res = sp.expand(res.subs(S.omega1, S.q * inertia(2) * S.omega2 / inertia(1)) / (inertia(2) * S.omega2))
+            res = sp.expand(
+                res.subs(S.omega1, S.q * inertia(2) * S.omega2 / inertia(1))
+                / (inertia(2) * S.omega2)
+            )
         rows.append(sp.expand(sp.simplify(res)))
     M = _linear_matrix(rows, (S.A, S.B))
-    conds = tuple(Condition(c.label, r, sp.Integer(0)) for c, r in zip(gen.conditions[2:], rows))
+    conds = tuple(
+        Condition(c.label, r, sp.Integer(0)) for c, r in zip(gen.conditions[2:], rows, strict=True)
+    )
     return StitchingSystem(
         "paper model, amplitudes A and B (eq. 32)",
         parity,
@@ -286,11 +310,15 @@ def propagator(seg: Segment, duration: sp.Expr) -> sp.Matrix:
     cols = []
     for x0, v0 in ((1, 0), (0, 1)):
         sol = sp.solve([gen.phi.subs(t, 0) - x0, gen.dphi.subs(t, 0) - v0], [A, B], dict=True)[0]
-        cols.append([sp.expand(gen.phi.subs(sol).subs(t, duration)), sp.expand(gen.dphi.subs(sol).subs(t, duration))])
+        cols.append(
+            [
+                sp.expand(gen.phi.subs(sol).subs(t, duration)),
+                sp.expand(gen.dphi.subs(sol).subs(t, duration)),
+            ]
+        )
     return sp.Matrix([[cols[0][0], cols[1][0]], [cols[0][1], cols[1][1]]])
 
 
-@lru_cache(maxsize=None)
 def monodromy(
     damping: Damping = Damping.NONE, regimes: tuple[Regime, Regime] = (Regime.UNDER, Regime.UNDER)
 ) -> sp.Matrix:
@@ -298,7 +326,11 @@ def monodromy(
 
     ``M = J_21 U_2(T/2) J_12 U_1(T/2)`` with ``J`` the angular-momentum jumps (eq. 4).
     """
-    damping = Damping(damping)
+    return _monodromy(Damping(damping), tuple(Regime(r) for r in regimes))
+
+
+@cache
+def _monodromy(damping: Damping, regimes: tuple[Regime, Regime]) -> sp.Matrix:
     seg1 = segment(S.omega1, S.A1, S.B1, damping, regimes[0])
     seg2 = segment(S.omega2, S.A2, S.B2, damping, regimes[1])
     U1 = propagator(seg1, S.T / 2)
@@ -308,15 +340,22 @@ def monodromy(
     return J21 * U2 * J12 * U1
 
 
-def floquet_condition(parity: Parity, damping: Damping = Damping.NONE, regimes=(Regime.UNDER, Regime.UNDER)):
+def floquet_condition(
+    parity: Parity, damping: Damping = Damping.NONE, regimes=(Regime.UNDER, Regime.UNDER)
+):
     """``det(M - sigma I)``: zero iff ``sigma = (-1)**n`` is a Floquet multiplier.
 
     Returns ``(expression, factor)`` where ``factor`` is the derived ratio
     ``det(general_system) / det(M - sigma I)`` (``None`` if the two are not proportional), so that
     the determinant of the stitching system *is* the multiplier condition.
     """
-    parity = Parity(parity)
-    M = monodromy(damping, tuple(regimes))
-    cond = sp.expand((M - parity.sigma * sp.eye(2)).det())
-    det = general_system(parity, damping, tuple(regimes)).determinant
+    return _floquet_condition(Parity(parity), Damping(damping), tuple(Regime(r) for r in regimes))
+
+
+@cache
+def _floquet_condition(parity: Parity, damping: Damping, regimes: tuple[Regime, Regime]):
+    M = monodromy(damping, regimes)
+    s = parity.sigma
+    cond = (M[0, 0] - s) * (M[1, 1] - s) - M[0, 1] * M[1, 0]
+    det = general_system(parity, damping, regimes).determinant
     return cond, factor_between(det, cond)

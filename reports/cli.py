@@ -2,7 +2,8 @@
 
 Each command module defines ``register(subparsers)``, which adds its parser and sets
 ``func(args) -> int`` as the parser's default.  Bad input of any kind -- an argparse error or an
-:class:`verify.inputs.InputError` raised anywhere below -- ends as ``paramres: error: ...`` on stderr
+:class:`verify.inputs.InputError` raised anywhere below -- ends as ``paramres: error: ...`` on
+stderr
 with exit status 2 and no traceback.
 """
 
@@ -34,7 +35,8 @@ def build_parser() -> argparse.ArgumentParser:
         description=(
             "Regions of parametric excitation of a pendulum whose length is modulated by a square "
             "wave: symbolic derivations, certified high-precision boundaries, checks of the paper "
-            "(Butikov, 'Pendulum with modulated length II'). Periods are in units of T0, depth is m "
+            "(Butikov, 'Pendulum with modulated length II'). Periods are in units of T0, depth is "
+            "m "
             "(0 < m < 1), friction is the quality factor Q."
         ),
     )

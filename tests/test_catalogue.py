@@ -25,8 +25,29 @@ def rows():
 
 
 def test_required_rows_present(rows):
-    for eq in ("4", "5", "10", "11", "12", "13", "14", "15", "IC-15", "22", "23", "24", "25", "26",
-               "IC-26", "32", "34", "36", "39", "41", "44"):
+    for eq in (
+        "4",
+        "5",
+        "10",
+        "11",
+        "12",
+        "13",
+        "14",
+        "15",
+        "IC-15",
+        "22",
+        "23",
+        "24",
+        "25",
+        "26",
+        "IC-26",
+        "32",
+        "34",
+        "36",
+        "39",
+        "41",
+        "44",
+    ):
         assert eq in rows, eq
 
 
@@ -38,7 +59,11 @@ def test_rows_well_formed(rows):
 
 
 def test_statuses_of_the_exact_results(rows):
-    mine = {k: v for k, v in rows.items() if k in EXPECTED_DIFFERS or k in printed() or k.endswith("-ref")}
+    mine = {
+        k: v
+        for k, v in rows.items()
+        if k in EXPECTED_DIFFERS or k in printed() or k.endswith("-ref")
+    }
     for label, r in mine.items():
         expected = "differs" if label in EXPECTED_DIFFERS else "agrees"
         assert r.status == expected, (label, r.how)
@@ -46,7 +71,10 @@ def test_statuses_of_the_exact_results(rows):
 
 def test_eq23_misprint_is_located(rows):
     how = rows["23"].how
-    assert r"\cos{\left(\frac{T \omega_{2}}{4} \right)}" in how and r"\sin{\left(\frac{T \omega_{2}}{4} \right)}" in how
+    assert (
+        r"\cos{\left(\frac{T \omega_{2}}{4} \right)}" in how
+        and r"\sin{\left(\frac{T \omega_{2}}{4} \right)}" in how
+    )
     assert "does not follow from the printed (22)-(23)" in how
 
 

@@ -10,7 +10,9 @@ from reports.cli import main
 
 
 def _run(*args):
-    return subprocess.run([sys.executable, "-m", "reports.cli", *args], capture_output=True, text=True)
+    return subprocess.run(
+        [sys.executable, "-m", "reports.cli", *args], capture_output=True, text=True
+    )
 
 
 def test_catalogue_json(capsys):
@@ -26,7 +28,9 @@ def test_catalogue_text_only_differs(capsys):
     assert "(23)" in out and "ok " not in out
 
 
-@pytest.mark.parametrize("args", [["catalogue", "--bogus"], ["nonsense"], [], ["catalogue", "--only", "maybe"]])
+@pytest.mark.parametrize(
+    "args", [["catalogue", "--bogus"], ["nonsense"], [], ["catalogue", "--only", "maybe"]]
+)
 def test_bad_command_lines(args):
     r = _run(*args)
     assert r.returncode == 2

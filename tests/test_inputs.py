@@ -17,8 +17,16 @@ from verify.inputs import (
 )
 
 
-@pytest.mark.parametrize("m,expected", [("3/5", Fraction(3, 5)), ("0.3", Fraction(3, 10)), (Fraction(1, 7), Fraction(1, 7)),
-                                        ("1e-12", Fraction(1, 10**12)), (0.5, Fraction(1, 2))])
+@pytest.mark.parametrize(
+    "m,expected",
+    [
+        ("3/5", Fraction(3, 5)),
+        ("0.3", Fraction(3, 10)),
+        (Fraction(1, 7), Fraction(1, 7)),
+        ("1e-12", Fraction(1, 10**12)),
+        (0.5, Fraction(1, 2)),
+    ],
+)
 def test_depth_exact(m, expected):
     assert as_depth(m) == expected
 
@@ -28,7 +36,10 @@ def test_depth_mpf_kept():
     assert as_depth(v) is v
 
 
-@pytest.mark.parametrize("bad", [0, 1, "1", "-0.1", "1.5", "nan", float("nan"), float("inf"), "abc", "", "3/0", True, None])
+@pytest.mark.parametrize(
+    "bad",
+    [0, 1, "1", "-0.1", "1.5", "nan", float("nan"), float("inf"), "abc", "", "3/0", True, None],
+)
 def test_depth_refused(bad):
     with pytest.raises(InputError) as e:
         as_depth(bad)
@@ -71,6 +82,14 @@ def test_digits_and_damping():
 def test_range():
     assert len(as_range("0.1:0.9:0.1")) == 9
     assert as_range("0.05:0.05:0.1") == [Fraction(1, 20)]
-    for bad in ("0.1:0.9", "0:0.5:0.1", "0.1:1:0.1", "0.5:0.1:0.1", "0.1:0.9:0", "a:b:c", "0.1:0.9:-0.1"):
+    for bad in (
+        "0.1:0.9",
+        "0:0.5:0.1",
+        "0.1:1:0.1",
+        "0.5:0.1:0.1",
+        "0.1:0.9:0",
+        "a:b:c",
+        "0.1:0.9:-0.1",
+    ):
         with pytest.raises(InputError):
             as_range(bad)

@@ -55,7 +55,9 @@ def test_normal_form_is_the_product_of_the_edge_factors():
     for parity in Parity:
         from analytic.normal_form import edge_factor
 
-        prod = edge_factor(parity, 1, symbols=(x, y, r)) * edge_factor(parity, -1, symbols=(x, y, r))
+        prod = edge_factor(parity, 1, symbols=(x, y, r)) * edge_factor(
+            parity, -1, symbols=(x, y, r)
+        )
         nf = normal_form(parity, symbols=(x, y, r**2, 0))
         assert sp.expand(prod - nf) == 0
 
@@ -64,13 +66,19 @@ def test_normal_form_is_the_product_of_the_edge_factors():
 @pytest.mark.parametrize("model,damped", [("paper", False), ("paper", True), ("exact", True)])
 def test_normal_form_matches_numeric_monodromy(parity, model, damped):
     """det(M - sigma I) = p (K+2) N with the model's parameters (docs/theory.md, step 5)."""
-    params = parameters(Damping.EXACT if model == "exact" else (Damping.PAPER if damped else Damping.NONE))
+    params = parameters(
+        Damping.EXACT if model == "exact" else (Damping.PAPER if damped else Damping.NONE)
+    )
     w = [k for k in params if k.name == "w"][0]
     fr2 = sp.lambdify((S.m, S.Q), params[r2], modules="mpmath")
     fb = sp.lambdify((S.m, S.Q), params[S.beta], modules="mpmath")
     fw = sp.lambdify((S.m, S.Q), params[w], modules="mpmath")
     fg = sp.lambdify((S.m, S.Q), params[S.g], modules="mpmath")
-    N = sp.lambdify((x, S.beta, r2, S.g), normal_form(parity, symbols=(x, S.beta * x, r2, S.g * x)), modules="mpmath")
+    N = sp.lambdify(
+        (x, S.beta, r2, S.g),
+        normal_form(parity, symbols=(x, S.beta * x, r2, S.g * x)),
+        modules="mpmath",
+    )
     rng = random.Random(5)
     for _ in range(6):
         with mpmath.workdps(DPS):
@@ -110,7 +118,9 @@ def test_window_theorem_one_root_per_factor(n):
         r, b = fr(m), fb(m)
         x0 = n * mpmath.pi / 2
         for eps in (1, -1):
-            g = [(mpmath.cos if n % 2 else mpmath.sin)(x0 + th) - eps * r * f(b * (x0 + th))
-                 for th in mpmath.linspace(-mpmath.pi / 2 + 1e-9, mpmath.pi / 2 - 1e-9, 801)]
-            changes = sum(1 for a, c in zip(g, g[1:]) if a * c < 0)
+            g = [
+                (mpmath.cos if n % 2 else mpmath.sin)(x0 + th) - eps * r * f(b * (x0 + th))
+                for th in mpmath.linspace(-mpmath.pi / 2 + 1e-9, mpmath.pi / 2 - 1e-9, 801)
+            ]
+            changes = sum(1 for a, c in zip(g, g[1:], strict=False) if a * c < 0)
             assert changes == 1, (n, m, eps, changes)

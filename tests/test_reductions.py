@@ -19,8 +19,32 @@ def test_every_step_of_every_chain_is_proven():
 
 def test_chains_cover_the_issue_numbers():
     labels = {s.label for c in chains() for s in c.steps}
-    for eq in ("5", "6", "10", "11", "12", "13", "14", "15", "22", "23", "24", "25", "26",
-               "31", "32", "34", "35", "36", "37", "39", "41", "44", "IC-15", "IC-26"):
+    for eq in (
+        "5",
+        "6",
+        "10",
+        "11",
+        "12",
+        "13",
+        "14",
+        "15",
+        "22",
+        "23",
+        "24",
+        "25",
+        "26",
+        "31",
+        "32",
+        "34",
+        "35",
+        "36",
+        "37",
+        "39",
+        "41",
+        "44",
+        "IC-15",
+        "IC-26",
+    ):
         assert eq in labels, eq
 
 
@@ -56,8 +80,12 @@ def test_stationary_initial_condition_is_a_floquet_vector(kind):
             return (q + 1) * f((w1 + w2) * T / 4) - eps * (q - 1) * f((w2 - w1) * T / 4)
 
         Tav = 4 * mpmath.pi / (w1 + w2)
-        T = mpmath.findroot(factor, (n * Tav / 2 - Tav / 4, n * Tav / 2 + Tav / 4), solver="anderson")
-        ratio = sp.lambdify((S.omega1, S.T), stationary_initial_condition(kind), modules="mpmath")(w1, T)
+        T = mpmath.findroot(
+            factor, (n * Tav / 2 - Tav / 4, n * Tav / 2 + Tav / 4), solver="anderson"
+        )
+        ratio = sp.lambdify((S.omega1, S.T), stationary_initial_condition(kind), modules="mpmath")(
+            w1, T
+        )
         M = monodromy_matrix(m, T, None, dps=40)
         v = mpmath.matrix([1, ratio])
         Mv = M * v

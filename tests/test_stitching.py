@@ -45,7 +45,11 @@ def _close(a, b):
 
 @pytest.mark.parametrize("damping", [Damping.NONE, Damping.PAPER, Damping.EXACT])
 def test_segments_solve_the_equation_of_motion(damping):
-    for regime in (Regime.UNDER, Regime.CRITICAL, Regime.OVER) if damping is Damping.EXACT else (Regime.UNDER,):
+    for regime in (
+        (Regime.UNDER, Regime.CRITICAL, Regime.OVER)
+        if damping is Damping.EXACT
+        else (Regime.UNDER,)
+    ):
         seg = segment(S.omega1, S.A1, S.B1, damping, regime)
         if regime is Regime.CRITICAL:
             res = ode_residual(seg).subs(S.gamma, S.omega1)
@@ -67,7 +71,9 @@ def test_determinant_is_the_multiplier_condition(parity, damping):
     assert not factor.has(sp.sin, sp.cos)
 
 
-@pytest.mark.parametrize("damping,model", [(Damping.NONE, "exact"), (Damping.PAPER, "paper"), (Damping.EXACT, "exact")])
+@pytest.mark.parametrize(
+    "damping,model", [(Damping.NONE, "exact"), (Damping.PAPER, "paper"), (Damping.EXACT, "exact")]
+)
 def test_symbolic_monodromy_equals_numeric_monodromy(damping, model):
     M = monodromy(damping)
     f = sp.lambdify((S.m, S.tau, S.Q), physical(M), modules="mpmath")
@@ -81,7 +87,9 @@ def test_symbolic_monodromy_equals_numeric_monodromy(damping, model):
 
 
 @pytest.mark.parametrize("parity", list(Parity))
-@pytest.mark.parametrize("damping,model", [(Damping.NONE, "exact"), (Damping.PAPER, "paper"), (Damping.EXACT, "exact")])
+@pytest.mark.parametrize(
+    "damping,model", [(Damping.NONE, "exact"), (Damping.PAPER, "paper"), (Damping.EXACT, "exact")]
+)
 def test_stitching_determinant_against_numeric_floquet(parity, damping, model):
     """The 4x4 determinant, divided by its derived factor, is det(M - sigma I) of the numeric
     monodromy at random points (40 digits)."""

@@ -17,7 +17,8 @@ _API = {
     "existence": "existence",
     "monodromy_matrix": "floquet",
     "floquet_multipliers": "floquet",
-    "simulate": "simulate",
+    "simulate": "timedomain",
+    "Simulation": "timedomain",
 }
 
 __all__ = sorted(_API)

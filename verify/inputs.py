@@ -42,7 +42,8 @@ def as_depth(m) -> Fraction | mpmath.mpf:
     """The modulation depth ``0 < m < 1``, kept exact where it can be.
 
     ``str`` (``"3/5"``, ``"0.3"``, ``"1e-12"``), ``int``, :class:`fractions.Fraction` become a
-    ``Fraction`` (exact: ``"0.3"`` is ``3/10``); ``float`` becomes the ``Fraction`` of its binary value;
+    ``Fraction`` (exact: ``"0.3"`` is ``3/10``); ``float`` becomes the ``Fraction`` of its binary
+    value;
     an mpmath ``mpf`` is kept as it is.
     """
     if isinstance(m, bool):
@@ -66,7 +67,8 @@ def as_depth(m) -> Fraction | mpmath.mpf:
             text = m.strip()
             if not re.fullmatch(r"[+-]?(\d+(\.\d*)?|\.\d+)([eE][+-]?\d+)?(/\d+)?", text):
                 raise InputError(
-                    f"depth m = {m!r} is not a number (use e.g. 0.3, 3/5 or 1e-12); allowed range 0 < m < 1"
+                    f"depth m = {m!r} is not a number (use e.g. 0.3, 3/5 or 1e-12); allowed range "
+                    "0 < m < 1"
                 )
             val = Fraction(text)
         else:
@@ -159,7 +161,10 @@ def as_quality(Q) -> Fraction | mpmath.mpf | None:
             raise
         raise InputError(f"quality factor Q = {Q!r} is not a number; allowed range Q > 0") from None
     if not ok:
-        raise InputError(f"quality factor Q = {Q!r} must be finite (omit it for no friction); allowed range Q > 0")
+        raise InputError(
+            f"quality factor Q = {Q!r} must be finite (omit it for no friction); allowed range Q "
+            "> 0"
+        )
     if not val > 0:
         raise InputError(f"quality factor Q = {Q} is outside the allowed range Q > 0")
     return val
@@ -198,14 +203,23 @@ def as_tolerance(tol) -> mpmath.mpf:
     try:
         val = mpmath.mpf(tol) if not isinstance(tol, str) else mpmath.mpf(tol.strip())
     except (TypeError, ValueError):
-        raise InputError(f"tolerance {tol!r} is not a number; allowed range 1e-{DIGITS_RANGE[1]} to 0.1") from None
-    if not mpmath.isfinite(val) or not (mpmath.mpf(10) ** (-DIGITS_RANGE[1]) <= val <= mpmath.mpf("0.1")):
-        raise InputError(f"tolerance {tol} is outside the allowed range 1e-{DIGITS_RANGE[1]} to 0.1")
+        raise InputError(
+            f"tolerance {tol!r} is not a number; allowed range 1e-{DIGITS_RANGE[1]} to 0.1"
+        ) from None
+    if not mpmath.isfinite(val) or not (
+        mpmath.mpf(10) ** (-DIGITS_RANGE[1]) <= val <= mpmath.mpf("0.1")
+    ):
+        raise InputError(
+            f"tolerance {tol} is outside the allowed range 1e-{DIGITS_RANGE[1]} to 0.1"
+        )
     return val
 
 
-def as_range(spec: str, *, name: str = "m", low=Fraction(0), high=Fraction(1), max_points: int = 1_000_000) -> list[Fraction]:
-    """Values from ``"START:STOP:STEP"`` (``STOP`` included when hit exactly), all in ``(low, high)``.
+def as_range(
+    spec: str, *, name: str = "m", low=Fraction(0), high=Fraction(1), max_points: int = 1_000_000
+) -> list[Fraction]:
+    """Values from ``"START:STOP:STEP"`` (``STOP`` included when hit exactly), all in ``(low,
+    high)``.
 
     Exact (``Fraction``) arithmetic, so ``0.1:0.9:0.1`` has exactly nine points.
     """

@@ -1,0 +1,61 @@
+"""``paramres existence``: the depths at which an interval of instability exists with friction.
+
+    paramres existence --order N --Q Q [--damping exact|paper] [--digits D] [--json]
+
+Prints the ranges ``a < m < b`` (``b = 1``: open towards ``m -> 1``) with proven ends: the threshold
+and the gaps where friction swallows the interval near a closing (see :mod:`verify.existence`).
+"""
+
+from __future__ import annotations
+
+import argparse
+
+from reports.output import dump_json
+from verify.existence import existence
+
+__all__ = ["register", "run"]
+
+
+def register(subparsers) -> None:
+    p = subparsers.add_parser(
+        "existence",
+        help="depth ranges where the interval of order N exists with friction Q",
+        description=(
+            "With friction an interval of instability exists only above a threshold depth, and "
+            "an interval of order N >= 3 also vanishes near every depth where it would close. "
+            "Prints the ranges of m in (0, 1) where it exists, each end proven to D digits."
+        ),
+        formatter_class=argparse.RawDescriptionHelpFormatter,
+    )
+    p.add_argument("--order", required=True, metavar="N", help="order of the resonance (1, 2, ...)")
+    p.add_argument("--Q", required=True, metavar="Q", help="quality factor, Q > 0")
+    p.add_argument(
+        "--damping",
+        default="exact",
+        metavar="MODEL",
+        help="friction model: exact (default) or paper",
+    )
+    p.add_argument(
+        "--digits", default="15", metavar="D", help="digits of each end, 5 to 10000 (default 15)"
+    )
+    p.add_argument("--json", action="store_true", help="machine-readable output")
+    p.set_defaults(func=run)
+
+
+def run(args) -> int:
+    result = existence(args.order, args.Q, damping=args.damping, digits=args.digits)
+    if args.json:
+        data = result.as_json()
+        dump_json(
+            {
+                "order": data["order"],
+                "Q": data["Q"],
+                "damping": data["damping"],
+                "intervals": data["intervals"],
+                "digits": data["digits"],
+                "thresholds": data["thresholds"],
+            }
+        )
+    else:
+        print(result)
+    return 0

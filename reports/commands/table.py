@@ -1,0 +1,224 @@
+"""``paramres table``: edges of many intervals at many depths, as CSV or JSON.
+
+    paramres table --orders 1-6 --m START:STOP:STEP [--Q Q] [--damping exact|paper]
+                   [--digits D | --tol TOL] [--format csv|json] [--output FILE] [--jobs J]
+
+Without ``--digits`` the vectorised double-precision grid is used (:func:`verify.boundary_grid`,
+relative error below 1e-14; 13 significant digits are printed).  With ``--digits D`` every entry is
+certified to ``D`` digits (:func:`verify.boundary`), in ``--jobs`` processes, with a progress bar.
+With ``--tol TOL`` every entry is proven within the relative tolerance by the cheapest method that
+meets it at that order and depth (:func:`verify.auto.boundaries_tol`), named in a ``method`` column.
+``--output`` is written atomically (nothing is written if anything fails).
+"""
+
+from __future__ import annotations
+
+import argparse
+import csv
+import io
+import json
+import multiprocessing
+import os
+from fractions import Fraction
+
+import numpy as np
+
+from reports.output import BANNER, atomic_write, progress
+from verify.inputs import (
+    InputError,
+    as_damping,
+    as_digits,
+    as_orders,
+    as_quality,
+    as_range,
+    as_tolerance,
+)
+
+__all__ = ["register", "run", "rows", "decimal_text"]
+
+GRID_DIGITS = 13
+
+
+def register(subparsers) -> None:
+    p = subparsers.add_parser(
+        "table",
+        help="edges T/T0 of the intervals of several orders over a range of depths (CSV, JSON)",
+        description=(
+            "Lower and upper edges T/T0 of the intervals of instability of the given orders at "
+            "depths START, START+STEP, ..., STOP. Without --digits: double precision from the "
+            "vectorised grid (13 digits). With --digits D: every entry certified to D digits."
+        ),
+        formatter_class=argparse.RawDescriptionHelpFormatter,
+    )
+    p.add_argument("--orders", required=True, metavar="LIST", help="orders, e.g. 1-6 or 1,3,5")
+    p.add_argument(
+        "--m",
+        required=True,
+        metavar="START:STOP:STEP",
+        help="depths, e.g. 0.05:0.95:0.05 (exact decimal arithmetic)",
+    )
+    p.add_argument("--Q", metavar="Q", default=None, help="quality factor (omit for no friction)")
+    p.add_argument(
+        "--damping",
+        default="exact",
+        metavar="MODEL",
+        help="friction model: exact (default) or paper",
+    )
+    p.add_argument(
+        "--digits",
+        default=None,
+        metavar="D",
+        help="certify every entry to D digits (default: double-precision grid)",
+    )
+    p.add_argument(
+        "--tol",
+        default=None,
+        metavar="TOL",
+        help=(
+            "instead of --digits: the relative error of T/T0 wanted (1e-10000 to 0.1); each entry "
+            "is computed by the cheapest method that provably meets it (series in m, double "
+            "precision, certified), named in a method column"
+        ),
+    )
+    p.add_argument("--format", default="csv", choices=("csv", "json"), help="output format")
+    p.add_argument(
+        "--output",
+        metavar="FILE",
+        default=None,
+        help="write to FILE (atomically) instead of standard output",
+    )
+    p.add_argument("--jobs", metavar="J", default="1", help="worker processes (default 1)")
+    p.set_defaults(func=run)
+
+
+def decimal_text(x: Fraction) -> str:
+    """A depth as exact decimal text when it terminates, else ``p/q``."""
+    d = x.denominator
+    k = 0
+    while d % 10 == 0:
+        d //= 10
+        k += 1
+    twos = fives = 0
+    while d % 2 == 0:
+        d //= 2
+        twos += 1
+    while d % 5 == 0:
+        d //= 5
+        fives += 1
+    if d != 1:
+        return f"{x.numerator}/{x.denominator}"
+    places = k + max(twos, fives)
+    scaled = x * 10**places
+    sign = "-" if scaled < 0 else ""
+    digits = str(abs(scaled.numerator // scaled.denominator)).rjust(places + 1, "0")
+    text = digits[:-places] + "." + digits[-places:] if places else digits
+    return sign + (text.rstrip("0").rstrip(".") if "." in text else text)
+
+
+def _certified(task):
+    from verify.solve import boundary
+
+    order, m, Q, damping, digits = task
+    b = boundary(order, m, Q=Q, damping=damping, digits=digits)
+    j = b.as_json()
+    return (order, m, j["lower"], j["upper"], j["delta_lower"], j["delta_upper"], j["radius"])
+
+
+def _tol_rows(orders, ms, Q, damping, tol, label):
+    from verify.auto import boundaries_tol
+
+    def prog(items):
+        return progress(items, total=len(items), label=label)
+
+    out = []
+    for b in boundaries_tol(orders, ms, Q=Q, damping=damping, tol=tol, progress=prog):
+        j = b.as_json()
+        cells = [j[k] for k in ("lower", "upper", "delta_lower", "delta_upper", "radius")]
+        out.append((b.order, b.m, *cells, b.method))
+    return out
+
+
+def rows(orders, ms, Q, damping, digits, jobs=1, label="table", tol=None):
+    """Table rows ``(order, m, lower, upper[, delta_lower, delta_upper, radius[, method]])`` as
+    text (``method`` with a tolerance ``tol``)."""
+    if tol is not None:
+        return _tol_rows(orders, ms, Q, damping, tol, label)
+    if digits is None:
+        import mpmath
+
+        from verify.grid import boundary_grid
+
+        def fmt(v):
+            if not np.isfinite(v):
+                return None
+            return mpmath.nstr(mpmath.mpf(float(v)), GRID_DIGITS, strip_zeros=False)
+
+        grid = boundary_grid(orders, np.array([float(m) for m in ms]), Q=Q, damping=damping)
+        out = []
+        for i, n in enumerate(orders):
+            for j, m in enumerate(ms):
+                out.append((n, m, fmt(grid[i, 0, j]), fmt(grid[i, 1, j])))
+        return out
+    tasks = [(n, m, Q, damping, digits) for n in orders for m in ms]
+    if jobs > 1 and len(tasks) > 1:
+        ctx = multiprocessing.get_context("spawn" if os.name == "nt" else "fork")
+        with ctx.Pool(jobs) as pool:
+            it = pool.imap(_certified, tasks, chunksize=max(1, len(tasks) // (8 * jobs)))
+            return list(progress(it, total=len(tasks), label=label))
+    return [_certified(t) for t in progress(tasks, total=len(tasks), label=label)]
+
+
+def run(args) -> int:
+    orders = as_orders(args.orders)
+    ms = as_range(args.m, name="m", max_points=100_000)
+    Q = as_quality(args.Q)
+    damping = as_damping(args.damping)
+    digits = None if args.digits is None else as_digits(args.digits)
+    if args.tol is not None and digits is not None:
+        raise InputError("--tol and --digits exclude each other (the tolerance sets the digits)")
+    tol = None if args.tol is None else as_tolerance(args.tol)
+    try:
+        jobs = int(args.jobs)
+    except ValueError:
+        raise InputError(f"--jobs {args.jobs!r} is not an integer; allowed range 1 to 64") from None
+    if not 1 <= jobs <= 64:
+        raise InputError(f"--jobs {jobs} is outside the allowed range 1 to 64")
+    if args.output is not None and os.path.isdir(args.output):
+        raise InputError(f"--output {args.output!r} is a directory")
+    if len(orders) * len(ms) > 2_000_000:
+        raise InputError(f"{len(orders) * len(ms)} table entries; at most 2000000 allowed")
+    Qtext = None if Q is None else decimal_text(Fraction(Q))
+    data = rows(orders, ms, Q, damping, digits, jobs, tol=tol)
+    certified = digits is not None or tol is not None
+    header = ["order", "m", "lower", "upper"]
+    header += ["delta_lower", "delta_upper", "radius"] if certified else []
+    header += ["method"] if tol is not None else []
+    if args.format == "json":
+        doc = {
+            "orders": orders,
+            "Q": Qtext,
+            "damping": damping if Q is not None else "none",
+            "digits": digits if digits is not None else (None if tol is not None else GRID_DIGITS),
+            "method": "auto" if tol is not None else ("certified" if certified else "grid"),
+            "columns": header,
+            "rows": [[r[0], decimal_text(r[1])] + list(r[2:]) for r in data],
+        }
+        if tol is not None:
+            doc["tolerance"] = args.tol.strip()
+        if args.output:
+            doc = {"generated_by": BANNER.format(what="table"), **doc}
+        text = json.dumps(doc, indent=2) + "\n"
+    else:
+        buf = io.StringIO()
+        if args.output:
+            buf.write("# " + BANNER.format(what="table") + "\n")
+        w = csv.writer(buf, lineterminator="\n")
+        w.writerow(header)
+        for r in data:
+            w.writerow([r[0], decimal_text(r[1])] + ["" if v is None else v for v in r[2:]])
+        text = buf.getvalue()
+    if args.output:
+        atomic_write(args.output, text)
+    else:
+        print(text, end="")
+    return 0

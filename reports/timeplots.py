@@ -1,0 +1,401 @@
+"""Time-domain pictures: the phase trajectory, ``phi'(t)`` and ``phi(t)`` of a simulated run.
+
+The layout follows the paper's figures 1, 3-7 and 9: on the left the phase trajectory in the plane
+``(phi, phi')`` -- arcs of two families of ellipses, one per length of the pendulum, joined by the
+vertical jumps of the angular velocity at the moments the bob moves -- and on the right the angular
+velocity and the angle against time, the moments of the jumps marked.  The points where a half
+period starts and ends are numbered on the first periods, the same numbers in the phase plane and
+on ``phi'(t)``, as the paper does.
+
+:func:`paper_figure` re-draws the paper's scenes from runs of :func:`verify.timedomain.simulate` (the
+paper gives no depth for its pictures; the depths chosen here are in :data:`PAPER_SCENES`), and
+:func:`envelope_figure` shows how the growth inside an interval is limited by the
+amplitude-dependent period of the real (nonlinear) pendulum.  Figures are built without pyplot;
+:func:`figure_bytes` renders one as PDF, PNG or SVG, :func:`save_figure` writes it atomically.
+"""
+
+from __future__ import annotations
+
+import io
+from dataclasses import dataclass
+from fractions import Fraction
+from pathlib import Path
+
+import numpy as np
+from matplotlib.backends.backend_agg import FigureCanvasAgg
+from matplotlib.figure import Figure
+
+from verify.inputs import InputError
+
+from .figures import TEXT_WIDTH_IN, pdf_bytes, png_bytes, style
+from .output import BANNER, atomic_write
+
+__all__ = [
+    "PAPER_SCENES",
+    "Scene",
+    "time_figure",
+    "envelope_figure",
+    "saturation_figure",
+    "paper_figure",
+    "paper_simulations",
+    "figure_bytes",
+    "save_figure",
+    "check_plot_path",
+    "draw_run",
+    "FORMATS",
+]
+
+#: file name endings a figure can be written as
+FORMATS = (".pdf", ".png", ".svg")
+
+#: colours of the two halves: bob down (long pendulum), bob up (short pendulum)
+HALF_COLOURS = {1: "#0072B2", 2: "#D55E00"}
+JUMP_COLOUR = "0.45"
+
+
+@dataclass(frozen=True)
+class Scene:
+    """One of the paper's time-domain pictures, as a run: the arguments of ``simulate``."""
+
+    figure: int
+    caption: str
+    runs: tuple[dict, ...]
+
+
+#: the paper's time-domain figures.  Fig. 7 is the closing of the third interval (T1 : T2 = 2 : 1 at
+#: m = 3/5, where both edges coincide); the others use moderate depths that show the shapes clearly.
+PAPER_SCENES: dict[int, Scene] = {
+    1: Scene(
+        1,
+        "Stationary oscillation on the lower edge of the first interval (near $T = T_{av}/2$)",
+        ({"order": 1, "m": Fraction(3, 10), "edge": "lower", "periods": 3},),
+    ),
+    3: Scene(
+        3,
+        "Stationary oscillation on the upper edge of the first interval",
+        ({"order": 1, "m": Fraction(3, 10), "edge": "upper", "periods": 3},),
+    ),
+    4: Scene(
+        4,
+        "Stationary oscillations on the lower and upper edges of the third interval "
+        "($T \\approx 3T_{av}/2$)",
+        (
+            {"order": 3, "m": Fraction(3, 10), "edge": "lower", "periods": 2},
+            {"order": 3, "m": Fraction(3, 10), "edge": "upper", "periods": 2},
+        ),
+    ),
+    5: Scene(
+        5,
+        "Growth of the oscillation at the second-order resonance ($T \\approx T_{av}$)",
+        ({"order": 2, "m": Fraction(1, 5), "T": "centre", "periods": 12, "amplitude": 0.02},),
+    ),
+    6: Scene(
+        6,
+        "Stationary oscillation on the lower edge of the second interval (near $T = T_{av}$)",
+        ({"order": 2, "m": Fraction(1, 2), "edge": "lower", "periods": 3},),
+    ),
+    7: Scene(
+        7,
+        "Closing of the third interval: $T_1 : T_2 = 2 : 1$ ($m = 3/5$), "
+        "every solution is periodic",
+        # a start that is not one of the symmetric shapes: at the closing it returns all the same
+        ({"order": 3, "m": Fraction(3, 5), "edge": "lower", "periods": 2, "phase": -0.7},),
+    ),
+    9: Scene(
+        9,
+        "Stationary oscillation on the lower edge of the first interval with friction ($Q = 3$)",
+        ({"order": 1, "m": Fraction(3, 10), "edge": "lower", "Q": Fraction(3), "periods": 3},),
+    ),
+}
+
+
+# ---------------------------------------------------------------------------------------------
+# drawing
+
+
+def _new(width: float, height: float) -> Figure:
+    fig = Figure(figsize=(width, height))
+    FigureCanvasAgg(fig)
+    return fig
+
+
+def _label(sim) -> str:
+    import mpmath
+
+    with mpmath.workdps(sim.digits):
+        T = mpmath.nstr(sim.tau, 10)
+    parts = [f"$n = {sim.order}$, $m = {sim.m}$, $T/T_0 = {T}$"]
+    if sim.edge:
+        parts.append(f"{sim.edge} edge")
+    parts.append("no friction" if sim.Q is None else f"$Q = {sim.Q}$ ({sim.damping})")
+    if sim.nonlinear:
+        parts.append("nonlinear")
+    return ", ".join(parts)
+
+
+def _check_finite(sim) -> None:
+    for s in sim.segments:
+        if not (np.all(np.isfinite(s.phi)) and np.all(np.isfinite(s.dphi))):
+            raise InputError(
+                "the trajectory leaves the range of double precision; plot fewer periods"
+            )
+
+
+def draw_run(ax_phase, ax_vel, ax_angle, sim, *, numbered: int = 8) -> None:
+    """Draw one run on three axes; number the first ``numbered`` segment end points."""
+    _check_finite(sim)
+    segs = sim.segments
+    for i, s in enumerate(segs):
+        c = HALF_COLOURS[s.half]
+        ax_phase.plot(s.phi, s.dphi, color=c, lw=1.0)
+        ax_vel.plot(s.t, s.dphi, color=c, lw=1.0)
+        ax_angle.plot(s.t, s.phi, color=c, lw=1.0)
+        if i + 1 < len(segs):
+            nxt = segs[i + 1]
+            # the jump: angle continuous, angular velocity changes (J phi' conserved)
+            ax_phase.plot(
+                [s.phi[-1], nxt.phi[0]],
+                [s.dphi[-1], nxt.dphi[0]],
+                color=JUMP_COLOUR,
+                lw=0.8,
+                ls="--",
+            )
+            ax_vel.plot(
+                [s.t[-1], nxt.t[0]], [s.dphi[-1], nxt.dphi[0]], color=JUMP_COLOUR, lw=0.8, ls="--"
+            )
+    for ax in (ax_vel, ax_angle):
+        if len(segs) <= 40:  # mark the moments of the jumps while they can be told apart
+            for tj in sim.jump_times:
+                ax.axvline(tj, color="0.85", lw=0.5, zorder=0)
+        ax.axhline(0, color="0.6", lw=0.5, zorder=0)
+    ax_phase.axhline(0, color="0.6", lw=0.5, zorder=0)
+    ax_phase.axvline(0, color="0.6", lw=0.5, zorder=0)
+    # numbered points: start and end of each of the first segments; in the phase plane points that
+    # coincide (a closed trajectory passes them twice) share one label, "2,5"
+    points = []
+    for s in segs:
+        for j in (0, -1):
+            if len(points) < numbered:
+                points.append((len(points) + 1, s.t[j], s.phi[j], s.dphi[j]))
+    span = max((max(np.ptp(s.phi), np.ptp(s.dphi) / 10) for s in segs), default=1.0) or 1.0
+    groups: list[list] = []
+    for p in points:
+        for g in groups:
+            if abs(g[0][2] - p[2]) < 1e-3 * span and abs(g[0][3] - p[3]) < 1e-2 * span:
+                g.append(p)
+                break
+        else:
+            groups.append([p])
+    for g in groups:
+        x, y = g[0][2], g[0][3]
+        ax_phase.plot([x], [y], "o", ms=2.2, color="k")
+        ax_phase.annotate(
+            ",".join(str(p[0]) for p in g),
+            (x, y),
+            textcoords="offset points",
+            xytext=(3, 3),
+            fontsize=7,
+        )
+    for k, t, _, dphi in points:
+        ax_vel.plot([t], [dphi], "o", ms=2.2, color="k")
+        ax_vel.annotate(str(k), (t, dphi), textcoords="offset points", xytext=(3, 3), fontsize=7)
+    ax_phase.set_xlabel(r"$\varphi$ (rad)")
+    ax_phase.set_ylabel(r"$\dot\varphi$ (rad$/T_0$)")
+    ax_vel.set_ylabel(r"$\dot\varphi$")
+    ax_angle.set_ylabel(r"$\varphi$")
+    ax_angle.set_xlabel(r"$t/T_0$")
+
+
+def time_figure(
+    sims, *, title: str | None = None, numbered: int = 8, envelope: bool = False
+) -> Figure:
+    """Phase trajectory, ``phi'(t)`` and ``phi(t)`` for one run or a row per run; with
+    ``envelope`` a last row shows the largest ``|phi|`` per period (see :func:`envelope_figure`)."""
+    sims = list(sims) if isinstance(sims, list | tuple) else [sims]
+    rows = len(sims)
+    with style():
+        extra = 2.2 if envelope else 0.0
+        height = 3.0 * rows + extra + (0.3 if title else 0)
+        fig = _new(TEXT_WIDTH_IN, height)
+        top = 1 - (0.45 + (0.3 if title else 0)) / height  # room for the titles, in inches
+        ratios = [3.0] * rows + ([extra] if envelope else [])
+        outer = fig.add_gridspec(
+            len(ratios), 1, hspace=0.42, top=top, bottom=0.45 / height, height_ratios=ratios
+        )
+        for r, sim in enumerate(sims):
+            inner = outer[r].subgridspec(2, 2, width_ratios=(1, 1.6), wspace=0.3, hspace=0.15)
+            ax_phase = fig.add_subplot(inner[:, 0])
+            ax_vel = fig.add_subplot(inner[0, 1])
+            ax_angle = fig.add_subplot(inner[1, 1], sharex=ax_vel)
+            ax_vel.tick_params(labelbottom=False)
+            draw_run(ax_phase, ax_vel, ax_angle, sim, numbered=numbered)
+            note = []
+            if sim.closure_error is not None:
+                after = "2T" if sim.closure_periods == 2 else "T"
+                note.append(f"closure after ${after}$: {float(sim.closure_error):.1e}")
+            note.append(f"growth per period {float(sim.growth_per_period):.6g}")
+            if sim.nonlinear:
+                note.append(f"peak amplitude {sim.peak_amplitude:.3g} rad")
+            ax_vel.set_title(_label(sim) + "\n" + "; ".join(note), fontsize=7.5, loc="left")
+        if envelope:
+            _draw_envelope(fig.add_subplot(outer[rows]), sims, [_label(s) for s in sims])
+        if title:
+            fig.suptitle(title, fontsize=9)
+    return fig
+
+
+def _draw_envelope(ax, runs, labels) -> None:
+    marked = False
+    for sim, lab in zip(runs, labels, strict=True):
+        env = np.asarray(sim.envelope, dtype=float)
+        ax.semilogy(np.arange(1, len(env) + 1), env, lw=1.0, label=lab)
+        if sim.saturation_estimate is not None:
+            label = None if marked else "amplitude that detunes the lower edge past $T$ (estimate)"
+            ax.axhline(sim.saturation_estimate, color="0.5", lw=0.6, ls=":", label=label)
+            marked = True
+    ax.set_xlabel("period $k$")
+    ax.set_ylabel(r"$\max|\varphi|$ in period $k$")
+    if len(labels) > 1 or any(s.saturation_estimate is not None for s in runs):
+        ax.legend(fontsize=7)
+
+
+def envelope_figure(runs, labels, *, title: str | None = None, ylim=None) -> Figure:
+    """The largest ``|phi|`` in each period for several runs (e.g. linear against nonlinear), on a
+    logarithmic scale: exponential growth is a straight line, beats and saturation bend it.  A
+    dotted line marks a run's estimate of the amplitude at which the lengthened free period carries
+    the interval past ``T``."""
+    with style():
+        fig = _new(TEXT_WIDTH_IN, 3.0)
+        ax = fig.add_subplot(1, 1, 1)
+        _draw_envelope(ax, runs, labels)
+        if ylim is not None:
+            ax.set_ylim(*ylim)
+        ax.legend(fontsize=7, loc="upper left")
+        if title:
+            ax.set_title(title)
+    return fig
+
+
+# ---------------------------------------------------------------------------------------------
+# the paper's scenes
+
+
+def _centre(order, m):
+    import mpmath
+
+    from verify import boundary
+
+    b = boundary(order, m)
+    if not b.exists:  # pragma: no cover - the scenes are chosen where the interval exists
+        raise InputError(f"no interval of order {order} at m = {m}")
+    with mpmath.workdps(30):
+        return (b.lower + b.upper) / 2
+
+
+def paper_simulations(number: int, *, digits: int = 30):
+    """The runs behind the paper's figure ``number`` (one of :data:`PAPER_SCENES`)."""
+    from verify.timedomain import simulate
+
+    if number not in PAPER_SCENES:
+        raise InputError(
+            f"figure {number} is not a time-domain scene; choose from {sorted(PAPER_SCENES)}"
+        )
+    sims = []
+    for run in PAPER_SCENES[number].runs:
+        kw = dict(run)
+        if kw.get("T") == "centre":
+            kw["T"] = _centre(kw["order"], kw["m"])
+        if "phase" in kw:  # the state of amplitude A at this phase of the bob-down free oscillation
+            import mpmath
+
+            alpha, A = kw.pop("phase"), kw.pop("amplitude", 0.1)
+            with mpmath.workdps(digits + 10):
+                w1 = (
+                    2
+                    * mpmath.pi
+                    / mpmath.sqrt(1 + mpmath.mpf(kw["m"].numerator) / kw["m"].denominator)
+                )
+                kw["initial"] = (A * mpmath.cos(alpha), -A * w1 * mpmath.sin(alpha))
+        sims.append(simulate(digits=digits, **kw))
+    return sims
+
+
+def paper_figure(number: int, *, digits: int = 30) -> Figure:
+    """The paper's figure ``number`` re-drawn from simulated runs."""
+    sims = paper_simulations(number, digits=digits)
+    numbered = 0 if any(r.get("T") for r in PAPER_SCENES[number].runs) else 8
+    return time_figure(
+        sims, title=f"Fig. {number}: {PAPER_SCENES[number].caption}", numbered=numbered
+    )
+
+
+def saturation_figure(
+    *, m=Fraction(1, 20), Q=Fraction(30), periods: int = 300, amplitude=Fraction(1, 100)
+) -> Figure:
+    """Growth inside the first interval limited by the amplitude-dependent period: the envelope of
+    the linear model (exponential growth) against the real pendulum without friction (beats) and
+    with friction ``Q`` (beats that die out to a steady swing), all at one period ``T`` a third of
+    the way into the interval with friction."""
+    import mpmath
+
+    from verify import boundary
+    from verify.timedomain import simulate
+
+    b = boundary(1, m, Q=Q)
+    with mpmath.workdps(30):
+        T = (2 * b.lower + b.upper) / 3
+    common = {"T": T, "periods": periods, "amplitude": amplitude}
+    runs = [
+        simulate(1, m, **common),
+        simulate(1, m, nonlinear=True, **common),
+        simulate(1, m, Q=Q, nonlinear=True, **common),
+    ]
+    labels = ["linear model", "pendulum, no friction", f"pendulum, $Q = {Q}$"]
+    with mpmath.workdps(10):
+        Tt = mpmath.nstr(T, 8)
+    return envelope_figure(
+        runs,
+        labels,
+        title=f"First interval, $m = {m}$, $T/T_0 = {Tt}$: growth limited by the amplitude",
+        ylim=(float(amplitude) / 3, 30.0),
+    )
+
+
+# ---------------------------------------------------------------------------------------------
+# output
+
+
+def figure_bytes(fig: Figure, suffix: str) -> bytes:
+    """The figure rendered as ``.pdf`` (vector), ``.png`` or ``.svg``."""
+    suffix = suffix.lower()
+    if suffix == ".pdf":
+        return pdf_bytes(fig, what="simulate")
+    if suffix == ".png":
+        return png_bytes(fig, dpi=150)
+    if suffix == ".svg":
+        buf = io.BytesIO()
+        with style():
+            fig.savefig(
+                buf,
+                format="svg",
+                metadata={"Date": None, "Creator": BANNER.format(what="simulate")},
+            )
+        return buf.getvalue()
+    raise InputError(f"plot file type {suffix!r} is not one of: {', '.join(FORMATS)}")
+
+
+def check_plot_path(path) -> Path:
+    """The plot file name, refused (before any work) unless it ends in one of :data:`FORMATS`."""
+    path = Path(path)
+    if path.suffix.lower() not in FORMATS:
+        raise InputError(f"plot file {str(path)!r} must end in one of: {', '.join(FORMATS)}")
+    if path.exists() and path.is_dir():
+        raise InputError(f"plot file {str(path)!r} is a directory")
+    return path
+
+
+def save_figure(fig: Figure, path) -> Path:
+    """Render the figure in memory, then write it atomically (nothing half-written on failure)."""
+    path = check_plot_path(path)
+    data = figure_bytes(fig, path.suffix)
+    return atomic_write(path, data)

@@ -1,0 +1,84 @@
+"""Where the intervals exist with friction.
+
+References: the paper's Fig. 8 text (Q = 7: the third-order region vanishes above about 48 % depth
+and returns above about 66 %); the paper's small-m thresholds m_min = pi/(6Q) (eq. 38, order 1) and
+m_min = sqrt(2/(3Q)) (eq. 43, order 2), leading terms for large Q; and the certified
+:func:`verify.solve.boundary`, which must agree with every range on both sides of each end.
+"""
+
+from __future__ import annotations
+
+import math
+from fractions import Fraction
+
+import mpmath
+import pytest
+
+from verify.existence import closing_depths, existence
+from verify.inputs import InputError
+from verify.solve import boundary
+
+
+@pytest.mark.parametrize("damping", ["paper", "exact"])
+def test_q7_third_order_island(damping):
+    ex = existence(3, 7, damping=damping, digits=15)
+    (a1, b1), (a2, b2) = ex.intervals
+    assert b2 == 1 and ex.open_to_one
+    assert abs(float(b1) - 0.48) < 0.01  # "disappears above about 48 %"
+    assert abs(float(a2) - 0.66) < 0.01  # "returns above about 66 %"
+    assert a1 < b1 < mpmath.mpf(3) / 5 < a2  # the gap holds the closing m = 3/5
+    # both sides of every end, by the certified boundary
+    for t in ex.thresholds:
+        lo, hi = t.enclosure
+        d = Fraction(1, 10**9)
+        inside, outside = (hi + d, lo - d) if t.appears else (lo - d, hi + d)
+        assert boundary(3, inside, Q=7, damping=damping, digits=15).exists
+        assert not boundary(3, outside, Q=7, damping=damping, digits=15).exists
+    data = ex.as_json()
+    assert data["intervals"][-1][1] == "1" and data["order"] == 3 and data["damping"] == damping
+
+
+def test_models_differ_and_both_reported():
+    p = existence(3, 7, damping="paper").intervals
+    e = existence(3, 7, damping="exact").intervals
+    assert abs(float(p[0][1]) - float(e[0][1])) > 1e-3  # the two models give different ends
+
+
+@pytest.mark.parametrize("Q", [50, 200])
+def test_small_depth_thresholds_eqs_38_43(Q):
+    """m_min -> pi/(6Q) (order 1) and sqrt(2/(3Q)) (order 2) as Q grows (relative 3/Q-ish)."""
+    m1 = float(existence(1, Q, damping="paper").intervals[0][0])
+    m2 = float(existence(2, Q, damping="paper").intervals[0][0])
+    assert abs(m1 / (math.pi / (6 * Q)) - 1) < 5 / Q
+    assert abs(m2 / math.sqrt(2 / (3 * Q)) - 1) < 0.2
+
+
+def test_digits_and_enclosures():
+    ex = existence(1, 5, damping="exact", digits=40)
+    (t,) = ex.thresholds
+    lo, hi = t.enclosure
+    assert hi - lo <= Fraction(1, 10**40) * hi
+    with mpmath.workdps(60):
+        assert (
+            mpmath.mpf(lo.numerator) / lo.denominator
+            <= t.value
+            <= mpmath.mpf(hi.numerator) / hi.denominator
+        )
+    assert len(t.text().replace("0.", "").lstrip("0")) == 40
+
+
+def test_closing_depths():
+    assert closing_depths(3, None, "paper") == [0.6]
+    assert sorted(closing_depths(5, 7, "paper")) == pytest.approx([5 / 13, 15 / 17])
+    # exact model: the damped frequencies close at a slightly different depth
+    (mc,) = closing_depths(3, Fraction(7), "exact")
+    assert 0.59 < mc < 0.61 and mc != 0.6
+
+
+def test_bad_input():
+    with pytest.raises(InputError):
+        existence(3, None)
+    with pytest.raises(InputError):
+        existence(0, 7)
+    with pytest.raises(InputError):
+        existence(3, 7, damping="none")

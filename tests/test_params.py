@@ -1,0 +1,153 @@
+"""The cancellation-free parameters of :mod:`verify.params` equal their definitions.
+
+Reference: :func:`analytic.normal_form.parameters` (the definitions ``r^2 = (K-2)/(K+2)``,
+``beta = (Omega2-Omega1)/(Omega2+Omega1)``, ``w = omega_av/omega0``, ``g = gamma/omega_av``),
+evaluated by mpmath at 3x the working precision so that the cancellation in the definitions cannot
+hide an error, and the trace-form constant ``K' = K Omega1 Omega2`` from
+:func:`analytic.normal_form.K`.  Points are log-spaced towards both ends of ``0 < m < 1``.
+"""
+
+from __future__ import annotations
+
+import random
+from fractions import Fraction
+
+import mpmath
+import numpy as np
+import pytest
+import sympy as sp
+from flint import ctx
+
+from analytic.model import Damping, S
+from analytic.normal_form import K, parameters
+from verify.certify import to_mpf
+from verify.derived import backend
+from verify.params import exact_fraction, halves, normal_params, trace_params
+
+
+def _definitions(damping):
+    defs = parameters(damping)
+    byname = {k.name: v for k, v in defs.items()}
+    args = [S.m, S.Q]
+    return {name: sp.lambdify(args, expr, modules="mpmath") for name, expr in byname.items()}
+
+
+def _points(seed=7, count=12):
+    rng = random.Random(seed)
+    ms = [
+        Fraction(1, 10**12),
+        Fraction(1, 1000),
+        Fraction(3, 5),
+        Fraction(999, 1000),
+        Fraction(1) - Fraction(1, 10**9),
+    ]
+    ms += [Fraction(rng.uniform(0.0, 1.0)).limit_denominator(10**9) for _ in range(count)]
+    ms += [Fraction(10) ** -rng.randint(2, 14) for _ in range(4)]
+    return [m for m in ms if 0 < m < 1]
+
+
+DIGITS = 50
+
+
+def _agree(got, ref, what, m, Q, rel=None):
+    rel = mpmath.mpf(10) ** -(DIGITS - 3) if rel is None else rel
+    err = abs(got - ref)
+    assert err <= rel * abs(ref) + mpmath.mpf(10) ** -(3 * DIGITS), (
+        f"{what} at m={m}, Q={Q}: got {got}, definition {ref}, rel diff {err / abs(ref)}"
+    )
+
+
+@pytest.mark.parametrize("damping", ["none", "paper", "exact"])
+def test_normal_params_equal_definitions(damping):
+    defs = _definitions(Damping.NONE if damping == "none" else Damping(damping))
+    for m in _points():
+        for Q in [None] if damping == "none" else [Fraction(3), Fraction(7, 2), Fraction(10**6)]:
+            if damping == "exact" and not halves(m, Q, "exact").normal:
+                continue
+            prec = int(DIGITS * 3.33) + 20
+            with ctx.workprec(prec):
+                p = normal_params(m, Q, "exact" if damping == "none" else damping, backend("arb"))
+            names = ("r2", "u", "beta", "w", "bm") + (("g",) if Q is not None else ())
+            got = {k: to_mpf(getattr(p, k)) for k in names}
+            for k in names:  # no cancellation: the ball is as tight as the working precision
+                ball = getattr(p, k)
+                assert ball.rad() <= ball.mid().abs_lower() * 2.0 ** -(prec - 24), (k, m, Q, ball)
+            with mpmath.workdps(3 * DIGITS):
+                mm = mpmath.mpf(m.numerator) / m.denominator
+                QQ = mpmath.mpf(Q.numerator) / Q.denominator if Q is not None else mpmath.mpf(1)
+                ref = {k: defs[k if k != "r2" else "r^2"](mm, QQ) for k in ("r2", "beta", "w", "g")}
+                ref["u"] = 1 - ref["r2"]
+                ref["bm"] = 1 - ref["beta"]
+                for k in ("r2", "u", "beta", "w", "bm"):
+                    _agree(got[k], ref[k], k, m, Q)
+                if Q is not None:
+                    _agree(got["g"], ref["g"], "g", m, Q)
+
+
+def test_r_is_tanh_3a_and_beta_tanh_a():
+    """docs/theory.md item 5: with a = artanh(m)/2, beta = tanh a and r = tanh 3a."""
+    for m in _points(seed=11):
+        with ctx.workprec(300):
+            p = normal_params(m, None, "exact", backend("arb"))
+            with mpmath.workprec(300):
+                a = mpmath.atanh(mpmath.mpf(m.numerator) / m.denominator) / 2
+                _agree(to_mpf(p.beta), mpmath.tanh(a), "beta", m, None)
+                _agree(to_mpf(p.r), mpmath.tanh(3 * a), "r", m, None)
+
+
+def test_dinv_and_kappa():
+    """``1/w - 1/w0`` (exact model) against the difference evaluated at triple precision, and
+    ``kappa`` against ``K(exact) * Omega1 * Omega2 / gamma^2`` of :func:`analytic.normal_form.K`."""
+    Kexpr = K(Damping.EXACT) * S.Omega1 * S.Omega2 / S.gamma**2
+    om1, om2, gam = 2 * sp.pi / sp.sqrt(1 + S.m), 2 * sp.pi / sp.sqrt(1 - S.m), sp.pi / S.Q
+    Kexpr = Kexpr.subs(
+        {S.Omega1: sp.sqrt(om1**2 - gam**2), S.Omega2: sp.sqrt(om2**2 - gam**2), S.gamma: gam}
+    )
+    kap = sp.lambdify([S.m, S.Q], Kexpr, modules="mpmath")
+    defs = _definitions(Damping.EXACT)
+    undamped = _definitions(Damping.NONE)
+    for m in _points(seed=3):
+        for Q in (Fraction(3), Fraction(1000)):
+            with ctx.workprec(200):
+                p = normal_params(m, Q, "exact", backend("arb"))
+                t = trace_params(m, Q, backend("arb"))
+            with mpmath.workdps(150):
+                mm, QQ = (
+                    mpmath.mpf(m.numerator) / m.denominator,
+                    mpmath.mpf(Q.numerator) / Q.denominator,
+                )
+                ref = 1 / defs["w"](mm, QQ) - 1 / undamped["w"](mm, QQ)
+                _agree(to_mpf(p.dinv), ref, "dinv", m, Q, rel=mpmath.mpf(10) ** -50)
+                _agree(to_mpf(t.kappa), kap(mm, QQ), "kappa", m, Q, rel=mpmath.mpf(10) ** -50)
+
+
+def test_halves_exact_regimes():
+    assert halves(Fraction(44, 100), Fraction(3, 5), "exact").half1 == "critical"  # 4Q^2 = 1 + m
+    assert halves(Fraction(44, 100), Fraction(3, 5), "exact").half2 == "under"
+    assert halves(Fraction(96, 100), Fraction(1, 10), "exact").half2 == "critical"  # 4Q^2 = 1 - m
+    assert halves(Fraction(96, 100), Fraction(1, 10), "exact").half1 == "over"
+    assert halves(Fraction(1, 2), Fraction(1, 10), "paper").normal
+    assert halves(Fraction(1, 2), None, "exact").half1 == "undamped"
+
+
+def test_exact_fraction():
+    assert exact_fraction(0.1) == Fraction(0.1)
+    assert exact_fraction(mpmath.mpf("0.375")) == Fraction(3, 8)
+    with mpmath.workprec(200):
+        x = mpmath.mpf(1) / 3
+    assert abs(exact_fraction(x) - Fraction(1, 3)) < Fraction(1, 2**199)
+
+
+def test_numpy_backend_matches_arb():
+    """The float64 arrays of the grid are the same formulas: relative agreement to 4e-16 * 8."""
+    ms = np.array([float(m) for m in _points(seed=5)])
+    for damping, Q in (("exact", None), ("paper", 5.0), ("exact", 5.0)):
+        p = normal_params(ms, Q, damping, backend("numpy"))
+        for i, m in enumerate(ms):
+            with ctx.workprec(120):
+                ref = normal_params(
+                    Fraction(m), None if Q is None else Fraction(Q), damping, backend("arb")
+                )
+            for k in ("r2", "u", "beta", "w", "g"):
+                want = float(getattr(ref, k).mid())
+                assert abs(getattr(p, k)[i] - want) <= 8 * 2.0**-52 * abs(want), (k, m, damping)

@@ -1,0 +1,221 @@
+"""Proofs by ball arithmetic: enclosures of simple roots, and signs of a function on an interval.
+
+Every high-precision number the engine returns comes out of this module as an ``arb`` ball
+(python-flint; midpoint and radius, every operation rounded outward) that provably contains the
+exact value.  Two tools:
+
+:func:`certified_root`
+    Newton's method on ball midpoints, starting from a float and doubling the precision each step
+    (the cost is dominated by the last step), then **interval Newton**: for a ball ``X`` around the
+    approximate root ``x``, ``N(X) = x - F(x)/F'(X)``.  If ``N(X)`` lies in the interior of ``X``,
+    ``F`` has exactly one zero in ``X`` and it lies in ``N(X)`` (Moore; the interval form of
+    Krawczyk's test for one unknown).  ``F(x)`` is evaluated on the exact point ``x`` and ``F'``
+    on all of ``X``, so the test covers rounding and the truncation of the transcendental functions
+    alike.  The ball returned is ``N(X)`` and its radius is checked against the requested accuracy.
+
+:func:`prove_sign`
+    ``F`` has a strict sign on ``[a, b]``: ``F`` is evaluated on sub-balls (bisection), each
+    through the centred form ``F(mid) + F'(ball) (ball - mid)`` when that is tighter than the
+    direct evaluation.  Used to prove that a function with friction is positive between the two
+    edges and negative outside, i.e. that the two certified zeros *are* the edges.
+
+Precision is always a parameter (``flint.ctx.workprec`` contexts, restored on exit).
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable
+from dataclasses import dataclass
+
+import mpmath
+from flint import arb, ctx
+from mpmath.libmp import from_man_exp
+
+__all__ = [
+    "CertificationError",
+    "Root",
+    "certified_root",
+    "prove_sign",
+    "to_mpf",
+    "upper_mpf",
+    "ball",
+    "bits_for_digits",
+]
+
+
+class CertificationError(ArithmeticError):
+    """A result could not be proven at the precision allowed (e.g. a double root at a threshold)."""
+
+
+@dataclass(frozen=True)
+class Root:
+    """A proven simple root: ``ball`` contains exactly one zero of the function (in the ball
+    ``search`` the test was run on), computed at ``prec`` bits."""
+
+    ball: arb
+    search: arb
+    prec: int
+
+
+def bits_for_digits(digits: int) -> int:
+    """Bits that represent ``digits`` significant decimal digits."""
+    return int(math.ceil(digits * math.log2(10)))
+
+
+def to_mpf(x: arb) -> mpmath.mpf:
+    """The midpoint of ``x`` as an mpmath number, exactly (no rounding to the mpmath context)."""
+    man, exp = x.mid().man_exp()
+    return mpmath.mp.make_mpf(from_man_exp(int(man), int(exp)))
+
+
+def upper_mpf(x: arb) -> mpmath.mpf:
+    """An mpmath number ``>= |x|`` for every point of the ball (its upper magnitude bound)."""
+    man, exp = x.abs_upper().man_exp()
+    return mpmath.mp.make_mpf(from_man_exp(int(man), int(exp)))
+
+
+def ball(mid, rad=0) -> arb:
+    """A ball from a float, an mpf or an arb midpoint and a radius (exact conversions)."""
+    if isinstance(mid, mpmath.mpf):
+        man, exp = mid.man_exp
+        mid = arb(man) * arb(2) ** int(exp) if man else arb(0)
+    elif isinstance(mid, arb):
+        mid = mid.mid()
+    else:
+        mid = arb(mid)
+    if rad:
+        return arb(mid.mid(), arb(rad).abs_upper())
+    return mid
+
+
+def _newton(F, dF, x: arb, lo, hi):
+    """One safeguarded Newton step on midpoints; returns ``(x, |step|, lo, hi)``."""
+    fx = F(x)
+    dfx = dF(x)
+    if lo is not None:
+        if fx > 0:
+            hi = x
+        elif fx < 0:
+            lo = x
+    if not dfx.contains(0) and dfx.is_finite() and fx.is_finite():
+        xn = (x - fx / dfx).mid()
+        if lo is None or lo < xn < hi:
+            return xn, abs(xn - x), lo, hi
+    if lo is None:
+        raise CertificationError(f"Newton's method broke down near {float(x)}")
+    xn = ((lo + hi) / 2).mid()  # bisection on the bracket
+    return xn, abs(hi - lo), lo, hi
+
+
+def certified_root(
+    F: Callable[[arb], arb],
+    dF: Callable[[arb], arb],
+    x0: float | arb,
+    *,
+    bits: int,
+    floor: float = 0.0,
+    bracket: tuple | None = None,
+    max_bits: int | None = None,
+    scale: float | None = None,
+) -> Root:
+    """Enclose the simple zero of ``F`` near ``x0`` to relative accuracy ``2**-bits``.
+
+    ``F`` and ``dF`` take and return ``arb`` at the current precision.  The radius of the result is
+    at most ``2**-bits * max(|root|, floor)`` (``floor`` is an absolute scale for roots that may be
+    exactly zero), or ``2**-bits * scale`` if ``scale`` is given (when what matters is the accuracy
+    of a quantity derived from the root, e.g. ``root + shift`` near zero).  ``bracket = (a, b)``
+    (numbers with ``F(a) < 0 < F(b)``) keeps Newton inside: a step that would leave it is replaced
+    by a bisection step.  Raises :class:`CertificationError` if the interval-Newton test does not
+    succeed below ``max_bits`` bits of working precision.
+    """
+    target = bits + 20
+    max_bits = max_bits or 4 * target + 256
+    x = ball(x0)
+    lo = ball(bracket[0]) if bracket else None
+    hi = ball(bracket[1]) if bracket else None
+    floor_b = arb(floor)
+    # Newton on midpoints, doubling the precision each step
+    prec, step = 53, None
+    while prec < target:
+        prec = min(2 * prec, target)
+        with ctx.workprec(prec + 10):
+            x, step, lo, hi = _newton(F, dF, x, lo, hi)
+    with ctx.workprec(target + 10):
+        for _ in range(60):
+            size = max(abs(x), floor_b) if not scale else arb(scale)
+            if step is not None and step <= size * arb(2) ** (-target + 4):
+                break
+            x, step, lo, hi = _newton(F, dF, x, lo, hi)
+    # interval Newton, enlarging the search ball (or the precision) until it succeeds
+    work = target + 10
+    while work <= max_bits:
+        with ctx.workprec(work):
+            size = max(abs(x), floor_b)
+            want = ((arb(scale) if scale else size) * arb(2) ** (-bits)).abs_lower()
+            delta = max(
+                arb(step) * 4 if step is not None else arb(0), size * arb(2) ** (-work + 12)
+            )
+            for _ in range(10):
+                X = arb(x, delta.abs_upper())
+                dX = dF(X)
+                if dX.contains(0) or not dX.is_finite():
+                    delta = delta / 16
+                    continue
+                N = x - F(x) / dX
+                if X.contains_interior(N):
+                    if N.rad() <= want:
+                        return Root(N, X, work)
+                    break  # proven, but too wide at this precision
+                delta = delta * 16
+        work *= 2
+        with ctx.workprec(work):
+            for _ in range(2):
+                x, step, lo, hi = _newton(F, dF, x, lo, hi)
+    raise CertificationError(
+        f"could not enclose a simple root near {float(x.mid())} below {max_bits} bits"
+    )
+
+
+def prove_sign(
+    F: Callable[[arb], arb],
+    dF: Callable[[arb], arb],
+    a,
+    b,
+    sign: int,
+    *,
+    prec: int = 64,
+    budget: int = 4000,
+) -> bool:
+    """Whether ``sign * F > 0`` on all of ``[a, b]`` is proven by ball arithmetic.
+
+    Bisection with the centred form; at most ``budget`` evaluations, then ``False`` (not proven,
+    not disproven).  ``a``, ``b`` are floats, mpf or arb (their midpoints are used as the exact
+    ends; callers choose them so that this is what they need).
+    """
+    with ctx.workprec(prec):
+        a = ball(a)
+        b = ball(b)
+        if not a < b:
+            return a == b and bool(sign * F(a) > 0)
+        stack = [(a, b)]
+        count = 0
+        while stack:
+            lo, hi = stack.pop()
+            count += 1
+            if count > budget:
+                return False
+            mid = ((lo + hi) / 2).mid()
+            X = arb(mid, max(hi - mid, mid - lo).abs_upper())
+            val = F(X)
+            if not (sign * val > 0):
+                fm = F(mid)
+                if not (sign * fm > 0):
+                    return False  # a point where the sign fails (or cannot be decided)
+                cf = fm + dF(X) * (X - mid)
+                val = cf
+            if sign * val > 0:
+                continue
+            stack.append((lo, mid))
+            stack.append((mid, hi))
+        return True

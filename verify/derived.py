@@ -1,0 +1,585 @@
+"""The boundary equations that :mod:`analytic` derived, compiled once for every number type.
+
+Nothing here is typed in by hand: each form is taken from :mod:`analytic` (the per-edge factor
+:func:`analytic.normal_form.edge_factor`, the order form :func:`analytic.normal_form.order_form`,
+the half-period maps :func:`analytic.stitching.propagator`), rewritten by sympy into the variables
+the solvers use, differentiated by sympy, and compiled with :func:`sympy.lambdify` for four back
+ends:
+
+* ``"math"``: Python floats (starting values for the certified solver),
+* ``"numpy"``: float64 arrays (the vectorised grid),
+* ``"mpmath"``: mpmath numbers at the caller's ``mp.workdps`` precision,
+* ``"arb"``: python-flint ``arb`` balls at the caller's ``flint.ctx.workprec`` precision
+  (the certified route: every operation rounds outward).
+
+Rational constants are printed as calls to the back end's exact rational constructor, never as
+Python floats, and ``pi`` never occurs in a compiled form (the phase ``c = n pi/2`` is an argument),
+so the arb and mpmath functions are exact to the working precision.  Compiling is done once per
+process and form (:func:`functools.cache`); sympy is imported only when a form is first needed.
+
+The forms, in the variables of :mod:`verify.solve`:
+
+:func:`edge_equation` (no friction)
+    ``F(theta) = sin(theta) + k r f(beta (c + theta))`` up to the sign that makes ``dF/dtheta > 0``
+    at the root, from the factor ``f(x) - eps r f(y)`` with ``x = c + theta``, ``y = beta x``,
+    ``c = n pi/2``; ``f = cos`` for odd ``n``, ``sin`` for even ``n``.  Arguments
+    ``(theta, c, sgn, eps, r, beta)`` with ``sgn = sin(n pi/2)`` (odd) or ``cos(n pi/2)`` (even),
+    an exact integer ``+-1``.
+:func:`indicator` (normal form with friction)
+    ``D(theta) = R(theta) - sin(theta)**2`` (``= -N``, positive inside the interval) with
+    ``R = r^2 f(beta x)^2 - u sinh(g x)^2``; arguments ``(theta, c, r2, u, beta, g)`` where
+    ``u = 1 - r^2`` is passed separately (computed without cancellation by :mod:`verify.params`).
+:func:`trace_indicator` (exact model, a half critically or over-damped)
+    ``D(zeta) = sigma (2 C1 C2 - kappa S1 S2) - 2 cosh(2 zeta)`` with ``zeta = gamma T/2`` and the
+    half-period functions ``C = e^(gamma t) (U11 + U22)/2``, ``S = gamma e^(gamma t) U12`` of the
+    derived propagators (``cos``/``sin``, ``1``/``zeta`` or ``cosh``/``sinh``); arguments
+    ``(zeta, sigma, kappa, nu1, nu2)`` with ``nu_i = sqrt(|omega_i^2 - gamma^2|)/gamma`` and
+    ``kappa = (k omega1^2 + omega2^2/k - 2 gamma^2)/gamma^2``, ``k = ((1+m)/(1-m))^2``.
+
+Rearrangements of these for the vectorised grid and the ends of the depth range --
+:func:`edge_equation_any` / :func:`edge_equation_linear` (both parities in one array),
+:func:`order1_forms` (order 1 in ``x`` itself, ``T -> 0`` as ``m -> 1``), :func:`near_one_forms`
+(``r, beta -> 1``) -- and the paper's iteration maps (:func:`fixed_point_map`) are derived from the
+forms above by sympy, each rewrite checked by :func:`analytic.identity.prove_zero` or by the
+structure sympy returns.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+from functools import cache
+
+import mpmath
+import numpy as np
+from flint import arb, fmpq
+
+__all__ = [
+    "Backend",
+    "backend",
+    "Form",
+    "edge_equation",
+    "edge_equation_any",
+    "edge_equation_linear",
+    "indicator",
+    "order1_forms",
+    "near_one_forms",
+    "trace_indicator",
+    "half_period_forms",
+    "fixed_point_map",
+]
+
+
+# --------------------------------------------------------------------------------------------
+# number back ends
+
+
+@dataclass(frozen=True)
+class Backend:
+    """A number type the forms are compiled for: its function namespace and constructors."""
+
+    name: str
+    namespace: dict = field(repr=False)
+
+    def num(self, value):
+        """An exact integer or :class:`fractions.Fraction` as a number of this back end."""
+        p, q = _as_pq(value)
+        return self.namespace["_q"](p, q)
+
+    def pi(self):
+        return self.namespace["_pi"]()
+
+    def sqrt(self, x):
+        return self.namespace["sqrt"](x)
+
+    def fn(self, name):
+        return self.namespace[name]
+
+
+def _as_pq(value) -> tuple[int, int]:
+    if isinstance(value, int):
+        return value, 1
+    return value.numerator, value.denominator
+
+
+def _arb_q(p: int, q: int):
+    return arb(fmpq(p, q)) if q != 1 else arb(p)
+
+
+def _mp_q(p: int, q: int):
+    return mpmath.mpf(p) / q if q != 1 else mpmath.mpf(p)
+
+
+_BACKENDS = {
+    "math": {
+        "sin": math.sin,
+        "cos": math.cos,
+        "sinh": math.sinh,
+        "cosh": math.cosh,
+        "sqrt": math.sqrt,
+        "atan2": math.atan2,
+        "asin": math.asin,
+        "_q": lambda p, q: p / q,
+        "_pi": lambda: math.pi,
+    },
+    "numpy": {
+        "sin": np.sin,
+        "cos": np.cos,
+        "sinh": np.sinh,
+        "cosh": np.cosh,
+        "sqrt": np.sqrt,
+        "atan2": np.arctan2,
+        "asin": np.arcsin,
+        "_q": lambda p, q: p / q,
+        "_pi": lambda: np.pi,
+    },
+    "mpmath": {
+        "sin": mpmath.sin,
+        "cos": mpmath.cos,
+        "sinh": mpmath.sinh,
+        "cosh": mpmath.cosh,
+        "sqrt": mpmath.sqrt,
+        "atan2": mpmath.atan2,
+        "asin": mpmath.asin,
+        "_q": _mp_q,
+        "_pi": lambda: +mpmath.pi,
+    },
+    "arb": {
+        "sin": lambda z: z.sin(),
+        "cos": lambda z: z.cos(),
+        "sinh": lambda z: z.sinh(),
+        "cosh": lambda z: z.cosh(),
+        "sqrt": lambda z: z.sqrt(),
+        "atan2": lambda a, b: arb.atan2(a, b),
+        "asin": lambda z: z.asin(),
+        "_q": _arb_q,
+        "_pi": arb.pi,
+    },
+}
+
+
+@cache
+def backend(name: str) -> Backend:
+    """The back end called ``name`` (``"math"``, ``"numpy"``, ``"mpmath"`` or ``"arb"``)."""
+    return Backend(name, _BACKENDS[name])
+
+
+# --------------------------------------------------------------------------------------------
+# compiling
+
+
+def _printer():
+    from sympy.printing.lambdarepr import LambdaPrinter
+
+    class _Printer(LambdaPrinter):
+        """Plain function names; rationals as exact ``_q(p, q)`` calls of the back end."""
+
+        def _print_Rational(self, expr):
+            return f"_q({expr.p}, {expr.q})"
+
+        _print_Half = _print_Rational
+
+        def _print_Pi(self, expr):  # pragma: no cover - the forms are built without pi
+            raise ValueError("a compiled form must not contain pi (pass c = n pi/2 instead)")
+
+        def _print_Float(self, expr):  # pragma: no cover - the forms are exact
+            raise ValueError(f"a compiled form must be exact, found the float {expr}")
+
+    return _Printer(
+        {"fully_qualified_modules": False, "inline": True, "allow_unknown_functions": True}
+    )
+
+
+@dataclass
+class Form:
+    """A derived expression, its derivatives in the first argument, and their compilations.
+
+    ``exprs[k]`` is the ``k``-th derivative; ``compiled(name, k)`` returns a function of ``args``
+    evaluating ``exprs[k]`` with back end ``name``; ``compiled(name, (0, 1))`` returns one
+    function giving both (common subexpressions shared).
+    """
+
+    title: str
+    args: tuple
+    exprs: tuple
+    _cache: dict = field(default_factory=dict, repr=False)
+
+    def compiled(self, name: str, orders=0):
+        key = (name, orders)
+        fn = self._cache.get(key)
+        if fn is None:
+            import sympy as sp
+
+            many = isinstance(orders, tuple)
+            exprs = [self.exprs[k] for k in orders] if many else self.exprs[orders]
+            fn = sp.lambdify(
+                self.args,
+                exprs,
+                modules=[backend(name).namespace],
+                printer=_printer(),
+                cse=many,
+                docstring_limit=0,
+            )
+            if many:
+                inner = fn
+                fn = lambda *a: tuple(inner(*a))  # noqa: E731
+            self._cache[key] = fn
+        return fn
+
+
+def _derivatives(expr, var, count: int) -> tuple:
+    import sympy as sp
+
+    out = [expr]
+    for _ in range(count):
+        out.append(sp.diff(out[-1], var))
+    return tuple(out)
+
+
+# --------------------------------------------------------------------------------------------
+# the forms
+
+
+def _symbols():
+    import sympy as sp
+
+    from analytic.model import S
+
+    return {
+        "theta": S.theta,
+        "c": sp.Symbol("c", real=True),
+        "sgn": sp.Symbol("sgn", real=True),
+        "eps": sp.Symbol("eps", real=True),
+        "r": sp.Symbol("r", positive=True),
+        "r2": sp.Symbol("r^2", nonnegative=True),
+        "u": sp.Symbol("u", positive=True),
+        "beta": S.beta,
+        "g": S.g,
+        "zeta": sp.Symbol("zeta", positive=True),
+        "sigma": sp.Symbol("sigma", real=True),
+        "kappa": sp.Symbol("kappa", real=True),
+        "nu1": sp.Symbol("nu_1", positive=True),
+        "nu2": sp.Symbol("nu_2", positive=True),
+    }
+
+
+@cache
+def edge_equation(parity) -> Form:
+    """The undamped per-edge equation in ``theta`` (:func:`analytic.normal_form.edge_factor`).
+
+    ``x = c + theta``: ``f(x)`` is expanded by sympy and ``cos(c)``, ``sin(c)`` replaced by their
+    exact values for the parity (``cos(n pi/2) = 0`` for odd ``n``, ``sin(n pi/2) = 0`` for even
+    ``n``; the other is ``sgn = +-1``); the factor is then multiplied by the coefficient of
+    ``sin(theta)`` (which is ``+-1``) so that the result starts with ``+sin(theta)``.  Returns the
+    form and its first two ``theta``-derivatives.
+    """
+    import sympy as sp
+
+    from analytic.normal_form import edge_factor
+    from analytic.stitching import Parity
+
+    s = _symbols()
+    th, c, sgn, eps, r, beta = (s[k] for k in ("theta", "c", "sgn", "eps", "r", "beta"))
+    parity = Parity(parity)
+    X = sp.Symbol("X")
+    factor = edge_factor(parity, 1, symbols=(X, beta * (c + th), r))
+    factor = factor.subs(r, eps * r)  # the factor with epsilon = +-1 as an argument
+    f = sp.cos if parity is Parity.ODD else sp.sin
+    fx = sp.expand_trig(f(c + th))
+    if parity is Parity.ODD:
+        fx = fx.subs({sp.cos(c): 0, sp.sin(c): sgn})
+    else:
+        fx = fx.subs({sp.sin(c): 0, sp.cos(c): sgn})
+    expr = sp.expand(factor.subs(f(X), fx))
+    lead = expr.coeff(sp.sin(th))
+    expr = sp.expand(lead * expr).subs(sgn**2, 1)
+    if sp.expand(expr.coeff(sp.sin(th)) - 1) != 0:  # pragma: no cover - derivation guard
+        raise AssertionError(f"edge equation does not start with sin(theta): {expr}")
+    title = f"edge equation, {'odd' if parity is Parity.ODD else 'even'} orders"
+    return Form(title, (th, c, sgn, eps, r, beta), _derivatives(expr, th, 2))
+
+
+@cache
+def edge_equation_any() -> Form:
+    """Both parities' edge equations in one form, for arrays mixing odd and even orders:
+    ``odd * F_odd + (1 - odd) * F_even`` with ``odd`` = 1 or 0 (the two forms of
+    :func:`edge_equation`, each starting with ``sin(theta)``); arguments
+    ``(theta, c, sgn, eps, odd, r, beta)``.  Evaluating it costs the same four sines and cosines
+    as either form alone (each form's derivative needs both ``sin`` and ``cos`` of ``beta x``)."""
+    import sympy as sp
+
+    from analytic.stitching import Parity
+
+    odd_form, even_form = edge_equation(Parity.ODD), edge_equation(Parity.EVEN)
+    odd = sp.Symbol("odd", real=True)
+    pairs = zip(odd_form.exprs, even_form.exprs, strict=True)
+    exprs = tuple(odd * a + (1 - odd) * b for a, b in pairs)
+    args = odd_form.args[:4] + (odd,) + odd_form.args[4:]
+    return Form("edge equation, any order", args, tuple(sp.expand(e) for e in exprs))
+
+
+@cache
+def edge_equation_linear() -> tuple[Form, Form]:
+    """:func:`edge_equation_any` collected in ``cos(beta x)`` and ``sin(beta x)``:
+    ``sin(theta) + A cos(beta (c + theta)) + B sin(beta (c + theta))``, the coefficients ``A``,
+    ``B`` (functions of ``sgn, eps, odd, r``) computed once per point instead of once per
+    iteration.  Returns ``(form, coefficients)``: the form in ``(theta, c, beta, A, B)`` with two
+    ``theta``-derivatives, and ``(A, B)`` as a form of ``(sgn, eps, odd, r)``."""
+    import sympy as sp
+
+    any_form = edge_equation_any()
+    th, c, sgn, eps, odd, r, beta = any_form.args
+    y = beta * (c + th)
+    expr = sp.expand(any_form.exprs[0], trig=False)
+    Y = sp.Symbol("Y")
+    expr = expr.subs(
+        {sp.cos(beta * c + beta * th): sp.cos(Y), sp.sin(beta * c + beta * th): sp.sin(Y)}
+    )
+    A = sp.expand(expr.coeff(sp.cos(Y)))
+    B = sp.expand(expr.coeff(sp.sin(Y)))
+    rest = sp.expand(expr - A * sp.cos(Y) - B * sp.sin(Y))
+    if rest != sp.sin(th) or A.has(th) or B.has(th):  # pragma: no cover - derivation guard
+        raise AssertionError(f"edge equation is not linear in cos, sin of beta x: {expr}")
+    Asym, Bsym = sp.symbols("A B", real=True)
+    form = sp.sin(th) + Asym * sp.cos(y) + Bsym * sp.sin(y)
+    return (
+        Form(
+            "edge equation, linear in f(beta x)",
+            (th, c, beta, Asym, Bsym),
+            _derivatives(form, th, 2),
+        ),
+        Form("edge equation coefficients", (sgn, eps, odd, r), (A, B)),
+    )
+
+
+@cache
+def order1_forms() -> tuple[Form, Form]:
+    """Order 1 in the phase ``x = pi/2 + theta`` itself, for the lower edge at ``m -> 1`` where
+    ``x -> 0`` (``T -> 0``) and ``theta -> -pi/2`` would lose the digits of ``x``.
+
+    Derived from :func:`analytic.normal_form.edge_factor` (with ``eps = +1``, the equation of
+    that edge) and the order form with ``theta = x - pi/2``, rewritten so that no two large terms
+    cancel: ``cos z = 1 - 2 sin^2(z/2)`` (edge) or ``cos^2 z = 1 - sin^2 z`` (indicator), then
+    ``sin^2 a - sin^2 b = sin(a - b) sin(a + b)`` (checked by :func:`analytic.identity.prove_zero`),
+    ``r = 1 - v`` and ``r^2 = 1 - u``, ``1 - beta = bm``: every term is then small with ``x``,
+    ``v = 1 - r``, ``u = 1 - r^2`` or ``bm``, all computed without cancellation.  Returns
+    ``(edge, indicator)``: the edge form in ``(x, v, beta, bm)`` and ``D`` in
+    ``(x, r2, u, beta, bm, g)``, each with two ``x``-derivatives.
+    """
+    import sympy as sp
+
+    from analytic.identity import prove_zero
+    from analytic.normal_form import edge_factor, order_form, r2
+    from analytic.stitching import Parity
+
+    s = _symbols()
+    beta, u, g = s["beta"], s["u"], s["g"]
+    x = sp.Symbol("x", positive=True)
+    v = sp.Symbol("v", positive=True)
+    bm = sp.Symbol("b_m", positive=True)
+    rr = sp.Symbol("r", positive=True)
+
+    def split(a, b, diff):  # sin(a)^2 -> sin(b)^2 + sin(a - b) sin(a + b), a - b = diff
+        rep = sp.sin(b) ** 2 + sp.sin(diff) * sp.sin(a + b)
+        check = prove_zero((sp.sin(a) ** 2 - rep).subs(bm, 1 - beta))
+        if not check.holds:  # pragma: no cover - derivation guard
+            raise AssertionError(f"identity sin^2 a - sin^2 b failed for {a}, {b}")
+        return {sp.sin(a) ** 2: rep}
+
+    edge = edge_factor(Parity.ODD, 1, symbols=(x, beta * x, rr))
+    half = {
+        sp.cos(x): 1 - 2 * sp.sin(x / 2) ** 2,
+        sp.cos(beta * x): 1 - 2 * sp.sin(beta * x / 2) ** 2,
+    }
+    edge = sp.expand(edge.subs(half).subs(rr, 1 - v))
+    edge = sp.expand(edge.subs(split(x / 2, beta * x / 2, bm * x / 2)))
+    N, _R = order_form(1)
+    D = sp.expand((-N).subs(s["theta"], x - sp.pi / 2))
+    D = sp.expand(sp.expand_trig(D)) if D.has(sp.pi) else D
+    D = D.subs(sp.cos(x) ** 2, 1 - sp.sin(x) ** 2).subs(
+        sp.cos(beta * x) ** 2, 1 - sp.sin(beta * x) ** 2
+    )
+    D = sp.expand(D.subs(r2, 1 - u))
+    D = sp.expand(D.subs(split(x, beta * x, bm * x)))
+    for e in (edge, D):
+        if e.has(sp.pi) or e.has(sp.sin(x / 2) ** 2) or e.has(sp.sin(x) ** 2):  # pragma: no cover
+            raise AssertionError(f"order-1 form not rewritten: {e}")
+    return (
+        Form("order 1 edge equation in x", (x, v, beta, bm), _derivatives(edge, x, 2)),
+        Form("order 1 indicator in x", (x, r2, u, beta, bm, g), _derivatives(D, x, 2)),
+    )
+
+
+@cache
+def near_one_forms() -> tuple[Form, Form, Form]:
+    """The equations for ``m -> 1``, where ``r -> 1`` and ``beta -> 1`` and the terms of
+    :func:`edge_equation` and :func:`indicator` cancel each other.
+
+    With ``beta = 1 - bm`` and ``x = c + theta``, ``f(beta x) = f(c + w)``, ``w = theta - bm x``;
+    expanding in ``c`` with the exact ``cos(c)``, ``sin(c)`` makes both parities ``F = sin(theta) -
+    eps r sin(w)`` and ``D = r^2 sin(w)^2 - u sinh(g x)^2 - sin(theta)^2`` (checked for each parity
+    by :func:`analytic.identity.prove_zero`).  Then ``r = 1 - v``, ``r^2 = 1 - u`` and ``sin a - sin
+    b = 2 cos((a+b)/2) sin((a-b)/2)``, ``sin^2 a - sin^2 b = sin(a-b) sin(a+b)`` remove the
+    cancellation (``theta - w = bm x`` is small with ``bm``).  Returns the edge forms for ``eps =
+    +1`` and ``eps = -1`` in ``(theta, c, r, v, bm)`` and ``D`` in ``(theta, c, u, bm, g)``, each
+    with two ``theta``-derivatives.  Used where ``bm`` is small (:data:`verify.grid.NEAR_ONE`).
+    """
+    import sympy as sp
+
+    from analytic.identity import prove_zero
+    from analytic.normal_form import r2
+    from analytic.stitching import Parity
+
+    s = _symbols()
+    th, c, r, u, g, beta, eps, sgn = (
+        s[k] for k in ("theta", "c", "r", "u", "g", "beta", "eps", "sgn")
+    )
+    v = sp.Symbol("v", positive=True)
+    bm = sp.Symbol("b_m", positive=True)
+    X = c + th
+    w = th - bm * X
+    target_F = sp.sin(th) - eps * r * sp.sin(w)
+    target_D = r2 * sp.sin(w) ** 2 - u * sp.sinh(g * X) ** 2 - sp.sin(th) ** 2
+    for parity in Parity:
+        F = edge_equation(parity).exprs[0].subs(beta, 1 - bm)
+        D = indicator(parity).exprs[0].subs(beta, 1 - bm)
+        for expr, target in ((F, target_F), (D, target_D)):
+            for sg in (1, -1):  # sgn = sin or cos of c, the other one zero
+                cs = (
+                    {sp.cos(c): 0, sp.sin(c): sg}
+                    if parity is Parity.ODD
+                    else {sp.sin(c): 0, sp.cos(c): sg}
+                )
+                diff = sp.expand_trig(
+                    sp.expand(expr.subs(sgn, sg) - target)
+                    .subs(sp.cos(c * (1 - bm) - bm * th + th), sp.cos(c + w))
+                    .subs(sp.sin(c * (1 - bm) - bm * th + th), sp.sin(c + w))
+                )
+                diff = sp.expand(diff).subs(cs)
+                if not prove_zero(diff).holds:  # pragma: no cover - derivation guard
+                    raise AssertionError(f"near-one form differs for {parity}: {diff}")
+    plus = 2 * sp.cos((th + w) / 2) * sp.sin(bm * X / 2) + v * sp.sin(w)  # eps = +1, r = 1 - v
+    minus = sp.sin(th) + r * sp.sin(w)  # eps = -1: no cancellation
+    Dn = -sp.sin(bm * X) * sp.sin(th + w) - u * (sp.sin(w) ** 2 + sp.sinh(g * X) ** 2)
+    for got, want in (
+        (plus, target_F.subs(eps, 1).subs(r, 1 - v)),
+        (minus, target_F.subs(eps, -1)),
+        (Dn, target_D.subs(r2, 1 - u)),
+    ):
+        if not prove_zero(sp.expand(got - want)).holds:  # pragma: no cover - derivation guard
+            raise AssertionError(f"near-one rewrite failed: {got} vs {want}")
+    return (
+        Form("edge equation near m = 1, eps = +1", (th, c, r, v, bm), _derivatives(plus, th, 2)),
+        Form("edge equation near m = 1, eps = -1", (th, c, r, v, bm), _derivatives(minus, th, 2)),
+        Form("indicator near m = 1", (th, c, u, bm, g), _derivatives(Dn, th, 2)),
+    )
+
+
+@cache
+def indicator(parity) -> Form:
+    """``D = R - sin^2(theta)`` of the normal form (:func:`analytic.normal_form.order_form`),
+    positive inside the interval, with ``n pi/2 -> c`` and ``1 - r^2 -> u``; and its first three
+    ``theta``-derivatives."""
+    import sympy as sp
+
+    from analytic.normal_form import order_form, r2
+    from analytic.stitching import Parity
+
+    s = _symbols()
+    th, c, u, beta, g = (s[k] for k in ("theta", "c", "u", "beta", "g"))
+    nsym = sp.Symbol("n", positive=True, integer=True)
+    N, _R = order_form(nsym, parity=Parity(parity))
+    D = (-N).subs(nsym, 2 * c / sp.pi)
+    D = D.subs(1 - r2, u)
+    if D.has(sp.pi) or D.has(1 - r2):  # pragma: no cover - derivation guard
+        raise AssertionError(f"indicator still contains pi or 1 - r^2: {D}")
+    title = f"instability indicator, {'odd' if Parity(parity) is Parity.ODD else 'even'} orders"
+    return Form(title, (th, c, r2, u, beta, g), _derivatives(D, th, 3))
+
+
+@cache
+def half_period_forms(regime) -> tuple:
+    """``(C, S)`` of one half in the exact model for ``regime`` (under, critical, over), in units
+    of ``gamma`` (``zeta = gamma t``, ``nu = |Omega|/gamma``), from the derived propagator:
+    ``C = e^(gamma t) (U11 + U22)/2`` and ``S = gamma e^(gamma t) U12``."""
+    import sympy as sp
+
+    from analytic.model import Damping, Regime, S, segment
+    from analytic.stitching import propagator
+
+    regime = Regime(regime)
+    s = _symbols()
+    seg = segment(S.omega1, S.A1, S.B1, Damping.EXACT, regime)
+    U = propagator(seg, S.t)
+    C = sp.simplify(sp.exp(S.gamma * S.t) * (U[0, 0] + U[1, 1]) / 2)
+    Sv = sp.simplify(S.gamma * sp.exp(S.gamma * S.t) * U[0, 1])
+    units = {S.gamma: 1, S.t: s["zeta"], S.Omega1: s["nu1"], S.Lambda1: s["nu1"]}
+    return sp.simplify(C.subs(units)), sp.simplify(Sv.subs(units))
+
+
+@cache
+def trace_indicator(regime1, regime2) -> Form:
+    """``sigma tr(M) e^(gamma T) - 2 cosh(gamma T)`` in ``zeta = gamma T/2`` for the exact model
+    with the halves in the given regimes (``2 C1 C2 - kappa S1 S2`` with the half-period functions
+    of :func:`half_period_forms`); positive inside an interval."""
+    import sympy as sp
+
+    s = _symbols()
+    zeta, sigma, kappa, nu1, nu2 = (s[k] for k in ("zeta", "sigma", "kappa", "nu1", "nu2"))
+    C1, S1 = half_period_forms(regime1)
+    C2, S2 = (e.subs(nu1, nu2) for e in half_period_forms(regime2))
+    D = sigma * (2 * C1 * C2 - kappa * S1 * S2) - 2 * sp.cosh(2 * zeta)
+    title = f"trace indicator, half 1 {regime1}, half 2 {regime2}"
+    return Form(title, (zeta, sigma, kappa, nu1, nu2), _derivatives(D, zeta, 2))
+
+
+@cache
+def trace_window(regime1) -> Form:
+    """``(C1, S1)`` of half 1 as a form of ``(zeta, sigma, kappa, nu1, nu2)`` (for the phase
+    ``Phi = nu2 zeta + atan2(kappa S1, 2 nu2 C1)`` that numbers the orders)."""
+    s = _symbols()
+    C1, S1 = half_period_forms(regime1)
+    args = tuple(s[k] for k in ("zeta", "sigma", "kappa", "nu1", "nu2"))
+    return Form(f"half 1 functions, {regime1}", args, (C1, S1))
+
+
+@cache
+def fixed_point_map(parity, damped: bool) -> Form:
+    """The paper's iteration map (eqs. 15, 26 without friction; 39, 44 with it), derived here from
+    the same equations the solvers use, solved for ``sin(theta)`` by sympy:
+
+    * no friction: the edge equation solved for ``sin(theta)``, written with the paper's sign
+      convention ``sin(theta) = s r f(beta (c + theta))`` (``s = -1`` is what the paper calls the
+      lower edge, eqs. 15, 26; ``s = +1`` the upper); map ``theta -> asin(s r f(...))``;
+      arguments ``(theta, c, r, beta, s)``;
+    * friction: ``sin(theta)^2 = R(theta)`` solved for ``sin(theta) = s sqrt(R)`` (eqs. 39, 44, with
+      ``s = -+1``); map ``theta -> asin(s sqrt(R(theta)))``; arguments
+      ``(theta, c, r2, u, beta, g, s)``.
+
+    The iteration starts from ``theta = 0`` (the paper's ``Delta T = 0``).
+    """
+    import sympy as sp
+
+    s = _symbols()
+    th, c, r, beta = (s[k] for k in ("theta", "c", "r", "beta"))
+    branch = sp.Symbol("s", real=True)
+    Z = sp.Symbol("Z", real=True)
+    if not damped:
+        F = edge_equation(parity).exprs[0]
+        (rhs,) = sp.solve(F.subs(sp.sin(th), Z), Z)  # (+-) eps sgn r f(beta (c + theta))
+        unit = sp.expand(rhs / (s["eps"] * s["sgn"]))
+        if unit.could_extract_minus_sign():
+            unit = -unit
+        rhs = branch * unit  # the edge-picking sign eps sgn becomes the paper's sign s
+        args = (th, c, r, beta, branch)
+    else:
+        form = indicator(parity)
+        D = form.exprs[0]
+        sols = sp.solve((D + sp.sin(th) ** 2 - Z**2).subs(sp.sin(th), 0), Z)
+        root = [e for e in sols if not sp.Mul.make_args(e)[0].could_extract_minus_sign()]
+        if len(root) != 1:  # pragma: no cover - derivation guard
+            raise AssertionError(f"unexpected solutions {sols}")
+        rhs = branch * root[0]
+        args = (th, c, s["r2"], s["u"], beta, s["g"], branch)
+    title = f"fixed-point map, {'with' if damped else 'without'} friction"
+    return Form(title, args, (sp.asin(rhs),))

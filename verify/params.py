@@ -1,0 +1,235 @@
+"""The parameters of the boundary equations, in forms that do not cancel.
+
+:func:`analytic.normal_form.parameters` gives the *definitions* (``r^2 = (K-2)/(K+2)``,
+``beta = (Omega2 - Omega1)/(Omega2 + Omega1)``, ...).  Evaluated as written they lose digits: at
+``m = 1e-12`` both ``K - 2`` and ``Omega2 - Omega1`` are differences of nearly equal numbers, and
+near ``m = 1`` so is ``1 - r^2``.  This module evaluates the same quantities through rearrangements
+in which every subtraction is either exact or of numbers of different size; ``tests/test_params.py``
+proves each one equal to its definition.
+
+Without friction, and in the ``paper`` model (whose ``K`` is the undamped one), with
+``s = sqrt((1-m)(1+m))``::
+
+    beta  = m / (1 + s)                      (= tanh a,  a = artanh(m)/2)
+    1 - beta = (1 + s - m) / (1 + s)
+    r     = beta (3 + beta^2) / (1 + 3 beta^2)   (= tanh 3a)
+    1-r^2 = (1 - beta^2)^3 / (1 + 3 beta^2)^2,   1 - beta^2 = 2 s / (1 + s)
+    w     = sqrt((1 + s)/2) / s              (= omega_av / omega0)
+    g     = 1 / (2 Q w)                      (paper model; 0 without friction)
+
+In the ``exact`` model with both halves under-damped, in units of ``gamma = pi/Q`` (``nu_i =
+Omega_i/gamma = sqrt(u_i/(1 +- m))``, ``u_i = 4 Q^2 - (1 +- m)``)::
+
+    w'     = (nu1 + nu2) / (4 Q)
+    beta'  = 8 m Q^2 / ((1 - m^2) (nu1 + nu2)^2)          (Omega2^2 - Omega1^2 is exact)
+    K' - 2 = (U^2 + d^2) / (nu1 nu2),  K' + 2 = (V^2 + d^2) / (nu1 nu2)
+    r'^2   = (U^2 + d^2) / (V^2 + d^2),  1 - r'^2 = 4 nu1 nu2 / (V^2 + d^2)
+    g'     = 2 / (nu1 + nu2),   1 - beta' = 2 nu1 / (nu1 + nu2)
+
+with ``V = ((1+m)^2 nu1 + (1-m)^2 nu2)/(1-m^2)``, ``d = 4m/(1-m^2)`` and
+``U = ((1+m)^2 nu1 - (1-m)^2 nu2)/(1-m^2) = 2m((4Q^2-1)(3+m^2) - (1+3m^2)) / ((1-m^2)(1-m^2) V)``
+(the difference of the two square roots rewritten as a difference of squares, which is a
+polynomial).  ``K' - 2`` is a sum of squares: ``r'^2 > 0`` always.
+
+When a half is critically or over-damped (``u_i <= 0``) the normal form does not apply; the trace
+form ``2 C1 C2 - kappa S1 S2`` does, with ``kappa = K' nu1 nu2 = 4Q^2((1+m)/(1-m)^2 +
+(1-m)/(1+m)^2) - 2`` and ``nu_i = sqrt(|u_i|/(1 +- m))``.
+
+Every function takes the depth ``m`` and quality factor ``Q`` as numbers of one back end
+(:func:`verify.derived.backend`) -- arb balls, mpmath numbers, floats or float64 arrays -- and
+returns numbers of the same kind.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from fractions import Fraction
+
+import mpmath
+
+from .derived import Backend
+
+__all__ = [
+    "NormalParams",
+    "TraceParams",
+    "Halves",
+    "exact_fraction",
+    "halves",
+    "form_for",
+    "NEAR_CRITICAL",
+    "normal_params",
+    "trace_params",
+    "omega_av",
+]
+
+
+@dataclass(frozen=True)
+class NormalParams:
+    """Parameters of the normal form ``N = f(x)^2 - r^2 f(beta x)^2 + (1-r^2) sinh(g x)^2``.
+
+    ``w`` is ``omega_av/omega0`` of the model (``T/T0 = x/(pi w)``); ``w0`` that of the undamped
+    pendulum (eq. 5: ``T_av/T0 = 1/w0``); ``dinv = 1/w - 1/w0`` (zero unless the exact model with
+    friction), computed without cancellation.
+    """
+
+    r: object
+    r2: object
+    u: object  # 1 - r^2
+    beta: object
+    w: object
+    g: object
+    w0: object
+    dinv: object
+    bm: object = None  # 1 - beta
+
+
+@dataclass(frozen=True)
+class TraceParams:
+    """Parameters of the trace form (exact model): ``kappa``, ``nu1``, ``nu2`` in units of
+    ``gamma``, ``Q`` (``zeta = gamma T/2 = pi tau/(2 Q)``) and ``w0`` (undamped ``omega_av /
+    omega0``)."""
+
+    kappa: object
+    nu1: object
+    nu2: object
+    Q: object
+    w0: object
+
+
+@dataclass(frozen=True)
+class Halves:
+    """How each half behaves: ``"undamped"``, ``"under"``, ``"critical"`` or ``"over"``, decided
+    exactly (rational arithmetic on ``4 Q^2 - (1 +- m)``)."""
+
+    half1: str
+    half2: str
+
+    @property
+    def normal(self) -> bool:
+        """Whether the normal form applies (no half critically or over-damped)."""
+        return self.half1 in ("undamped", "under") and self.half2 in ("undamped", "under")
+
+
+#: below this ``nu1 = Omega1/gamma`` (half 1 close to critical damping) the normal form
+#: degenerates (``r, beta -> 1``: every term of ``D`` is O(1) while ``D`` is O(nu1)); the trace form
+#: is used instead, whose terms stay of the size of ``D``
+NEAR_CRITICAL = 0.05
+
+
+def form_for(m: Fraction, Q: Fraction | None, damping: str) -> tuple[str, tuple[str, str] | None]:
+    """Which equations solve the problem: ``("normal", None)`` or ``("trace", (half1, half2))``.
+
+    The normal form without friction, in the paper model, and in the exact model with both halves
+    under-damped and half 1 not within :data:`NEAR_CRITICAL` of critical damping; the trace form
+    otherwise."""
+    hv = halves(m, Q, damping)
+    if not hv.normal:
+        return "trace", (hv.half1, hv.half2)
+    if (
+        Q is not None
+        and damping == "exact"
+        and (4 * Q * Q - 1 - m) / (1 + m) < Fraction(NEAR_CRITICAL) ** 2
+    ):
+        return "trace", ("under", "under")
+    return "normal", None
+
+
+def exact_fraction(x) -> Fraction:
+    """``x`` (int, Fraction, float, mpmath mpf) as the exact Fraction of its value."""
+    if isinstance(x, Fraction):
+        return x
+    if isinstance(x, int | float):
+        return Fraction(x)
+    if isinstance(x, mpmath.mpf):
+        man, exp = x.man_exp
+        return Fraction(man) * Fraction(2) ** exp
+    return Fraction(x)
+
+
+def halves(m: Fraction, Q: Fraction | None, damping: str) -> Halves:
+    """Regime of each half for the exact depth ``m`` and quality factor ``Q``."""
+    if Q is None:
+        return Halves("undamped", "undamped")
+    if damping == "paper":
+        return Halves("under", "under")
+
+    def one(u: Fraction) -> str:
+        return "under" if u > 0 else ("critical" if u == 0 else "over")
+
+    return Halves(one(4 * Q * Q - 1 - m), one(4 * Q * Q - 1 + m))
+
+
+def _lift(x, B: Backend):
+    """Exact rationals become numbers of the back end; back-end numbers pass through."""
+    return B.num(x) if isinstance(x, Fraction | int) else x
+
+
+def _root(x, B: Backend):
+    return B.sqrt(_lift(x, B))
+
+
+def omega_av(m, B: Backend):
+    """``w0 = omega_av/omega0 = sqrt((1 + s)/2)/s`` with ``s = sqrt(1 - m^2)`` (undamped)."""
+    s = _root((1 - m) * (1 + m), B)
+    return B.sqrt((1 + s) / 2) / s
+
+
+def _undamped(m, B: Backend):
+    s = _root((1 - m) * (1 + m), B)
+    beta = _lift(m, B) / (1 + s)
+    b2 = beta * beta
+    r = beta * (3 + b2) / (1 + 3 * b2)
+    omb2 = 2 * s / (1 + s)
+    u = omb2 * omb2 * omb2 / ((1 + 3 * b2) * (1 + 3 * b2))
+    w = B.sqrt((1 + s) / 2) / s
+    bm = ((1 - _lift(m, B)) + s) / (1 + s)  # (1 - m) first: exact, no cancellation
+    return r, r * r, u, beta, w, bm
+
+
+def normal_params(m, Q, damping: str, B: Backend) -> NormalParams:
+    """The normal-form parameters for depth ``m`` and quality factor ``Q`` (``None``: no friction)
+    in the damping model ``damping`` (``"exact"`` or ``"paper"``), as numbers of back end ``B``.
+
+    ``m`` and ``Q`` are exact :class:`~fractions.Fraction` s (the rational parts are then computed
+    exactly and rounded once) or numbers of the back end.  For the exact model both halves must be
+    under-damped (``4 Q^2 > 1 + m``).
+    """
+    r, r2, u, beta, w0, bm = _undamped(m, B)
+    zero = r * 0
+    if Q is None:
+        return NormalParams(r, r2, u, beta, w0, zero, w0, zero, bm)
+    if damping == "paper":
+        return NormalParams(r, r2, u, beta, w0, 1 / (2 * _lift(Q, B) * w0), w0, zero, bm)
+    q2 = 4 * Q * Q
+    nu1 = _root((q2 - 1 - m) / (1 + m), B)
+    nu2 = _root((q2 - 1 + m) / (1 - m), B)
+    om2 = _lift((1 - m) * (1 + m), B)
+    a, b = _lift((1 + m) * (1 + m), B), _lift((1 - m) * (1 - m), B)
+    V = (a * nu1 + b * nu2) / om2
+    U = _lift(2 * m * ((q2 - 1) * (3 + m * m) - (1 + 3 * m * m)), B) / (om2 * om2 * V)
+    d = _lift(4 * m, B) / om2
+    den = V * V + d * d
+    r2 = (U * U + d * d) / den
+    u = 4 * nu1 * nu2 / den
+    nsum = nu1 + nu2
+    Qb = _lift(Q, B)
+    w = nsum / (4 * Qb)
+    beta = _lift(8 * m * Q * Q, B) / (om2 * nsum * nsum)
+    g = 2 / nsum
+    # w0 - w = (omega1 - Omega1 + omega2 - Omega2)/(4 pi), omega - Omega = gamma^2/(omega + Omega)
+    diff = (1 / (2 * Qb / _root(1 + m, B) + nu1) + 1 / (2 * Qb / _root(1 - m, B) + nu2)) / (4 * Qb)
+    return NormalParams(B.sqrt(r2), r2, u, beta, w, g, w0, diff / (w * w0), 2 * nu1 / nsum)
+
+
+def trace_params(m, Q, B: Backend) -> TraceParams:
+    """``kappa``, ``nu1``, ``nu2`` of the exact model's trace form (any regime).
+
+    With exact ``m``, ``Q`` the signs of ``u_i`` are exact, and a critically damped half gets
+    ``nu_i = 0`` exactly (its forms do not use it).
+    """
+    q2 = 4 * Q * Q
+    kappa = q2 * ((1 + m) / ((1 - m) * (1 - m)) + (1 - m) / ((1 + m) * (1 + m))) - 2
+    u1, u2 = (q2 - 1 - m) / (1 + m), (q2 - 1 + m) / (1 - m)
+    nu1 = _root(abs(u1), B) if u1 != 0 else _lift(Fraction(0), B)
+    nu2 = _root(abs(u2), B) if u2 != 0 else _lift(Fraction(0), B)
+    return TraceParams(_lift(kappa, B), nu1, nu2, _lift(Q, B), omega_av(m, B))
