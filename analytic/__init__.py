@@ -37,6 +37,7 @@ _API = {
     "edge_series": "expansions",
     "threshold_series": "thresholds",
     "closings": "closings",
+    "closed_forms": "expansions",
 }
 
 __all__ = sorted(_API)

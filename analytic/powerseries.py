@@ -1,0 +1,570 @@
+"""Truncated power series with exact coefficients, and the evaluation of sympy formulas as series.
+
+The expansions of :mod:`analytic.expansions` and :mod:`analytic.thresholds` solve equations that
+:mod:`analytic.normal_form` derives (sympy expressions in ``theta``, ``r``, ``beta``, ``g``, and the
+parameters as functions of ``m`` and ``Q``) order by order in a small variable.  ``sympy.series`` on
+such expressions is slow and its cost grows fast with the order; here the same expressions are
+*evaluated* node by node in truncated power-series arithmetic instead:
+
+* a coefficient is a Laurent polynomial over the rationals in a few named generators (``pi``, ``n``,
+  the friction parameters ...), stored as ``{exponents: fmpq}``; one generator may be subject to a
+  quadratic relation (``nu**2 = 1 - s**2``), which keeps the normal form of every coefficient
+  unique, so that "is this coefficient zero" is decided exactly;
+* a series is the list of its coefficients of ``var**0 .. var**P`` (everything beyond is dropped);
+* sums, products, inverses, rational powers and ``sin, cos, sinh, cosh, exp`` of series are exact
+  operations on the truncated series (the functions only of arguments without a constant term, or
+  with a constant term for ``Pow``, whose leading coefficient must be a monomial with an exact
+  root).
+
+:func:`evaluate` maps a sympy expression to a :class:`Series` given what each free symbol stands
+for; :meth:`Series.to_sympy` maps back.  Nothing here knows about pendulums.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Iterable, Mapping, Sequence
+
+import sympy as sp
+from flint import fmpq
+
+__all__ = ["LaurentRing", "Series", "evaluate", "newton", "reversion"]
+
+
+def _q(x) -> fmpq:
+    if isinstance(x, fmpq):
+        return x
+    if isinstance(x, int):
+        return fmpq(x)
+    if isinstance(x, sp.Rational):
+        return fmpq(int(x.p), int(x.q))
+    raise TypeError(f"not an exact rational: {x!r}")
+
+
+def _iroot(a: int, k: int) -> int | None:
+    """The exact ``k``-th root of the integer ``a >= 0``, or ``None``."""
+    if a < 0:
+        return None
+    if k == 2:
+        r = math.isqrt(a)
+        return r if r * r == a else None
+    r = round(a ** (1.0 / k)) if a < 2**1000 else int(math.exp(math.log(a) / k))
+    for c in (r - 1, r, r + 1):
+        if c >= 0 and c**k == a:
+            return c
+    lo, hi = 0, 1 << (a.bit_length() // k + 1)
+    while lo < hi:
+        mid = (lo + hi) // 2
+        if mid**k < a:
+            lo = mid + 1
+        else:
+            hi = mid
+    return lo if lo**k == a else None
+
+
+class LaurentRing:
+    """Laurent polynomials over ``Q`` in the generators ``gens``.
+
+    ``relation = (name, square)`` declares ``name**2 = square`` (``square`` a dict element of this
+    ring, free of ``name``); every product is reduced so that ``name`` appears at most to the first
+    power.  Elements are plain dicts ``{exponent tuple: fmpq}`` without zero entries.
+    """
+
+    def __init__(self, gens: Sequence[str], relation: tuple[str, Mapping] | None = None):
+        self.gens = tuple(gens)
+        self.index = {g: i for i, g in enumerate(self.gens)}
+        self.nvars = len(self.gens)
+        self.zero: dict = {}
+        self.one = {(0,) * self.nvars: fmpq(1)}
+        self._rel_index = None
+        self._rel_powers: list[dict] = []
+        if relation is not None:
+            name, square = relation
+            self._rel_index = self.index[name]
+            if any(e[self._rel_index] for e in square):
+                raise ValueError("the relation's right-hand side must be free of its generator")
+            self._rel_powers = [self.one, dict(square)]
+
+    # -- construction -------------------------------------------------------------------------
+    def const(self, c) -> dict:
+        c = _q(c)
+        return {(0,) * self.nvars: c} if c != 0 else {}
+
+    def gen(self, name: str, power: int = 1) -> dict:
+        e = [0] * self.nvars
+        e[self.index[name]] = power
+        out = {tuple(e): fmpq(1)}
+        return self._reduce(out) if self._rel_index is not None else out
+
+    def monomial(self, coeff, exps: Mapping[str, int]) -> dict:
+        e = [0] * self.nvars
+        for k, v in exps.items():
+            e[self.index[k]] = v
+        return self.mul(self.const(coeff), self._reduce({tuple(e): fmpq(1)}))
+
+    # -- arithmetic ---------------------------------------------------------------------------
+    @staticmethod
+    def add(a: dict, b: dict) -> dict:
+        if not a:
+            return b
+        if not b:
+            return a
+        out = dict(a)
+        for k, v in b.items():
+            w = out.get(k)
+            if w is None:
+                out[k] = v
+            else:
+                w = w + v
+                if w == 0:
+                    del out[k]
+                else:
+                    out[k] = w
+        return out
+
+    @staticmethod
+    def neg(a: dict) -> dict:
+        return {k: -v for k, v in a.items()}
+
+    def sub(self, a: dict, b: dict) -> dict:
+        return self.add(a, self.neg(b))
+
+    @staticmethod
+    def scale(a: dict, c) -> dict:
+        c = _q(c)
+        if c == 0:
+            return {}
+        return {k: v * c for k, v in a.items()}
+
+    def mul(self, a: dict, b: dict) -> dict:
+        if not a or not b:
+            return {}
+        out: dict = {}
+        for ka, va in a.items():
+            for kb, vb in b.items():
+                k = tuple(x + y for x, y in zip(ka, kb, strict=False))
+                w = out.get(k)
+                out[k] = va * vb if w is None else w + va * vb
+        out = {k: v for k, v in out.items() if v != 0}
+        if self._rel_index is not None:
+            out = self._reduce(out)
+        return out
+
+    def _rel_power(self, j: int) -> dict:
+        while len(self._rel_powers) <= j:
+            self._rel_powers.append(self._mul_plain(self._rel_powers[-1], self._rel_powers[1]))
+        return self._rel_powers[j]
+
+    def _mul_plain(self, a: dict, b: dict) -> dict:
+        out: dict = {}
+        for ka, va in a.items():
+            for kb, vb in b.items():
+                k = tuple(x + y for x, y in zip(ka, kb, strict=False))
+                out[k] = out.get(k, fmpq(0)) + va * vb
+        return {k: v for k, v in out.items() if v != 0}
+
+    def _reduce(self, a: dict) -> dict:
+        i = self._rel_index
+        if i is None or all(0 <= k[i] < 2 for k in a):
+            return a
+        out: dict = {}
+        for k, v in a.items():
+            e = k[i]
+            if 0 <= e < 2:
+                out[k] = out.get(k, fmpq(0)) + v
+                continue
+            if e < 0:
+                raise ValueError(f"negative power of the constrained generator {self.gens[i]}")
+            base = list(k)
+            base[i] = e % 2
+            for kr, vr in self._rel_power(e // 2).items():
+                kk = tuple(x + y for x, y in zip(base, kr, strict=False))
+                out[kk] = out.get(kk, fmpq(0)) + v * vr
+        return {k: v for k, v in out.items() if v != 0}
+
+    # -- division by monomials, roots -------------------------------------------------------
+    def is_monomial(self, a: dict) -> bool:
+        return len(a) == 1 and (self._rel_index is None or next(iter(a))[self._rel_index] == 0)
+
+    def inverse(self, a: dict) -> dict:
+        """``1/a`` for a monomial ``a`` (the only units of the ring)."""
+        if not self.is_monomial(a):
+            raise ZeroDivisionError(
+                f"cannot invert the non-monomial coefficient {self.to_sympy(a)}"
+            )
+        ((k, v),) = a.items()
+        return {tuple(-x for x in k): 1 / v}
+
+    def root(self, a: dict, num: int, den: int) -> dict:
+        """``a**(num/den)`` for a monomial with an exact root (positive rational coefficient)."""
+        if not self.is_monomial(a):
+            raise ValueError(f"no exact root of the non-monomial coefficient {self.to_sympy(a)}")
+        ((k, v),) = a.items()
+        if any(x % den for x in k):
+            raise ValueError(f"no exact root of {self.to_sympy(a)}")
+        p, q = int(v.p), int(v.q)
+        if den > 1:
+            if p < 0:
+                raise ValueError(f"no real root of {self.to_sympy(a)}")
+            rp, rq = _iroot(p, den), _iroot(q, den)
+            if rp is None or rq is None:
+                raise ValueError(f"no rational root of {self.to_sympy(a)}")
+        else:
+            rp, rq = p, q
+        c = fmpq(rp, rq) ** num if num >= 0 else fmpq(rq, rp) ** (-num)
+        return {tuple(x // den * num for x in k): c}
+
+    # -- conversion ---------------------------------------------------------------------------
+    def to_sympy(self, a: dict, symbols: Mapping[str, sp.Expr] | None = None) -> sp.Expr:
+        symbols = symbols or {}
+        syms = [symbols.get(g, sp.pi if g == "pi" else sp.Symbol(g)) for g in self.gens]
+        terms = []
+        for k, v in a.items():
+            t = sp.Rational(int(v.p), int(v.q))
+            for s_, e in zip(syms, k, strict=False):
+                if e:
+                    t = t * s_**e
+            terms.append(t)
+        return sp.Add(*terms)
+
+
+class Series:
+    """``sum(c[k] * var**k for k in range(P + 1))``, coefficients in ``ring``; ``P`` = ``prec``."""
+
+    __slots__ = ("ring", "c")
+
+    def __init__(self, ring: LaurentRing, coeffs: Iterable[dict]):
+        self.ring = ring
+        self.c = list(coeffs)
+
+    # -- construction -------------------------------------------------------------------------
+    @classmethod
+    def constant(cls, ring: LaurentRing, value: dict, prec: int) -> Series:
+        return cls(ring, [value] + [{} for _ in range(prec)])
+
+    @classmethod
+    def variable(cls, ring: LaurentRing, prec: int) -> Series:
+        c = [{} for _ in range(prec + 1)]
+        if prec >= 1:
+            c[1] = ring.one
+        return cls(ring, c)
+
+    @property
+    def prec(self) -> int:
+        return len(self.c) - 1
+
+    def valuation(self) -> int | None:
+        for k, a in enumerate(self.c):
+            if a:
+                return k
+        return None
+
+    def truncate(self, prec: int) -> Series:
+        """Drop the terms beyond ``var**prec`` (never extends: unknown terms are not zeros)."""
+        return Series(self.ring, self.c[: prec + 1])
+
+    def padded(self, prec: int) -> Series:
+        """Extend with zero coefficients up to ``var**prec``: only for series known to be exact
+        (polynomials), e.g. a truncated series that is then treated as a polynomial."""
+        return Series(self.ring, self.c + [{} for _ in range(prec + 1 - len(self.c))])
+
+    def shift(self, k: int) -> Series:
+        """Multiply by ``var**k``; the precision moves with it (``k < 0`` requires the lowest ``-k``
+        coefficients to vanish)."""
+        if k >= 0:
+            return Series(self.ring, [{} for _ in range(k)] + self.c)
+        if any(self.c[:-k]):
+            raise ValueError(f"cannot divide by var**{-k}: a lower coefficient does not vanish")
+        return Series(self.ring, self.c[-k:])
+
+    def map(self, f) -> Series:
+        return Series(self.ring, [f(a) for a in self.c])
+
+    # -- arithmetic ---------------------------------------------------------------------------
+    def _coerce(self, other) -> Series:
+        if isinstance(other, Series):
+            return other
+        return Series.constant(self.ring, self.ring.const(other), self.prec)
+
+    def __add__(self, other) -> Series:
+        o = self._coerce(other)
+        P = min(self.prec, o.prec)
+        return Series(self.ring, [self.ring.add(self.c[k], o.c[k]) for k in range(P + 1)])
+
+    __radd__ = __add__
+
+    def __neg__(self) -> Series:
+        return self.map(self.ring.neg)
+
+    def __sub__(self, other) -> Series:
+        return self + (-self._coerce(other))
+
+    def __rsub__(self, other) -> Series:
+        return self._coerce(other) - self
+
+    def __mul__(self, other) -> Series:
+        if not isinstance(other, Series):
+            c = _q(other)
+            return self.map(lambda a: self.ring.scale(a, c))
+        P = min(self.prec, other.prec)
+        R = self.ring
+        a, b = self.c, other.c
+        nz_a = [i for i in range(P + 1) if a[i]]
+        nz_b = [j for j in range(P + 1) if b[j]]
+        out = [{} for _ in range(P + 1)]
+        for i in nz_a:
+            for j in nz_b:
+                if i + j > P:
+                    break
+                out[i + j] = R.add(out[i + j], R.mul(a[i], b[j]))
+        return Series(R, out)
+
+    __rmul__ = __mul__
+
+    def scale_coeff(self, a: dict) -> Series:
+        """Multiply every coefficient by the ring element ``a``."""
+        return self.map(lambda x: self.ring.mul(x, a))
+
+    def inverse(self) -> Series:
+        R = self.ring
+        if not self.c[0]:
+            raise ZeroDivisionError("series without a constant term has no inverse")
+        inv0 = R.inverse(self.c[0])
+        out = [inv0]
+        for k in range(1, self.prec + 1):
+            acc: dict = {}
+            for j in range(1, k + 1):
+                if self.c[j] and out[k - j]:
+                    acc = R.add(acc, R.mul(self.c[j], out[k - j]))
+            out.append(R.neg(R.mul(acc, inv0)))
+        return Series(R, out)
+
+    def __truediv__(self, other) -> Series:
+        if not isinstance(other, Series):
+            return self * (1 / _q(other))
+        return self * other.inverse()
+
+    def __rtruediv__(self, other) -> Series:
+        return self._coerce(other) * self.inverse()
+
+    def __pow__(self, e) -> Series:
+        if isinstance(e, int) or (isinstance(e, sp.Integer)):
+            e = int(e)
+            if e < 0:
+                return self.inverse() ** (-e)
+            result = Series.constant(self.ring, self.ring.one, self.prec)
+            base = self
+            while e:
+                if e & 1:
+                    result = result * base
+                e >>= 1
+                if e:
+                    base = base * base
+            return result
+        return self.rational_power(sp.Rational(e))
+
+    def rational_power(self, e: sp.Rational) -> Series:
+        """``self**e`` for rational ``e``: ``c var**v (1 + t)**e``, ``c`` the leading
+        coefficient."""
+        e = sp.Rational(e)
+        if e.q == 1:
+            return self ** int(e)
+        v = self.valuation()
+        if v is None:
+            raise ValueError("power of the zero series")
+        if (v * e.p) % e.q:
+            raise ValueError(f"var**{v} has no power {e} in integer exponents")
+        R = self.ring
+        lead = self.c[v]
+        inv_lead = R.inverse(lead)
+        unit = self.shift(-v).scale_coeff(inv_lead)  # 1 + t, with precision prec - v
+        t = unit - 1
+        out = _binomial_series(t, e)
+        out = out.scale_coeff(R.root(lead, int(e.p), int(e.q)))
+        shift = v * e.p // e.q
+        if shift >= 0:
+            return out.shift(shift).truncate(self.prec - v + shift)
+        raise ValueError("negative power of a series without constant term")
+
+    # -- elementary functions of a series without constant term ---------------------------------
+    def _taylor(self, coeffs) -> Series:
+        if self.c[0]:
+            raise ValueError("elementary function of a series with a constant term")
+        R = self.ring
+        P = self.prec
+        total = Series.constant(R, R.const(coeffs(0)), P)
+        power = Series.constant(R, R.one, P)
+        for k in range(1, P + 1):
+            power = power * self
+            c = coeffs(k)
+            if c != 0:
+                total = total + power * c
+        return total
+
+    def sin(self) -> Series:
+        return self._taylor(
+            lambda k: 0 if k % 2 == 0 else fmpq((-1) ** (k // 2), math.factorial(k))
+        )
+
+    def cos(self) -> Series:
+        return self._taylor(lambda k: 0 if k % 2 else fmpq((-1) ** (k // 2), math.factorial(k)))
+
+    def sinh(self) -> Series:
+        return self._taylor(lambda k: 0 if k % 2 == 0 else fmpq(1, math.factorial(k)))
+
+    def cosh(self) -> Series:
+        return self._taylor(lambda k: 0 if k % 2 else fmpq(1, math.factorial(k)))
+
+    def exp(self) -> Series:
+        return self._taylor(lambda k: fmpq(1, math.factorial(k)))
+
+    def compose(self, inner: Series) -> Series:
+        """``self(inner)`` for ``inner`` without constant term (Horner)."""
+        if inner.c[0]:
+            raise ValueError("composition with a series that has a constant term")
+        P = min(self.prec, inner.prec)
+        R = self.ring
+        out = Series.constant(R, self.c[P] if P < len(self.c) else {}, P)
+        for k in range(P - 1, -1, -1):
+            out = out * inner + Series.constant(R, self.c[k], P)
+        return out
+
+    # -- conversion ---------------------------------------------------------------------------
+    def to_sympy(self, var: sp.Expr, symbols: Mapping[str, sp.Expr] | None = None) -> sp.Expr:
+        return sp.Add(*(self.ring.to_sympy(a, symbols) * var**k for k, a in enumerate(self.c) if a))
+
+    def coefficients_sympy(self, symbols: Mapping[str, sp.Expr] | None = None) -> list[sp.Expr]:
+        return [self.ring.to_sympy(a, symbols) for a in self.c]
+
+    def equals(self, other: Series) -> bool:
+        P = min(self.prec, other.prec)
+        return all(not self.ring.sub(self.c[k], other.c[k]) for k in range(P + 1))
+
+    def __repr__(self) -> str:
+        return f"Series({self.to_sympy(sp.Symbol('x'))} + O(x**{self.prec + 1}))"
+
+
+def _binomial_series(t: Series, e: sp.Rational) -> Series:
+    """``(1 + t)**e`` for ``t`` without constant term."""
+    R = t.ring
+    P = t.prec
+    total = Series.constant(R, R.one, P)
+    power = Series.constant(R, R.one, P)
+    coeff = fmpq(1)
+    ee = fmpq(int(e.p), int(e.q))
+    for k in range(1, P + 1):
+        coeff = coeff * (ee - (k - 1)) / k
+        power = power * t
+        if coeff != 0:
+            total = total + power * coeff
+    return total
+
+
+_FUNCS = {
+    sp.sin: Series.sin,
+    sp.cos: Series.cos,
+    sp.sinh: Series.sinh,
+    sp.cosh: Series.cosh,
+    sp.exp: Series.exp,
+}
+
+
+def evaluate(
+    expr: sp.Expr,
+    env: Mapping[sp.Symbol, Series | str],
+    ring: LaurentRing,
+    prec: int,
+    *,
+    var: sp.Symbol | None = None,
+    memo: dict | None = None,
+) -> Series:
+    """The truncated series of ``expr``.
+
+    ``env`` says what each free symbol stands for: a :class:`Series` (same ring) or the name of a
+    ring generator.  ``var`` (if given) is the series variable itself; ``pi`` is the ring generator
+    ``"pi"``.  Shared sub-expressions are evaluated once (``memo``).
+    """
+    memo = {} if memo is None else memo
+    R = ring
+
+    def ev(e) -> Series:
+        hit = memo.get(e)
+        if hit is not None:
+            return hit
+        out = _ev(e)
+        memo[e] = out
+        return out
+
+    def _ev(e) -> Series:
+        if var is not None and e == var:
+            return Series.variable(R, prec)
+        if e.is_Rational:
+            return Series.constant(R, R.const(e), prec)
+        if e is sp.pi:
+            return Series.constant(R, R.gen("pi"), prec)
+        if e.is_Symbol:
+            val = env.get(e)
+            if val is None:
+                raise KeyError(f"no value for the symbol {e}")
+            if isinstance(val, str):
+                return Series.constant(R, R.gen(val), prec)
+            return val.truncate(prec)
+        if e.is_Add:
+            args = [ev(a) for a in e.args]
+            out = args[0]
+            for a in args[1:]:
+                out = out + a
+            return out
+        if e.is_Mul:
+            args = [ev(a) for a in e.args]
+            out = args[0]
+            for a in args[1:]:
+                out = out * a
+            return out
+        if e.is_Pow:
+            base, ex = e.args
+            if not ex.is_Rational:
+                raise ValueError(f"non-rational exponent in {e}")
+            return ev(base) ** (int(ex) if ex.is_Integer else sp.Rational(ex))
+        for f, method in _FUNCS.items():
+            if isinstance(e, f):
+                return method(ev(e.args[0]))
+        raise ValueError(f"cannot evaluate {type(e).__name__} as a series: {e}")
+
+    return ev(sp.sympify(expr))
+
+
+def newton(residual, derivative, start: Series, *, max_iter: int = 40) -> Series:
+    """Solve ``residual(u) = 0`` for the series ``u`` by Newton steps ``u -= residual/derivative``.
+
+    The derivative's leading coefficient must be a monomial (so that it is a unit); then each step
+    at least doubles the number of correct coefficients, and the loop stops when a step changes
+    nothing and the residual vanishes to the working precision.
+    """
+    u = start
+    for _ in range(max_iter):
+        res = residual(u)
+        if all(not a for a in res.c):
+            return u
+        step = res / derivative(u)
+        u = u - step
+    raise ArithmeticError("Newton iteration on series did not converge")
+
+
+def reversion(f: Series) -> Series:
+    """The compositional inverse ``g`` of ``f = c1 x + c2 x**2 + ...`` (``c1`` a monomial)."""
+    R = f.ring
+    if f.c[0] or not f.c[1]:
+        raise ValueError("reversion needs f(0) = 0 and f'(0) a unit")
+    P = f.prec
+    c1inv = R.inverse(f.c[1])
+    g = Series(R, [{}, c1inv] + [{} for _ in range(P - 1)])
+    x = Series.variable(R, P)
+    # Newton on f(g) - x = 0 with f'(g) computed from the derivative series of f
+    df = Series(R, [R.scale(f.c[k], k) for k in range(1, P + 1)] + [{}])
+    for _ in range(2 * P + 4):
+        res = f.compose(g) - x
+        if all(not a for a in res.c):
+            return g
+        g = g - res / df.compose(g)
+    raise ArithmeticError("series reversion did not converge")

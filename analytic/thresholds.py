@@ -1,0 +1,476 @@
+"""Friction: the threshold depth of every interval and its edges near the threshold, in both models.
+
+With friction the normal form (:func:`analytic.normal_form.order_form`) is
+
+    N(theta) = sin^2(theta) - R(theta),
+    R = r^2 f(beta x)^2 - (1 - r^2) sinh^2(g x),      x = n pi/2 + theta,
+
+unstable where ``N < 0``.  At small ``m``, ``r ~ 3m/2``, ``f(beta n pi/2) ~ 1`` (odd) or
+``~ n pi m/4`` (even), and ``g x ~ n pi/(4Q)``; the two terms of ``R`` balance when ``1/Q`` is of
+order ``m`` (odd orders) or ``m^2`` (even orders).  These are the **distinguished scalings**: put
+``1/Q = lam m^p`` (``p = 1`` odd, ``2`` even) and ``theta = m^p u``; then ``N / m^(2p)`` is a power
+series in ``m`` whose leading term is ``u^2 - (A - B lam^2)``.
+
+* **Threshold.** The interval exists where ``max_theta (R - sin^2 theta) > 0``; it closes where the
+  maximum is zero: ``N = 0`` and ``dN/dtheta = 0`` together (a double root, the tangency).  Solving
+  the two for ``lam(m)`` and ``u(m)`` as series (Newton steps with the leading-order Jacobian, one
+  order gained per step) gives ``Q_min(m) = 1/(lam(m) m^p)``, and by series reversion ``m_min(Q)``.
+  The leading term is ``lam_0 = sqrt(A/B)``: ``m_min = n pi/(6Q)`` for odd ``n`` (eq. 38 for
+  ``n = 1``, the paper's ``pi/(2Q)`` for ``n = 3``), ``m_min = sqrt(2/(3Q))`` for every even ``n``
+  (eq. 43 for ``n = 2``).  The double root is not at exact tuning: ``theta* = -9 m^2/(2 pi n)`` for
+  odd orders (a shorter period loses less to friction), ``O(m^6)`` for even ones; so the printed
+  conditions (37), (42), which set the radicand to zero at exact tuning, are exact only at leading
+  order (:func:`tuning_threshold` gives what they imply).
+* **Edges near the threshold.** With ``lam = lam_0 nu`` (``nu = (m_min0/m)^p`` the leading threshold
+  over the depth) and ``s = sqrt(1 - nu^2)``, the leading equation is ``u^2 = A - B lam_0^2 nu^2 = A
+  s^2``, so ``u = +- sqrt(A) s + O(m)`` (``sqrt(A) = 3/2`` odd, ``3 n pi/8`` even); Newton on series
+  with coefficients Laurent polynomials in ``s`` (and ``nu`` reduced by ``nu^2 = 1 - s^2``) gives
+  every further order.  ``m^p s`` is ``sqrt(m^2 - m_min0^2)`` (odd) or ``sqrt(m^4 - m_min0^4)``
+  (even): the paper's eqs. (40), (45). The expansion holds at fixed ``nu < 1``; it is not uniform as
+  ``nu -> 1`` (the true threshold differs from ``m_min0`` at higher order, which is what the
+  threshold series gives).
+
+The two damping models share the normal form and differ in the parameters
+(:func:`analytic.normal_form.parameters`): the ``paper`` model keeps the undamped ``r, beta, w``
+and ``g = 1/(2Qw)``; the ``exact`` model uses the damped frequencies ``Omega_i = sqrt(omega_i^2 -
+gamma^2)``.  Since ``gamma^2 ~ 1/Q^2``, the models agree at leading order and part at relative order
+``1/Q^2`` (:func:`model_gap` says at which power of ``m`` in each series).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from functools import cache
+
+import sympy as sp
+
+from .model import Damping, S
+from .normal_form import order_form, parameters, r2
+from .powerseries import LaurentRing, Series, evaluate, newton, reversion
+from .stitching import Parity
+
+__all__ = [
+    "ThresholdSeries",
+    "solve_for_lambda",
+    "threshold_lambda",
+    "scaled_edges",
+    "threshold_series",
+    "near_threshold_edges",
+    "tuning_threshold",
+    "model_gap",
+    "scaling_power",
+]
+
+LAM = sp.Symbol("lambda", positive=True)  # 1/Q = lambda m^p
+U = sp.Symbol("u", real=True)  # theta = m^p u
+Q_SYM = S.Q
+_WORDS = {"odd": Parity.ODD, "even": Parity.EVEN}
+
+
+def _parity(n) -> Parity:
+    return _WORDS[n] if isinstance(n, str) else Parity.of(n)
+
+
+def scaling_power(n) -> int:
+    """``p`` of the distinguished scaling ``1/Q ~ m^p``: 1 for odd orders, 2 for even ones."""
+    return 1 if _parity(n) is Parity.ODD else 2
+
+
+def _symbolic(n) -> bool:
+    return isinstance(n, str)
+
+
+def _nsym(n):
+    return S.n if _symbolic(n) else n
+
+
+@cache
+def _scaled_model(n, damping: str) -> dict[str, sp.Expr]:
+    """``N``, ``dN/dtheta`` and ``T/T0`` with ``1/Q = lambda m^p`` substituted (sympy)."""
+    damping = Damping(damping)
+    p = scaling_power(n)
+    par = {k.name: v for k, v in parameters(damping).items()}
+    sub = {Q_SYM: 1 / (LAM * S.m**p)}
+    N, _ = order_form(_nsym(n), _parity(n))
+    env = {r2: par["r^2"], S.beta: par["beta"], S.g: par["g"]}
+    N = N.subs(env).subs(sub)
+    x = _nsym(n) * sp.pi / 2 + S.theta
+    T0 = (x / (sp.pi * par["w"])).subs(sub)
+    w_undamped = {k.name: v for k, v in parameters(Damping.NONE).items()}["w"]
+    return {
+        "N": N,
+        "dN": sp.diff(N, S.theta),
+        "T0": T0,
+        "w0": w_undamped,
+    }
+
+
+def _gens(n, extra: tuple[str, ...] = ()) -> list[str]:
+    return ["pi"] + (["n"] if _symbolic(n) else []) + list(extra)
+
+
+def _eval(expr, env, ring, prec):
+    e = dict(env)
+    e.setdefault(S.n, "n")
+    return evaluate(expr, e, ring, prec, var=S.m)
+
+
+def _leading_balance(n, damping: str, ring: LaurentRing) -> tuple[dict, dict]:
+    """``A`` and ``B`` of the leading term ``-(A - B lam^2)`` of ``N/m^(2p)`` at ``theta = 0``
+    (found by evaluating at ``lam = 0, 1, 2``, the last as a check of the quadratic form)."""
+    p = scaling_power(n)
+    model = _scaled_model(n, damping)
+    vals = []
+    for lam in (0, 1, 2):
+        env = {
+            LAM: Series.constant(ring, ring.const(lam), 2 * p),
+            S.theta: Series.constant(ring, ring.zero, 2 * p),
+        }
+        N = _eval(model["N"], env, ring, 2 * p)
+        vals.append(N.shift(-2 * p).c[0])
+    A = ring.neg(vals[0])
+    B = ring.add(vals[1], A)  # -(A - B) = vals[1]
+    check = ring.sub(ring.neg(vals[2]), ring.sub(A, ring.scale(B, 4)))
+    if (
+        check
+    ):  # pragma: no cover - would mean the damping term is not quadratic in 1/Q at leading order
+        raise AssertionError("leading balance is not A - B lam^2")
+    return A, B
+
+
+@dataclass(frozen=True)
+class ThresholdSeries:
+    """The threshold of order ``order`` in one damping model.
+
+    ``Q_min``: ``Q_min(m)`` (expression in ``m``: ``1/(m^p lam(m))`` with ``lam`` through
+    ``m**terms``); ``m_min``: the threshold depth as an expression in ``Q`` (odd: a series in
+    ``1/Q`` through ``Q**-terms``; even: the square root of the series ``m_min2`` in ``1/Q``);
+    ``theta``: ``omega_av Delta T/2`` at the threshold along the threshold curve (series in ``m``),
+    ``T_Tav``/``T_T0``: the period at the threshold in ``T_av`` / ``T0`` as series in ``m``.
+    ``lam`` is the raw series ``1/(Q m^p)`` at the threshold.
+    """
+
+    order: int | str
+    terms: int
+    damping: str
+    p: int
+    lam: sp.Expr
+    Q_min: sp.Expr
+    m_min: sp.Expr
+    m_min2: sp.Expr
+    theta: sp.Expr
+    T_Tav: sp.Expr
+    T_T0: sp.Expr
+    m_min_leading: sp.Expr
+
+    def as_json(self) -> dict:
+        return {
+            "order": self.order,
+            "terms": self.terms,
+            "damping": self.damping,
+            "Q_min": str(self.Q_min),
+            "m_min": str(self.m_min),
+            "m_min_squared": str(self.m_min2),
+            "m_min_leading": str(self.m_min_leading),
+            "theta_at_threshold": str(self.theta),
+            "T_at_threshold_Tav": str(self.T_Tav),
+            "T_at_threshold_T0": str(self.T_T0),
+        }
+
+
+@cache
+def _threshold_raw(n, damping: str, prec: int) -> tuple[Series, Series]:
+    """``(lam(m), u(m))`` at the tangency through ``m**prec``."""
+    p = scaling_power(n)
+    ring = LaurentRing(_gens(n))
+    model = _scaled_model(n, damping)
+    A, B = _leading_balance(n, damping, ring)
+    lam0 = ring.root(ring.mul(A, ring.inverse(B)), 1, 2)
+    # leading Jacobian of (N/m^2p, N_theta/m^p) in (lam, u): diag(2 B lam0, 2)
+    j11_inv = ring.inverse(ring.scale(ring.mul(B, lam0), 2))
+    lam = Series.constant(ring, lam0, prec)
+    u = Series.constant(ring, ring.zero, prec)
+    hi = prec + 2 * p
+    for _ in range(prec + 6):
+        # the iterates are polynomials: padded, the residuals are exact through m^prec
+        env = {LAM: lam.padded(hi), S.theta: u.shift(p).padded(hi)}
+        F1 = _eval(model["N"], env, ring, hi).shift(-2 * p)
+        F2 = _eval(model["dN"], env, ring, prec + p).shift(-p)
+        if all(not a for a in F1.c) and all(not a for a in F2.c):
+            return lam, u
+        lam = lam - F1.scale_coeff(j11_inv)
+        u = u - F2 * sp.Rational(1, 2)
+    raise ArithmeticError("threshold series did not converge")  # pragma: no cover
+
+
+def _check_terms(terms):
+    from .expansions import _check_terms as check
+
+    return check(terms)
+
+
+def threshold_series(order, terms: int = 4, *, damping: str = "exact") -> ThresholdSeries:
+    """The threshold (tangency) of the interval of order ``order`` as series.
+
+    ``order``: an integer, or ``"odd"``/``"even"`` (symbol ``n``).  ``damping``: ``"paper"`` or
+    ``"exact"``.  See :class:`ThresholdSeries`.
+    """
+    from verify.inputs import as_damping
+
+    from .expansions import _check_order
+
+    order = _check_order(order)
+    terms = _check_terms(terms)
+    return _threshold(order, terms, as_damping(damping))
+
+
+@cache
+def _threshold(order, terms: int, damping: str) -> ThresholdSeries:
+    n = order
+    p = scaling_power(n)
+    # m_min (odd) through Q^-terms needs lam through m^(terms-1); m_min^2 (even) through Q^-terms
+    # needs lam as a series in m^2 through (m^2)^(terms-1)
+    prec = max(terms, terms - 1 if p == 1 else 2 * terms - 2)
+    lam, u = _threshold_raw(n, damping, prec)
+    ring = lam.ring
+    syms = {"n": S.n}
+    m = S.m
+    lam_expr = lam.to_sympy(m, syms)
+    Q_min = 1 / (m**p * lam_expr)
+    # m_min(Q): eps = 1/Q = lam(m) m^p, reverted
+    eps = sp.Symbol("epsilon", positive=True)
+    if p == 1:
+        f = lam.shift(1)  # lam m
+        g = reversion(f.truncate(terms))
+        if g.prec != terms:  # pragma: no cover
+            raise AssertionError("threshold series shorter than asked for")
+        m_min = g.to_sympy(eps, syms).subs(eps, 1 / Q_SYM)
+        m_min2 = (g * g).to_sympy(eps, syms).subs(eps, 1 / Q_SYM)
+    else:
+        if any(lam.c[k] for k in range(1, len(lam.c), 2)):  # pragma: no cover - m -> -m symmetry
+            raise AssertionError("even-order threshold series is not even in m")
+        half = Series(ring, lam.c[::2])  # lam as a series in M = m^2
+        g = reversion(half.shift(1).truncate(terms))  # M(eps)
+        if g.prec != terms:  # pragma: no cover
+            raise AssertionError("threshold series shorter than asked for")
+        m_min2 = g.to_sympy(eps, syms).subs(eps, 1 / Q_SYM)
+        m_min = sp.sqrt(m_min2)
+    theta = u.shift(p).truncate(terms)
+    lam = lam.truncate(terms)
+    w0 = evaluate(_scaled_model(n, damping)["w0"], {}, ring, terms, var=m)
+    T_env = {LAM: lam, S.theta: theta}
+    T0 = _eval(_scaled_model(n, damping)["T0"], T_env, ring, terms)
+    Tav = T0 * w0
+    return ThresholdSeries(
+        n,
+        terms,
+        damping,
+        p,
+        lam_expr,
+        Q_min,
+        m_min,
+        m_min2,
+        theta.to_sympy(m, syms),
+        Tav.to_sympy(m, syms),
+        T0.to_sympy(m, syms),
+        (1 / (Q_SYM * ring.to_sympy(lam.c[0], syms))) ** sp.Rational(1, p),
+    )
+
+
+# ------------------------------------------------------------------------------------------ edges
+
+
+@cache
+def _near_raw(n, damping: str, prec: int) -> dict[str, Series]:
+    """``theta(m)`` on both edges at fixed ``nu``, coefficients in ``pi, (n,) s, nu``, and the
+    conversion series to ``T/T0`` and ``T/T_av``."""
+    p = scaling_power(n)
+    base = LaurentRing(_gens(n))
+    A, B = _leading_balance(n, damping, base)
+    lam0 = base.root(base.mul(A, base.inverse(B)), 1, 2)
+    gens = _gens(n, ("s", "nu"))
+    tmp = LaurentRing(gens)
+    ring = LaurentRing(gens, relation=("nu", tmp.sub(tmp.one, tmp.gen("s", 2))))
+    lift = _lift(base, ring)
+    lam = Series.constant(ring, ring.mul(lift(lam0), ring.gen("nu")), prec + 2 * p)
+    model = _scaled_model(n, damping)
+    sqrtA = lift(base.root(A, 1, 2))
+    out = {}
+    for name, sign in (("lower", -1), ("upper", 1)):
+        u0 = ring.scale(ring.mul(sqrtA, ring.gen("s")), sign)
+
+        hi = prec + 2 * p
+
+        def resid(uu, lam=lam, hi=hi):
+            env = {LAM: lam, S.theta: uu.shift(p).padded(hi)}
+            return _eval(model["N"], env, ring, hi).shift(-2 * p)
+
+        def deriv(uu, lam=lam, hi=hi):
+            env = {LAM: lam, S.theta: uu.shift(p).padded(hi)}
+            return _eval(model["dN"], env, ring, prec + p).shift(-p)
+
+        u = newton(resid, deriv, Series.constant(ring, u0, prec))
+        theta = u.shift(p).truncate(prec)
+        w0 = evaluate(model["w0"], {}, ring, prec, var=S.m)
+        T0 = _eval(model["T0"], {LAM: lam, S.theta: theta}, ring, prec)
+        out[name] = {"theta": theta, "T0": T0, "Tav": T0 * w0}
+    out["lam0"] = Series.constant(base, lam0, 0)
+    return out
+
+
+def _as_sympy_number(x) -> sp.Expr:
+    if hasattr(x, "numerator") and hasattr(x, "denominator"):
+        return sp.Rational(int(x.numerator), int(x.denominator))
+    return sp.Float(str(x), 30)
+
+
+def _lift(base: LaurentRing, ring: LaurentRing):
+    idx = [ring.index[g] for g in base.gens]
+
+    def f(a: dict) -> dict:
+        out = {}
+        for k, v in a.items():
+            e = [0] * ring.nvars
+            for i, x in zip(idx, k, strict=False):
+                e[i] = x
+            out[tuple(e)] = v
+        return out
+
+    return f
+
+
+def near_threshold_edges(order, terms: int, *, Q=None, damping: str = "exact", units: str = "T0"):
+    """Both edges above the threshold in the distinguished scaling, as an
+    :class:`analytic.expansions.EdgeSeries`.
+
+    The series are in powers of ``m`` at fixed ``nu = (m_min0/m)^p``, with ``m_min0`` the leading
+    threshold (``n pi/(6Q)`` odd, ``sqrt(2/(3Q))`` even); the returned expressions have ``nu``
+    written out, so they are functions of ``m`` and ``Q`` (``Q`` left symbolic if ``Q is None``).
+    """
+    from .expansions import EdgeSeries, _check_order
+
+    n = _check_order(order)
+    terms = _check_terms(terms)
+    p = scaling_power(n)
+    raw = _near_raw(n, damping, terms)
+    base = raw["lam0"].ring
+    lam0 = base.to_sympy(raw["lam0"].c[0], {"n": S.n})
+    Qs = Q_SYM if Q is None else _as_sympy_number(Q)
+    nu = 1 / (Qs * lam0 * S.m**p)
+    s = sp.sqrt(1 - nu**2)
+    syms = {"n": S.n, "s": s, "nu": nu}
+    m = S.m
+    in_T0, in_Tav, theta = {}, {}, {}
+    for name in ("lower", "upper"):
+        theta[name] = raw[name]["theta"].to_sympy(m, syms)
+        in_T0[name] = raw[name]["T0"].to_sympy(m, syms)
+        in_Tav[name] = raw[name]["Tav"].to_sympy(m, syms)
+    mmin0 = (1 / (Qs * lam0)) ** sp.Rational(1, p)
+    s_sym = sp.Symbol("s", positive=True)
+    ssyms = {"n": S.n, "s": s_sym, "nu": sp.sqrt(1 - s_sym**2)}
+    scaled = {
+        "s": sp.Eq(s_sym, sp.sqrt(1 - (sp.Symbol("m_min0", positive=True) / m) ** (2 * p))),
+        "m_min0": mmin0,
+        "T0": {k: raw[k]["T0"].to_sympy(m, ssyms) for k in ("lower", "upper")},
+        "Tav": {k: raw[k]["Tav"].to_sympy(m, ssyms) for k in ("lower", "upper")},
+    }
+    notes = (
+        f"distinguished scaling 1/Q = lambda m^{p}, lambda = lambda_0 nu, s = sqrt(1 - nu^2)",
+        f"leading threshold m_min0 = {sp.sstr(mmin0)}; the series hold at fixed nu < 1",
+    )
+    return EdgeSeries(
+        n,
+        terms,
+        units,
+        in_T0,
+        in_Tav,
+        theta,
+        None,
+        Q=Qs,
+        damping=damping,
+        threshold={"m_min_leading": mmin0},
+        notes=notes,
+        scaled=scaled,
+    )
+
+
+def scaled_edges(order, terms: int, damping: str) -> dict:
+    """The raw near-threshold series: for ``"lower"``/``"upper"``, ``theta``, ``T0``, ``Tav`` as
+    sympy expressions in ``m`` with coefficients in the symbols ``s`` (and ``pi``, ``n``)."""
+    n = order
+    raw = _near_raw(n, damping, terms)
+    s = sp.Symbol("s", positive=True)
+    syms = {"n": S.n, "s": s, "nu": sp.Symbol("nu", positive=True)}
+    return {
+        name: {k: v.to_sympy(S.m, syms) for k, v in raw[name].items()}
+        for name in ("lower", "upper")
+    }
+
+
+# ------------------------------------------------------------------------------------ comparisons
+
+
+def solve_for_lambda(expr: sp.Expr, order, terms: int) -> sp.Expr:
+    """``lam(m)`` (``1/Q = lam m^p``) solving ``expr = 0`` order by order, where ``expr`` is a sympy
+    expression in ``m`` and ``Q`` (or ``lambda``) whose leading term in the distinguished scaling is
+    ``(a + b lam^2) m^(2p)`` (a threshold condition).  Used to read thresholds off the paper's
+    printed conditions (37), (42) and off ``R(theta = 0) = 0``."""
+    p = scaling_power(order)
+    ring = LaurentRing(_gens(order))
+    e = sp.sympify(expr).subs(Q_SYM, 1 / (LAM * S.m**p))
+    hi = terms + 2 * p
+
+    def F(lam: Series) -> Series:
+        return _eval(e, {LAM: lam.padded(hi)}, ring, hi).shift(-2 * p)
+
+    lead = [F(Series.constant(ring, ring.const(v), terms)).c[0] for v in (0, 1, 2)]
+    a_, b_ = lead[0], ring.sub(lead[1], lead[0])
+    if ring.sub(lead[2], ring.add(a_, ring.scale(b_, 4))):  # pragma: no cover
+        raise AssertionError("the condition is not a + b lam^2 at leading order")
+    lam0 = ring.root(ring.neg(ring.mul(a_, ring.inverse(b_))), 1, 2)
+    j_inv = ring.inverse(ring.scale(ring.mul(b_, lam0), 2))
+    lam = Series.constant(ring, lam0, terms)
+    for _ in range(terms + 6):
+        res = F(lam)
+        if all(not c for c in res.c):
+            return lam.to_sympy(S.m, {"n": S.n})
+        lam = lam - res.scale_coeff(j_inv)
+    raise ArithmeticError("threshold condition did not converge")  # pragma: no cover
+
+
+def threshold_lambda(order, terms: int, damping: str) -> sp.Expr:
+    """``lam(m) = 1/(Q_min m^p)`` at the tangency through ``m**terms`` (sympy)."""
+    lam, _ = _threshold_raw(order, damping, terms)
+    return lam.to_sympy(S.m, {"n": S.n})
+
+
+def tuning_threshold(order, terms: int, damping: str = "paper") -> sp.Expr:
+    """``lam(m)`` from the radicand set to zero at exact tuning (``R(theta = 0) = 0``, the way the
+    paper's eqs. (37), (42) are used), to compare with the tangency of :func:`threshold_series`."""
+    N = _scaled_model(order, damping)["N"].subs(S.theta, 0)
+    return solve_for_lambda(N, order, terms)
+
+
+def model_gap(order, terms: int = 6) -> dict[str, int | None]:
+    """The lowest power of ``m`` at which the ``paper`` and ``exact`` models differ: in the
+    threshold series ``lam(m)`` and in the near-threshold edges (``T/T0`` and ``T/T_av``), compared
+    coefficient by coefficient in exact arithmetic (``None``: none through ``m**terms``)."""
+    out = {}
+    p = scaling_power(order)
+    a, _ = _threshold_raw(order, "paper", terms)
+    b, _ = _threshold_raw(order, "exact", terms)
+    out["threshold"] = _first_difference(a, b)
+    ea, eb = _near_raw(order, "paper", terms), _near_raw(order, "exact", terms)
+    for units in ("T0", "Tav"):
+        found = [_first_difference(ea[k][units], eb[k][units]) for k in ("lower", "upper")]
+        found = [d for d in found if d is not None]
+        out[f"edges_{units}"] = min(found) if found else None
+    out["p"] = p
+    return out
+
+
+def _first_difference(a: Series, b: Series) -> int | None:
+    for k in range(min(a.prec, b.prec) + 1):
+        if a.ring.sub(a.c[k], b.c[k]):
+            return k
+    return None

@@ -1,0 +1,314 @@
+"""Friction: thresholds (tangency) and near-threshold edges in both damping models, checked against
+the printed formulas (38), (40), (43), (45), section 6, and against high-precision numbers from a
+period map built in this file (independent of analytic/)."""
+
+from __future__ import annotations
+
+from functools import cache
+
+import mpmath
+import pytest
+import sympy as sp
+
+import analytic.catalogue_series  # noqa: F401  (registers the rows)
+from analytic.catalogue import _REGISTRY as ROWS
+from analytic.expansions import edge_series
+from analytic.model import S
+from analytic.thresholds import (
+    model_gap,
+    near_threshold_edges,
+    scaled_edges,
+    threshold_lambda,
+    threshold_series,
+    tuning_threshold,
+)
+from verify.inputs import InputError
+
+m, Q, pi, n = S.m, S.Q, sp.pi, S.n
+s = sp.Symbol("s", positive=True)
+
+
+# -------------------------------------------------------------------------------------- reference
+
+
+def det_condition(T, mm, QQ, sigma, model):
+    """``det(M - sigma I)`` of the period map with friction, built here: ``paper``: exp(-gamma t)
+    times the undamped half-period map (eqs. 28-30); ``exact``: the damped oscillator."""
+    g = mpmath.pi / QQ
+    w1 = 2 * mpmath.pi / mpmath.sqrt(1 + mm)
+    w2 = 2 * mpmath.pi / mpmath.sqrt(1 - mm)
+
+    def U(w, t):
+        if model == "paper":
+            c, sn = mpmath.cos(w * t), mpmath.sin(w * t)
+            return mpmath.exp(-g * t) * mpmath.matrix([[c, sn / w], [-w * sn, c]])
+        W = mpmath.sqrt(w**2 - g**2)
+        c, sn = mpmath.cos(W * t), mpmath.sin(W * t)
+        return mpmath.exp(-g * t) * mpmath.matrix(
+            [[c + g / W * sn, sn / W], [-(W**2 + g**2) / W * sn, c - g / W * sn]]
+        )
+
+    k = ((1 + mm) / (1 - mm)) ** 2
+    M = (
+        mpmath.matrix([[1, 0], [0, 1 / k]])
+        * U(w2, T / 2)
+        * mpmath.matrix([[1, 0], [0, k]])
+        * U(w1, T / 2)
+    )
+    M = M - sigma * mpmath.eye(2)
+    return M[0, 0] * M[1, 1] - M[0, 1] * M[1, 0]
+
+
+@cache
+def reference_threshold(order: int, QQ: int, model: str, dps: int = 50):
+    """(m_min, T_min) where the interval of order ``order`` shrinks to a point at quality ``QQ``:
+    det(M - sigma I) = 0 and its T-derivative = 0, solved from the leading-order guess."""
+    sigma = -1 if order % 2 else 1
+    with mpmath.workdps(dps):
+        q = mpmath.mpf(QQ)
+        m0 = order * mpmath.pi / (6 * q) if order % 2 else mpmath.sqrt(mpmath.mpf(2) / (3 * q))
+        T0 = mpmath.mpf(order) / 2
+
+        def F(T, mm):
+            return det_condition(T, mm, q, sigma, model)
+
+        sol = mpmath.findroot(
+            [F, lambda T, mm: mpmath.diff(lambda tt: F(tt, mm), T)],
+            (T0, m0),
+            tol=mpmath.mpf(10) ** (-dps + 10),
+        )
+        return sol[1], sol[0]
+
+
+def first_power(expr, var, after, upto):
+    e = sp.expand(expr)
+    for k in range(after + 1, upto + 1):
+        if sp.expand(e.coeff(var, k)) != 0:
+            return k
+    raise AssertionError("no non-zero term")
+
+
+# ---------------------------------------------------------------------------------- leading terms
+
+
+@pytest.mark.parametrize("model", ["paper", "exact"])
+def test_leading_thresholds_all_orders(model):
+    # m_min = n pi/(6Q) for every odd n (eq. 38: n = 1; section 6: pi/(2Q) for n = 3);
+    # m_min = sqrt(2/(3Q)) for every even n (eq. 43: n = 2)
+    for order in (1, 3, 5, 7):
+        assert (
+            sp.simplify(
+                threshold_series(order, 2, damping=model).m_min_leading - order * pi / (6 * Q)
+            )
+            == 0
+        )
+    for order in (2, 4, 6):
+        assert (
+            sp.simplify(
+                threshold_series(order, 2, damping=model).m_min_leading - sp.sqrt(2 / (3 * Q))
+            )
+            == 0
+        )
+    assert (
+        sp.simplify(threshold_series("odd", 2, damping=model).m_min_leading - n * pi / (6 * Q)) == 0
+    )
+    assert (
+        sp.simplify(threshold_series("even", 2, damping=model).m_min_leading - sp.sqrt(2 / (3 * Q)))
+        == 0
+    )
+
+
+def test_eq38_and_eq43_as_printed():
+    eps = sp.Symbol("epsilon", positive=True)
+    th1 = threshold_series(1, 4, damping="paper")
+    e1 = sp.expand(th1.m_min.subs(Q, 1 / eps))
+    assert e1.coeff(eps, 1) == pi / 6 and e1.coeff(eps, 2) == 0  # eq. (38): m_min ~ pi/(6Q)
+    assert sp.limit(th1.Q_min * m, m, 0) == pi / 6  # Q_min ~ pi/(6m)
+    th2 = threshold_series(2, 4, damping="paper")
+    e2 = sp.expand(th2.m_min2.subs(Q, 1 / eps))
+    assert e2.coeff(eps, 1) == sp.Rational(2, 3)  # eq. (43): m_min^2 ~ 2/(3Q)
+    assert sp.limit(th2.Q_min * m**2, m, 0) == sp.Rational(2, 3)  # Q_min ~ 2/(3 m^2)
+    th3 = threshold_series(3, 4, damping="paper")
+    assert sp.expand(th3.m_min.subs(Q, 1 / eps)).coeff(eps, 1) == pi / 2  # section 6: pi/(2Q)
+
+
+def test_models_part_at_relative_order_one_over_Q_squared():
+    # gamma^2 ~ 1/Q^2 enters the exact model's damped frequencies: lambda(m) and the edges
+    # differ from the paper model's first at m^2 (odd orders, 1/Q ~ m) and m^4 (even, 1/Q ~ m^2)
+    for order in (1, 3):
+        assert model_gap(order, 4) == {"threshold": 2, "edges_T0": 2, "edges_Tav": 2, "p": 1}
+    for order in (2, 4):
+        assert model_gap(order, 5) == {"threshold": 4, "edges_T0": 4, "edges_Tav": 4, "p": 2}
+
+
+def test_centre_shift_with_friction_closed_form():
+    # odd n: (T+ + T-)/(2 T_av) = n/2 - (9/(2 pi^2 n)) nu^2 m^2 + ... (paper) and half that
+    # (exact); with nu m = n pi/(6Q): -n/(8Q^2) and -n/(16Q^2)
+    for model, c in (("paper", sp.Rational(9, 2)), ("exact", sp.Rational(9, 4))):
+        e = scaled_edges("odd", 3, model)
+        centre = sp.expand((e["lower"]["Tav"] + e["upper"]["Tav"]) / 2)
+        assert sp.simplify(centre.coeff(m, 2) - c * (s**2 - 1) / (pi**2 * n)) == 0
+
+
+# --------------------------------------------------------------------------- near-threshold edges
+
+
+@pytest.mark.parametrize("model", ["paper", "exact"])
+def test_edges_reduce_to_the_frictionless_series(model):
+    # s = 1 is nu = 0 (Q -> infinity): the near-threshold series become the frictionless ones
+    for order in (1, 2, 3):
+        e = scaled_edges(order, 4, model)
+        ref = edge_series(order, 4)
+        for name in ("lower", "upper"):
+            assert sp.expand(e[name]["T0"].subs(s, 1) - ref.in_T0[name]) == 0
+            assert sp.expand(e[name]["Tav"].subs(s, 1) - ref.in_Tav[name]) == 0
+
+
+def test_eq40_lost_factor_three_and_eq45():
+    e1 = scaled_edges(1, 3, "paper")
+    # derived: T/T_av = 1/2 -+ (3/(2 pi)) m s; printed eq. (40): 1/2 -+ (1/(2 pi)) m s
+    assert sp.expand(e1["lower"]["Tav"]).coeff(m, 1) == -3 * s / (2 * pi)
+    assert sp.expand(e1["upper"]["Tav"]).coeff(m, 1) == 3 * s / (2 * pi)
+    # eq. (45): 1 -+ (3/4) sqrt(m^4 - m_min^4) = 1 -+ (3/4) m^2 s
+    e2 = scaled_edges(2, 3, "paper")
+    assert sp.expand(e2["lower"]["Tav"]).coeff(m, 2) == -sp.Rational(3, 4) * s
+    assert sp.expand(e2["upper"]["Tav"]).coeff(m, 2) == sp.Rational(3, 4) * s
+    assert sp.expand(e2["lower"]["Tav"]).coeff(m, 3) == 0
+    # section 6, third interval: 3/2 -+ (3/(2 pi)) m s with m_min = pi/(2Q)
+    e3 = scaled_edges(3, 3, "paper")
+    assert sp.expand(e3["upper"]["Tav"]).coeff(m, 1) == 3 * s / (2 * pi)
+    # every even order: n/2 -+ (3n/8) m^2 s
+    ee = scaled_edges("even", 3, "exact")
+    assert sp.simplify(sp.expand(ee["upper"]["Tav"]).coeff(m, 2) - sp.Rational(3, 8) * n * s) == 0
+
+
+@pytest.mark.parametrize("order", [1, 2, 3])
+@pytest.mark.parametrize("model", ["paper", "exact"])
+@pytest.mark.parametrize("K", [2, 4])
+def test_near_threshold_edges_against_roots(order, model, K):
+    """At fixed nu = (m_min0/m)^p = 0.6 the error against the root of det(M - sigma I) falls like
+    the first omitted power of m (slope within 0.1; the error is that term to 10 %)."""
+    sigma = -1 if order % 2 else 1
+    es = near_threshold_edges(order, K, damping=model)
+    longer = near_threshold_edges(order, K + 3, damping=model)
+    ms = ["0.001", "0.002", "0.004"]
+    nu = mpmath.mpf("0.6")
+    for name in ("lower", "upper"):
+        f = sp.lambdify((m, Q), es.in_T0[name], "mpmath")
+        g = sp.lambdify((m, Q), longer.in_T0[name] - es.in_T0[name], "mpmath")
+        errs, preds = [], []
+        with mpmath.workdps(50):
+            for x in ms:
+                mm = mpmath.mpf(x)
+                QQ = order * mpmath.pi / (6 * nu * mm) if order % 2 else 2 / (3 * nu * mm**2)
+                guess = f(mm, QQ)
+                root = mpmath.findroot(
+                    lambda T, mm=mm, QQ=QQ: det_condition(T, mm, QQ, sigma, model),
+                    guess,
+                    tol=mpmath.mpf(10) ** -44,
+                )
+                errs.append(abs(root - guess))
+                preds.append(abs(g(mm, QQ)))
+            slope = mpmath.log(errs[-1] / errs[0]) / mpmath.log(
+                mpmath.mpf(ms[-1]) / mpmath.mpf(ms[0])
+            )
+            pslope = mpmath.log(preds[-1] / preds[0]) / mpmath.log(
+                mpmath.mpf(ms[-1]) / mpmath.mpf(ms[0])
+            )
+            assert slope > K + 0.9, (order, model, K, name, slope)
+            assert abs(slope - pslope) < 0.1, (order, model, K, name, slope, pslope)
+            assert abs(errs[0] / preds[0] - 1) < 0.1, (order, model, K, name)
+
+
+# --------------------------------------------------------------------- thresholds against numbers
+
+
+CASES = [(1, (20, 40, 80)), (3, (60, 120, 240)), (2, (300, 1000, 3000))]
+
+
+@pytest.mark.parametrize("order,Qs", CASES)
+@pytest.mark.parametrize("model", ["paper", "exact"])
+@pytest.mark.parametrize("K", [2, 4])
+def test_threshold_against_numerical_tangency(order, Qs, model, K):
+    """m_min(Q) through 1/Q^K (m_min^2 for even orders) against the numerically solved tangency:
+    the relative error falls like the first omitted power of 1/Q."""
+    th = threshold_series(order, K, damping=model)
+    longer = threshold_series(order, K + 2, damping=model)
+    eps = sp.Symbol("epsilon", positive=True)
+    series = th.m_min2 if order % 2 == 0 else th.m_min
+    more = longer.m_min2 if order % 2 == 0 else longer.m_min
+    p = first_power(sp.expand((more - series).subs(Q, 1 / eps)), eps, K, K + 2)
+    f = sp.lambdify(Q, th.m_min, "mpmath")
+    fT = sp.lambdify(m, th.T_T0, "mpmath")
+    errs = []
+    with mpmath.workdps(50):
+        for QQ in Qs:
+            ref_m, ref_T = reference_threshold(order, QQ, model)
+            errs.append(abs(f(mpmath.mpf(QQ)) - ref_m) / ref_m)
+            # the period at the threshold, from the series along the threshold curve
+            assert abs(fT(ref_m) - ref_T) < mpmath.mpf(ref_m) ** (K + 1) * 100
+        slope = mpmath.log(errs[-1] / errs[0]) / mpmath.log(mpmath.mpf(Qs[0]) / Qs[-1])
+    expected = p - 1  # relative to the leading 1/Q (m_min, odd) or 1/Q (m_min^2, even)
+    assert abs(slope - expected) < 0.1, (order, model, K, slope, expected)
+
+
+def test_threshold_is_below_exact_tuning_for_odd_orders():
+    # the double root sits at theta* = -9 m^2/(2 pi n) + ..., below exact tuning (friction costs
+    # less on a shorter period); for even orders the shift starts only at m^6
+    th = threshold_series(1, 4, damping="paper")
+    assert sp.expand(th.theta).coeff(m, 2) == -9 / (2 * pi)
+    assert sp.expand(threshold_series("odd", 4, damping="exact").theta).coeff(m, 2) == -9 / (
+        2 * pi * n
+    )
+    assert sp.expand(threshold_series(2, 6, damping="paper").theta).coeff(m, 4) == 0
+    ref_m, ref_T = reference_threshold(1, 40, "paper")
+    with mpmath.workdps(50):
+        Tav = 2 / (1 / mpmath.sqrt(1 + ref_m) + 1 / mpmath.sqrt(1 - ref_m))
+        assert ref_T < Tav / 2
+
+
+def test_exact_tuning_threshold_is_right_only_at_leading_order():
+    # eqs. (37), (42) read at exact tuning = R(theta = 0) = 0: right at leading order, wrong at
+    # relative m^2 (odd; 1/Q^2) and m^8 (n = 2; 1/Q^4)
+    d1 = sp.expand(tuning_threshold(1, 4, "paper") - threshold_lambda(1, 4, "paper"))
+    assert (
+        d1.coeff(m, 0) == 0
+        and d1.coeff(m, 1) == 0
+        and sp.simplify(d1.coeff(m, 2) + 27 / pi**3) == 0
+    )
+    d2 = sp.expand(tuning_threshold(2, 8, "paper") - threshold_lambda(2, 8, "paper"))
+    assert all(d2.coeff(m, k) == 0 for k in range(8)) and d2.coeff(m, 8) != 0
+
+
+# --------------------------------------------------------------------------------- catalogue rows
+
+
+@pytest.mark.parametrize(
+    "label,status",
+    [
+        ("37", "differs"),
+        ("38", "agrees"),
+        ("40", "differs"),
+        ("42", "differs"),
+        ("43", "agrees"),
+        ("45", "agrees"),
+        ("§6-n3", "agrees"),
+    ],
+)
+def test_catalogue_rows_friction(label, status):
+    row = ROWS[label]()
+    assert row.status == status, row.how
+    assert row.printed and row.derived and row.how
+    if label == "40":
+        assert "factor 3" in row.how
+
+
+def test_bad_input():
+    with pytest.raises(InputError):
+        threshold_series(0)
+    with pytest.raises(InputError):
+        threshold_series(1, 13)
+    with pytest.raises(InputError):
+        threshold_series(1, damping="viscous")
+    with pytest.raises(InputError):
+        edge_series(1, 2, Q="-3")
