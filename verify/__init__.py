@@ -2,7 +2,8 @@
 double-precision grid, existence ranges with friction, the independent Floquet route, time-domain
 simulation and benchmarks.
 
-The public names are loaded on first use (no sympy import for the numeric paths that do not need it).
+The public names are loaded on first use (no sympy import for the numeric paths that do not need
+it).
 """
 
 from __future__ import annotations
@@ -14,6 +15,7 @@ _API = {
     "boundary": "solve",
     "Boundary": "solve",
     "boundary_grid": "grid",
+    "boundaries_tol": "auto",
     "existence": "existence",
     "monodromy_matrix": "floquet",
     "floquet_multipliers": "floquet",

@@ -198,20 +198,21 @@ def as_damping(model) -> str:
     return model.strip().lower()
 
 
+_TOL_LOW = mpmath.mpf(10) ** (-DIGITS_RANGE[1])
+_TOL_HIGH = mpmath.mpf("0.1")
+
+
 def as_tolerance(tol) -> mpmath.mpf:
-    """A relative tolerance ``10**-DIGITS_RANGE[1] <= tol < 1``."""
+    """A relative tolerance ``10**-DIGITS_RANGE[1] <= tol <= 0.1``."""
+    lo_text = f"1e-{DIGITS_RANGE[1]}"
     try:
-        val = mpmath.mpf(tol) if not isinstance(tol, str) else mpmath.mpf(tol.strip())
+        val = mpmath.mpf(tol.strip() if isinstance(tol, str) else tol)
     except (TypeError, ValueError):
         raise InputError(
-            f"tolerance {tol!r} is not a number; allowed range 1e-{DIGITS_RANGE[1]} to 0.1"
+            f"tolerance {tol!r} is not a number; allowed range {lo_text} to 0.1"
         ) from None
-    if not mpmath.isfinite(val) or not (
-        mpmath.mpf(10) ** (-DIGITS_RANGE[1]) <= val <= mpmath.mpf("0.1")
-    ):
-        raise InputError(
-            f"tolerance {tol} is outside the allowed range 1e-{DIGITS_RANGE[1]} to 0.1"
-        )
+    if not mpmath.isfinite(val) or not (_TOL_LOW <= val <= _TOL_HIGH):
+        raise InputError(f"tolerance {tol} is outside the allowed range {lo_text} to 0.1")
     return val
 
 

@@ -1,0 +1,144 @@
+"""The speed-against-error picture of ``paramres bench``: time per edge against error, per method.
+
+:func:`pareto_figure` takes the points of :func:`verify.bench.pareto` (one per method: median CPU
+time per edge, largest relative error) for one or more panels -- typically all scenes, and the
+small depths where the series shine -- and draws them on log-log axes, one marker per family of
+methods, the Pareto front (the methods no other one beats in both speed and error) joined by a
+step line and labelled.  Errors below the reference's resolution are drawn at that floor (a dashed
+line).  :func:`save_figure` writes it as vector PDF, PNG or SVG (by the file name's
+ending), atomically; :func:`figure_bytes` gives the bytes (the report embeds the PDF).
+"""
+
+from __future__ import annotations
+
+import io
+from collections.abc import Sequence
+from pathlib import Path
+
+import numpy as np
+from matplotlib.figure import Figure
+
+from verify.inputs import InputError
+
+from .figures import new_figure, pdf_bytes, png_bytes, style
+from .output import BANNER, atomic_write
+
+__all__ = ["FAMILY_STYLE", "FORMATS", "pareto_figure", "figure_bytes", "save_figure", "check_path"]
+
+#: file name endings a figure can be written as
+FORMATS = (".pdf", ".png", ".svg")
+
+#: marker and colour per family of methods (Okabe-Ito colours)
+FAMILY_STYLE = {
+    "series": ("o", "#E69F00"),
+    "fixed point": ("X", "#CC79A7"),
+    "double": ("s", "#56B4E9"),
+    "grid": ("D", "#0072B2"),
+    "mpmath": ("^", "#999999"),
+    "certified": ("*", "#009E73"),
+    "findroot": ("v", "#D55E00"),
+    "auto": ("P", "#000000"),
+}
+
+#: errors at or below this are drawn at it (the reference's resolution)
+FLOOR = 1e-58
+
+
+def pareto_figure(panels: Sequence[tuple[str, Sequence[dict]]], *, subtitle: str = "") -> Figure:
+    """One panel per ``(title, points)``; each point a dict with ``method``, ``family``,
+    ``seconds`` (per edge), ``error`` and ``front`` (as :func:`verify.bench.pareto` returns)."""
+    with style():
+        fig, axes = new_figure(height=3.6, ncols=len(panels), sharey=True)
+        axes = axes if isinstance(axes, tuple) else (axes,)
+        top = max([1.0] + [float(p["error"]) for _, pts in panels for p in pts])
+        for ax, (title, points) in zip(axes, panels, strict=True):
+            seen = set()
+            for p in points:
+                marker, colour = FAMILY_STYLE.get(p["family"], ("o", "0.3"))
+                err = max(float(p["error"]), FLOOR)
+                label = p["family"] if p["family"] not in seen else None
+                seen.add(p["family"])
+                ax.loglog(
+                    [p["seconds"]],
+                    [err],
+                    linestyle="none",
+                    marker=marker,
+                    color=colour,
+                    markersize=6 if p.get("front") else 4,
+                    markeredgecolor="black" if p.get("front") else colour,
+                    markeredgewidth=0.5,
+                    label=label,
+                    zorder=3,
+                )
+            front = sorted((p for p in points if p.get("front")), key=lambda p: p["seconds"])
+            if front:
+                xs = np.array([p["seconds"] for p in front])
+                ys = np.array([max(float(p["error"]), FLOOR) for p in front])
+                ax.step(xs, ys, where="post", color="0.4", lw=0.6, zorder=2)
+                for p, x, y in zip(front, xs, ys, strict=True):
+                    ax.annotate(
+                        p["method"],
+                        (x, y),
+                        textcoords="offset points",
+                        xytext=(4, 3),
+                        fontsize=6,
+                        color="0.2",
+                    )
+            ax.axhline(FLOOR, color="0.6", lw=0.5, ls="--", zorder=1)
+            ax.annotate(
+                "resolution of the reference",
+                (0.02, FLOOR),
+                xycoords=("axes fraction", "data"),
+                textcoords="offset points",
+                xytext=(0, 3),
+                fontsize=6,
+                color="0.4",
+            )
+            ax.set_title(title)
+            ax.set_xlabel("median CPU time per edge (s)")
+            ax.set_ylim(FLOOR / 1e4, 10 ** (np.ceil(np.log10(top)) + 2))
+            ax.grid(True, which="major", lw=0.3, color="0.85")
+        axes[0].set_ylabel(r"largest relative error of $T/T_0$")
+        handles = {}
+        for ax in axes:
+            for h, lab in zip(*ax.get_legend_handles_labels(), strict=True):
+                handles.setdefault(lab, h)
+        if handles:
+            axes[-1].legend(handles.values(), handles.keys(), loc="upper right", fontsize=6, ncol=2)
+        if subtitle:
+            fig.suptitle(subtitle, fontsize=7)
+        fig.tight_layout(pad=0.4)
+    return fig
+
+
+def check_path(path) -> Path:
+    """The plot file name, refused (before any work) unless it ends in one of :data:`FORMATS`."""
+    path = Path(path)
+    if path.suffix.lower() not in FORMATS:
+        raise InputError(f"plot file {str(path)!r} must end in one of: {', '.join(FORMATS)}")
+    if path.is_dir():
+        raise InputError(f"plot file {str(path)!r} is a directory")
+    return path
+
+
+def figure_bytes(fig: Figure, suffix: str) -> bytes:
+    """The figure rendered as ``.pdf`` (vector), ``.png`` or ``.svg``."""
+    suffix = suffix.lower()
+    if suffix == ".pdf":
+        return pdf_bytes(fig, what="bench")
+    if suffix == ".png":
+        return png_bytes(fig, dpi=150)
+    if suffix == ".svg":
+        buf = io.BytesIO()
+        with style():
+            fig.savefig(
+                buf, format="svg", metadata={"Date": None, "Creator": BANNER.format(what="bench")}
+            )
+        return buf.getvalue()
+    raise InputError(f"plot file type {suffix!r} is not one of: {', '.join(FORMATS)}")
+
+
+def save_figure(fig: Figure, path) -> Path:
+    """Render the figure in memory, then write it atomically."""
+    path = check_path(path)
+    return atomic_write(path, figure_bytes(fig, path.suffix))
