@@ -1,6 +1,10 @@
-"""Symbolic derivations (sympy): from the model to the boundary equations, their series and closings.
+"""Symbolic derivations (sympy): from the model to the boundary equations, their series and
+closings.
 
-The public names are loaded on first use, so importing one part does not import the rest.
+The public names are loaded on first use, so importing one part does not import the rest.  Three
+concepts are public as modules, because each module is named after its main function:
+``analytic.normal_form`` (``normal_form.normal_form``), ``analytic.catalogue``
+(``catalogue.catalogue``) and ``analytic.closings`` (``closings.closings``).
 """
 
 from __future__ import annotations
@@ -22,28 +26,30 @@ _API = {
     "monodromy": "stitching",
     "floquet_condition": "stitching",
     # normal form and per-edge equations
-    "normal_form": "normal_form",
     "edge_factor": "normal_form",
     "order_form": "normal_form",
     "parameters": "normal_form",
     # the paper's chains of reductions, and the catalogue of numbered results
     "chains": "reductions",
     "stationary_initial_condition": "reductions",
-    "catalogue": "catalogue",
     # identities
     "prove_zero": "identity",
     "prove_proportional": "identity",
     # expansions in m, thresholds with friction, closings of intervals
     "edge_series": "expansions",
     "threshold_series": "thresholds",
-    "closings": "closings",
     "closed_forms": "expansions",
 }
 
-__all__ = sorted(_API)
+#: public modules (see the docstring)
+_MODULES = ("normal_form", "catalogue", "closings")
+
+__all__ = sorted(_API) + list(_MODULES)
 
 
 def __getattr__(name: str):
+    if name in _MODULES:
+        return importlib.import_module(f"{__name__}.{name}")
     try:
         module = _API[name]
     except KeyError:

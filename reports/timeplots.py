@@ -7,7 +7,8 @@ velocity and the angle against time, the moments of the jumps marked.  The point
 period starts and ends are numbered on the first periods, the same numbers in the phase plane and
 on ``phi'(t)``, as the paper does.
 
-:func:`paper_figure` re-draws the paper's scenes from runs of :func:`verify.timedomain.simulate` (the
+:func:`paper_figure` re-draws the paper's scenes from runs of :func:`verify.timedomain.simulate`
+(the
 paper gives no depth for its pictures; the depths chosen here are in :data:`PAPER_SCENES`), and
 :func:`envelope_figure` shows how the growth inside an interval is limited by the
 amplitude-dependent period of the real (nonlinear) pendulum.  Figures are built without pyplot;

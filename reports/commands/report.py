@@ -49,8 +49,9 @@ def register(subparsers) -> None:
 
 
 def run(args) -> int:
+    from analytic.cache import cache_dir
+
     from ..build import BuildError, how_to_get_pdf
-    from ..cache import default_directory
     from ..report import TEX_NAME, build_report
 
     out = Path(args.out)
@@ -58,7 +59,7 @@ def run(args) -> int:
         from verify.inputs import InputError
 
         raise InputError(f"--out {out} exists and is not a directory")
-    cache = None if args.no_cache else (Path(args.cache) if args.cache else default_directory())
+    cache = None if args.no_cache else (Path(args.cache) if args.cache else cache_dir())
     if cache is not None and cache.exists() and not cache.is_dir():
         from verify.inputs import InputError
 

@@ -1,0 +1,55 @@
+"""The report's sections, one module each, in reading order.
+
+Every section module defines ``TITLE``, ``LABEL`` and ``build(ctx) -> Part``: the section's LaTeX
+body (without its heading) and the figures it draws, computed from the engine's objects.  A section
+whose engine parts are not present in this installation says so in the report instead of guessing
+(:func:`missing`).
+"""
+
+from __future__ import annotations
+
+import importlib
+import sys
+from collections.abc import Callable
+from dataclasses import dataclass, field
+
+from analytic.cache import Cache
+
+from ..latex import DEFAULT, Config, Latex
+
+__all__ = ["Part", "Context", "SECTIONS", "load"]
+
+#: section modules, in the order they appear
+SECTIONS = (
+    "model",
+    "stitching",
+    "catalogue",
+    "expansions",
+    "closings",
+    "diagrams",
+    "accuracy",
+    "performance",
+)
+
+
+@dataclass(frozen=True)
+class Part:
+    """What a section contributes: its body and its figures ``(file name, PDF bytes)``."""
+
+    body: Latex
+    figures: tuple[tuple[str, bytes], ...] = ()
+
+
+@dataclass
+class Context:
+    """What every section gets: the LaTeX configuration, the cache for expensive work, and a
+    logger for progress messages (to stderr)."""
+
+    config: Config = DEFAULT
+    cache: Cache = field(default_factory=lambda: Cache(None))
+    log: Callable[[str], None] = field(default=lambda msg: print(msg, file=sys.stderr, flush=True))
+
+
+def load(name: str):
+    """The section module ``name``."""
+    return importlib.import_module(f"{__name__}.{name}")
