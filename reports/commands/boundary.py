@@ -18,6 +18,8 @@ from verify.fixedpoint import FixedPointError
 from verify.inputs import InputError
 from verify.solve import METHODS, boundary
 
+from ._arguments import add_depth, add_friction, add_json, add_order
+
 __all__ = ["register", "run"]
 
 
@@ -35,20 +37,9 @@ def register(subparsers) -> None:
         ),
         formatter_class=argparse.RawDescriptionHelpFormatter,
     )
-    p.add_argument("--order", required=True, metavar="N", help="order of the resonance (1, 2, ...)")
-    p.add_argument(
-        "--m",
-        required=True,
-        metavar="M",
-        help="modulation depth, 0 < m < 1 (exact: 0.3, 3/5, 1e-12)",
-    )
-    p.add_argument("--Q", metavar="Q", default=None, help="quality factor (omit for no friction)")
-    p.add_argument(
-        "--damping",
-        default="exact",
-        metavar="MODEL",
-        help="friction model: exact (default) or paper",
-    )
+    add_order(p)
+    add_depth(p)
+    add_friction(p)
     p.add_argument(
         "--digits", default=None, metavar="D", help="significant digits, 5 to 10000 (default 30)"
     )
@@ -68,7 +59,7 @@ def register(subparsers) -> None:
         metavar="METHOD",
         help=f"solver: {', '.join(sorted(METHODS))} (default certified)",
     )
-    p.add_argument("--json", action="store_true", help="machine-readable output")
+    add_json(p)
     p.set_defaults(func=run)
 
 

@@ -13,6 +13,8 @@ import argparse
 from reports.output import dump_json
 from verify.existence import existence
 
+from ._arguments import add_friction, add_json, add_order
+
 __all__ = ["register", "run"]
 
 
@@ -27,18 +29,12 @@ def register(subparsers) -> None:
         ),
         formatter_class=argparse.RawDescriptionHelpFormatter,
     )
-    p.add_argument("--order", required=True, metavar="N", help="order of the resonance (1, 2, ...)")
-    p.add_argument("--Q", required=True, metavar="Q", help="quality factor, Q > 0")
-    p.add_argument(
-        "--damping",
-        default="exact",
-        metavar="MODEL",
-        help="friction model: exact (default) or paper",
-    )
+    add_order(p)
+    add_friction(p, required=True)
     p.add_argument(
         "--digits", default="15", metavar="D", help="digits of each end, 5 to 10000 (default 15)"
     )
-    p.add_argument("--json", action="store_true", help="machine-readable output")
+    add_json(p)
     p.set_defaults(func=run)
 
 

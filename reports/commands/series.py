@@ -17,6 +17,8 @@ import sympy as sp
 from reports.output import dump_json
 from verify.inputs import InputError, as_damping, as_quality
 
+from ._arguments import add_friction, add_json
+
 __all__ = ["register", "run", "render_text", "parse_terms"]
 
 
@@ -43,14 +45,8 @@ def register(subparsers) -> None:
     p.add_argument(
         "--terms", default="4", metavar="K", help="highest power of m kept, 1 to 12 (default 4)"
     )
-    p.add_argument("--Q", default=None, metavar="Q", help="quality factor (omit for no friction)")
-    p.add_argument(
-        "--damping",
-        default="exact",
-        metavar="MODEL",
-        help="friction model: exact (default) or paper",
-    )
-    p.add_argument("--json", action="store_true", help="machine-readable output")
+    add_friction(p)
+    add_json(p)
     p.set_defaults(func=run)
 
 

@@ -19,6 +19,8 @@ import mpmath
 from reports.output import dump_json, progress
 from verify.timedomain import EDGES, MAX_PERIODS
 
+from ._arguments import add_depth, add_friction, add_json, add_order
+
 __all__ = ["register", "run", "render_text"]
 
 
@@ -37,10 +39,8 @@ def register(subparsers) -> None:
         ),
         formatter_class=argparse.RawDescriptionHelpFormatter,
     )
-    p.add_argument("--order", required=True, metavar="N", help="order of the resonance (1, 2, ...)")
-    p.add_argument(
-        "--m", required=True, metavar="M", help="modulation depth, 0 < m < 1 (e.g. 0.3, 3/5)"
-    )
+    add_order(p)
+    add_depth(p)
     where = p.add_mutually_exclusive_group(required=True)
     where.add_argument(
         "--edge", choices=EDGES, help="start on this edge of the interval of order N"
@@ -48,13 +48,7 @@ def register(subparsers) -> None:
     where.add_argument(
         "--T", metavar="T", help="modulation period in units of T0 (start from rest at angle A)"
     )
-    p.add_argument("--Q", metavar="Q", default=None, help="quality factor (omit for no friction)")
-    p.add_argument(
-        "--damping",
-        default="exact",
-        metavar="MODEL",
-        help="friction model: exact (default) or paper",
-    )
+    add_friction(p)
     p.add_argument(
         "--periods",
         metavar="K",
@@ -79,7 +73,7 @@ def register(subparsers) -> None:
         metavar="FILE",
         help="write phase trajectory, phi'(t), phi(t) (.pdf, .png or .svg)",
     )
-    p.add_argument("--json", action="store_true", help="machine-readable output")
+    add_json(p)
     p.set_defaults(func=run)
 
 

@@ -34,6 +34,8 @@ from verify.inputs import (
     as_tolerance,
 )
 
+from ._arguments import add_friction
+
 __all__ = ["register", "run", "rows", "decimal_text"]
 
 GRID_DIGITS = 13
@@ -57,13 +59,7 @@ def register(subparsers) -> None:
         metavar="START:STOP:STEP",
         help="depths, e.g. 0.05:0.95:0.05 (exact decimal arithmetic)",
     )
-    p.add_argument("--Q", metavar="Q", default=None, help="quality factor (omit for no friction)")
-    p.add_argument(
-        "--damping",
-        default="exact",
-        metavar="MODEL",
-        help="friction model: exact (default) or paper",
-    )
+    add_friction(p)
     p.add_argument(
         "--digits",
         default=None,
