@@ -1,5 +1,7 @@
 """Shared test setup: precision is never global state."""
 
+import os
+
 import mpmath
 import pytest
 
@@ -12,3 +14,7 @@ def _reset_mpmath_precision():
     changed = mpmath.mp.prec != before
     mpmath.mp.prec = before
     assert not changed, "a test or the code under test left mpmath.mp.prec changed"
+
+
+# derivations are computed afresh in every test run: never read (or write) the user's disk cache
+os.environ["PARAMRES_NO_CACHE"] = "1"
