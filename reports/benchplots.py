@@ -6,27 +6,23 @@ small depths where the series shine -- and draws them on log-log axes, one marke
 methods, the Pareto front (the methods no other one beats in both speed and error) joined by a
 step line and labelled.  Errors below the reference's resolution are drawn at that floor (a dashed
 line).  :func:`save_figure` writes it as vector PDF, PNG or SVG (by the file name's
-ending), atomically; :func:`figure_bytes` gives the bytes (the report embeds the PDF).
+ending), atomically; :func:`reports.figures.pdf_bytes` gives the bytes the report embeds.
 """
 
 from __future__ import annotations
 
-import io
 from collections.abc import Sequence
 from pathlib import Path
 
 import numpy as np
 from matplotlib.figure import Figure
 
-from verify.inputs import InputError
+from . import figures
+from .figures import FORMATS, new_figure, style
 
-from .figures import new_figure, pdf_bytes, png_bytes, style
-from .output import BANNER, atomic_write
-
-__all__ = ["FAMILY_STYLE", "FORMATS", "pareto_figure", "figure_bytes", "save_figure", "check_path"]
+__all__ = ["FAMILY_STYLE", "FORMATS", "pareto_figure", "save_figure"]
 
 #: file name endings a figure can be written as
-FORMATS = (".pdf", ".png", ".svg")
 
 #: marker and colour per family of methods (Okabe-Ito colours)
 FAMILY_STYLE = {
@@ -111,34 +107,6 @@ def pareto_figure(panels: Sequence[tuple[str, Sequence[dict]]], *, subtitle: str
     return fig
 
 
-def check_path(path) -> Path:
-    """The plot file name, refused (before any work) unless it ends in one of :data:`FORMATS`."""
-    path = Path(path)
-    if path.suffix.lower() not in FORMATS:
-        raise InputError(f"plot file {str(path)!r} must end in one of: {', '.join(FORMATS)}")
-    if path.is_dir():
-        raise InputError(f"plot file {str(path)!r} is a directory")
-    return path
-
-
-def figure_bytes(fig: Figure, suffix: str) -> bytes:
-    """The figure rendered as ``.pdf`` (vector), ``.png`` or ``.svg``."""
-    suffix = suffix.lower()
-    if suffix == ".pdf":
-        return pdf_bytes(fig, what="bench")
-    if suffix == ".png":
-        return png_bytes(fig, dpi=150)
-    if suffix == ".svg":
-        buf = io.BytesIO()
-        with style():
-            fig.savefig(
-                buf, format="svg", metadata={"Date": None, "Creator": BANNER.format(what="bench")}
-            )
-        return buf.getvalue()
-    raise InputError(f"plot file type {suffix!r} is not one of: {', '.join(FORMATS)}")
-
-
 def save_figure(fig: Figure, path) -> Path:
-    """Render the figure in memory, then write it atomically."""
-    path = check_path(path)
-    return atomic_write(path, figure_bytes(fig, path.suffix))
+    """Write the Pareto figure (PDF, PNG or SVG by the file ending), atomically."""
+    return figures.save_figure(fig, path, what="bench")

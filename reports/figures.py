@@ -16,15 +16,22 @@ from __future__ import annotations
 import io
 from collections.abc import Mapping, Sequence
 from contextlib import contextmanager
+from pathlib import Path
 
 import matplotlib
 import numpy as np
 from matplotlib.backends.backend_pdf import FigureCanvasPdf
 from matplotlib.figure import Figure
 
-from .output import BANNER
+from verify.inputs import InputError
+
+from .output import BANNER, atomic_write
 
 __all__ = [
+    "FORMATS",
+    "check_plot_path",
+    "figure_bytes",
+    "save_figure",
     "RC",
     "style",
     "new_figure",
@@ -306,3 +313,44 @@ def error_figure(
         axes[0].set_ylabel(ylabel)
         fig.tight_layout(pad=0.4)
     return fig
+
+
+# ---------------------------------------------------------------------------------------------
+# writing a figure to a file named by the user
+
+#: the file endings a plot may be written as
+FORMATS = (".pdf", ".png", ".svg")
+
+
+def check_plot_path(path) -> Path:
+    """The plot file name, refused (before any work) unless it ends in one of :data:`FORMATS`."""
+    path = Path(path)
+    if path.suffix.lower() not in FORMATS:
+        raise InputError(f"plot file {str(path)!r} must end in one of: {', '.join(FORMATS)}")
+    if path.is_dir():
+        raise InputError(f"plot file {str(path)!r} is a directory")
+    return path
+
+
+def figure_bytes(fig: Figure, suffix: str, what: str = "report") -> bytes:
+    """The figure rendered as ``.pdf`` (vector), ``.png`` or ``.svg``; ``what`` names the command
+    in the file's creator banner."""
+    suffix = suffix.lower()
+    if suffix == ".pdf":
+        return pdf_bytes(fig, what=what)
+    if suffix == ".png":
+        return png_bytes(fig, dpi=150)
+    if suffix == ".svg":
+        buf = io.BytesIO()
+        with style():
+            fig.savefig(
+                buf, format="svg", metadata={"Date": None, "Creator": BANNER.format(what=what)}
+            )
+        return buf.getvalue()
+    raise InputError(f"plot file type {suffix!r} is not one of: {', '.join(FORMATS)}")
+
+
+def save_figure(fig: Figure, path, what: str = "report") -> Path:
+    """Render the figure in memory, then write it atomically (nothing half-written on failure)."""
+    path = check_plot_path(path)
+    return atomic_write(path, figure_bytes(fig, path.suffix, what))

@@ -17,7 +17,6 @@ amplitude-dependent period of the real (nonlinear) pendulum.  Figures are built 
 
 from __future__ import annotations
 
-import io
 from dataclasses import dataclass
 from fractions import Fraction
 from pathlib import Path
@@ -28,8 +27,8 @@ from matplotlib.figure import Figure
 
 from verify.inputs import InputError
 
-from .figures import TEXT_WIDTH_IN, pdf_bytes, png_bytes, style
-from .output import BANNER, atomic_write
+from . import figures
+from .figures import FORMATS, TEXT_WIDTH_IN, check_plot_path, figure_bytes, style
 
 __all__ = [
     "PAPER_SCENES",
@@ -47,7 +46,6 @@ __all__ = [
 ]
 
 #: file name endings a figure can be written as
-FORMATS = (".pdf", ".png", ".svg")
 
 #: colours of the two halves: bob down (long pendulum), bob up (short pendulum)
 HALF_COLOURS = {1: "#0072B2", 2: "#D55E00"}
@@ -366,37 +364,6 @@ def saturation_figure(
 # output
 
 
-def figure_bytes(fig: Figure, suffix: str) -> bytes:
-    """The figure rendered as ``.pdf`` (vector), ``.png`` or ``.svg``."""
-    suffix = suffix.lower()
-    if suffix == ".pdf":
-        return pdf_bytes(fig, what="simulate")
-    if suffix == ".png":
-        return png_bytes(fig, dpi=150)
-    if suffix == ".svg":
-        buf = io.BytesIO()
-        with style():
-            fig.savefig(
-                buf,
-                format="svg",
-                metadata={"Date": None, "Creator": BANNER.format(what="simulate")},
-            )
-        return buf.getvalue()
-    raise InputError(f"plot file type {suffix!r} is not one of: {', '.join(FORMATS)}")
-
-
-def check_plot_path(path) -> Path:
-    """The plot file name, refused (before any work) unless it ends in one of :data:`FORMATS`."""
-    path = Path(path)
-    if path.suffix.lower() not in FORMATS:
-        raise InputError(f"plot file {str(path)!r} must end in one of: {', '.join(FORMATS)}")
-    if path.exists() and path.is_dir():
-        raise InputError(f"plot file {str(path)!r} is a directory")
-    return path
-
-
 def save_figure(fig: Figure, path) -> Path:
-    """Render the figure in memory, then write it atomically (nothing half-written on failure)."""
-    path = check_plot_path(path)
-    data = figure_bytes(fig, path.suffix)
-    return atomic_write(path, data)
+    """Write a time-domain figure (PDF, PNG or SVG by the file ending), atomically."""
+    return figures.save_figure(fig, path, what="simulate")

@@ -90,9 +90,9 @@ def run(args) -> int:
     from verify.bench import run as bench_run
 
     if args.plot:
-        from reports.benchplots import check_path
+        from reports.figures import check_plot_path
 
-        check_path(args.plot)  # refuse a bad file name before the work
+        check_plot_path(args.plot)  # refuse a bad file name before the work
     if args.output and os.path.isdir(args.output):
         raise InputError(f"--output {args.output!r} is a directory")
 
