@@ -1,4 +1,5 @@
-"""Time-domain simulation (verify.timedomain): closure on every kind of edge, measured growth against
+"""Time-domain simulation (verify.timedomain): closure on every kind of edge, measured growth
+against
 the Floquet multipliers, the nonlinear pendulum's saturation, and bad input.
 
 References: the edges come from ``verify.boundary`` (their own tests check them); the closure test
