@@ -52,7 +52,9 @@ from fractions import Fraction
 import mpmath
 import numpy as np
 
-from .inputs import InputError, as_damping, as_depth, as_digits, as_period, as_quality
+from analytic.system import PAPER
+
+from .inputs import InputError, as_damping, as_depth, as_digits, as_period, as_quality, as_system
 
 __all__ = [
     "monodromy_matrix",
@@ -91,36 +93,45 @@ def _mp(x) -> mpmath.mpf:
     return mpmath.mpf(x)
 
 
-def _mp_parameters(m, tau, Q):
-    """``(omega1**2, omega2**2, z1, z2, gamma, k, tau)`` at the working precision.
+def _system_values(system, m):
+    """``(omega1^2, omega2^2, k)`` in units of ``omega0^2`` from the system's description, exact
+    when ``m`` is (custom systems have no depth)."""
+    return system.values(m if system.uses_depth else None)
 
-    ``z_i = omega_i**2 - gamma**2 = pi**2 (4/(1 -+ m) - 1/Q**2)`` is formed from the exact bracket
-    when ``m`` and ``Q`` are rational, so its sign (the regime of the half) is right.
+
+def _mp_parameters(m, tau, Q, system):
+    """``(omega1**2, omega2**2, z1, z2, gamma, k, t1, t2)`` at the working precision (units
+    ``omega0 = 2 pi``; ``t1 = D tau``, ``t2 = (1 - D) tau`` the phase lengths).
+
+    ``z_i = omega_i**2 - gamma**2 = 4 pi**2 (W_i - 1/(4 Q**2))`` is formed from the exact bracket
+    when ``m`` and ``Q`` are rational, so its sign (the regime of the phase) is right.
     """
-    m, tau, Q = as_depth(m), as_period(tau), as_quality(Q)
-    pi2 = mpmath.pi**2
-    exact = isinstance(m, Fraction) and (Q is None or isinstance(Q, Fraction))
+    tau, Q = as_period(tau), as_quality(Q)
+    if system.uses_depth:
+        m = as_depth(m)
+    exact = (not system.uses_depth or isinstance(m, Fraction)) and (
+        Q is None or isinstance(Q, Fraction)
+    )
+    four_pi2 = 4 * mpmath.pi**2
+    W1, W2, k = _system_values(system, m if exact or not system.uses_depth else _mp(m))
     if exact:
-        one_p, one_m = 1 + m, 1 - m
-        w1, w2 = _mp(4 / one_p) * pi2, _mp(4 / one_m) * pi2
-        k = _mp((one_p / one_m) ** 2)
+        g2 = None if Q is None else 1 / (4 * Q * Q)
+        w1, w2, k = _mp(W1) * four_pi2, _mp(W2) * four_pi2, _mp(k)
         if Q is None:
             z1, z2, g = w1, w2, mpmath.mpf(0)
         else:
-            z1, z2 = _mp(4 / one_p - 1 / Q**2) * pi2, _mp(4 / one_m - 1 / Q**2) * pi2
+            z1, z2 = _mp(W1 - g2) * four_pi2, _mp(W2 - g2) * four_pi2
             g = mpmath.pi / _mp(Q)
     else:
-        mm = _mp(m)
-        one_p, one_m = 1 + mm, 1 - mm
-        w1, w2 = 4 * pi2 / one_p, 4 * pi2 / one_m
-        k = (one_p / one_m) ** 2
+        w1, w2, k = _mp(W1) * four_pi2, _mp(W2) * four_pi2, _mp(k)
         if Q is None:
             z1, z2, g = w1, w2, mpmath.mpf(0)
         else:
-            q2 = 1 / _mp(Q) ** 2
-            z1, z2 = (4 / one_p - q2) * pi2, (4 / one_m - q2) * pi2
             g = mpmath.pi / _mp(Q)
-    return w1, w2, z1, z2, g, k, _mp(tau), Q is not None
+            z1, z2 = w1 - g * g, w2 - g * g
+    tau = _mp(tau)
+    t1 = tau * _mp(system.duty)
+    return w1, w2, z1, z2, g, k, t1, tau - t1, Q is not None
 
 
 # ---------------------------------------------------------------------------------------------
@@ -155,17 +166,20 @@ def _half_mp(w, z, g, t, model: str, friction: bool):
     return e * (c + g * s), e * s, -e * w * s, e * (c - g * s)
 
 
-def _monodromy_mp(m, tau, Q, model):
+def _monodromy_mp(m, tau, Q, model, system):
     """The monodromy at the working precision (no rounding, no guard digits added)."""
-    w1, w2, z1, z2, g, k, tau, friction = _mp_parameters(m, tau, Q)
-    h = tau / 2
-    a1, b1, c1, d1 = _half_mp(w1, z1, g, h, model, friction)
-    a2, b2, c2, d2 = _half_mp(w2, z2, g, h, model, friction)
+    w1, w2, z1, z2, g, k, t1, t2, friction = _mp_parameters(m, tau, Q, system)
+    a1, b1, c1, d1 = _half_mp(w1, z1, g, t1, model, friction)
+    a2, b2, c2, d2 = _half_mp(w2, z2, g, t2, model, friction)
     # J12 U1: the velocity row scaled by k; then U2; then J21: the velocity row divided by k
     c1, d1 = k * c1, k * d1
     M11, M12 = a2 * a1 + b2 * c1, a2 * b1 + b2 * d1
     M21, M22 = (c2 * a1 + d2 * c1) / k, (c2 * b1 + d2 * d1) / k
     return mpmath.matrix([[M11, M12], [M21, M22]])
+
+
+def _system(system, duty):
+    return as_system(system, "1/2" if duty is None else duty)
 
 
 def _digits(dps) -> int:
@@ -229,25 +243,27 @@ def _np_arrays(m, tau, Q):
     return m, tau, Qa
 
 
-def _monodromy_np(m, tau, Q, model):
+def _monodromy_np(m, tau, Q, model, system):
+    if not system.uses_depth:
+        m = 0.5  # unused: a custom system has no depth
     m, tau, Q = _np_arrays(m, tau, Q)
-    two_pi = 2 * math.pi
-    one_p, one_m = 1 + m, 1 - m
-    w1, w2 = two_pi**2 / one_p, two_pi**2 / one_m
-    k = (one_p / one_m) ** 2
+    two_pi2 = (2 * math.pi) ** 2
+    W1, W2, k = _system_values(system, m)
+    W1, W2, k = (np.asarray(float(v) if isinstance(v, Fraction) else v, float) for v in (W1, W2, k))
+    w1, w2 = two_pi2 * W1, two_pi2 * W2
     if Q is None:
         g = np.zeros(())
         z1, z2 = w1, w2
         friction = np.zeros((), dtype=bool)
     else:
         g = math.pi / Q
-        q2 = 1 / Q**2
-        z1, z2 = math.pi**2 * (4 / one_p - q2), math.pi**2 * (4 / one_m - q2)
+        z1, z2 = w1 - g * g, w2 - g * g
         friction = np.ones((), dtype=bool)
-    h = tau / 2
+    t1 = tau * float(system.duty)
+    t2 = tau - t1
     with np.errstate(over="ignore", under="ignore", invalid="ignore", divide="ignore"):
-        a1, b1, c1, d1 = _half_np(w1, z1, g, h, model, friction)
-        a2, b2, c2, d2 = _half_np(w2, z2, g, h, model, friction)
+        a1, b1, c1, d1 = _half_np(w1, z1, g, t1, model, friction)
+        a2, b2, c2, d2 = _half_np(w2, z2, g, t2, model, friction)
     c1, d1 = k * c1, k * d1
     M11, M12 = a2 * a1 + b2 * c1, a2 * b1 + b2 * d1
     M21, M22 = (c2 * a1 + d2 * c1) / k, (c2 * b1 + d2 * d1) / k
@@ -259,7 +275,9 @@ def _monodromy_np(m, tau, Q, model):
 # public API
 
 
-def monodromy_matrix(m, tau, Q=None, damping="exact", *, backend="mpmath", dps=None):
+def monodromy_matrix(
+    m, tau, Q=None, damping="exact", *, backend="mpmath", dps=None, system=PAPER, duty=None
+):
     """The period map of ``(phi, phi')`` from ``t = 0+`` over one modulation period ``T = tau T0``.
 
     ``backend="mpmath"``: ``m, tau, Q`` scalars (exact rationals, strings, floats or mpf), the
@@ -267,14 +285,16 @@ def monodromy_matrix(m, tau, Q=None, damping="exact", *, backend="mpmath", dps=N
     the computation runs inside ``mpmath.workdps`` with guard digits and leaves the global precision
     alone).  ``backend="numpy"``: floats or arrays (broadcast together), the result a float64 array
     of shape ``(..., 2, 2)``.  ``damping`` is ``"exact"`` or ``"paper"`` (ignored when ``Q`` is
-    ``None``).
+    ``None``).  ``system`` (and ``duty``) pick a member of the family (:mod:`analytic.system`);
+    ``m`` is ignored for a custom system.
     """
     model = _check_common(damping, backend)
+    system = _system(system, duty)
     if backend == "numpy":
-        return _monodromy_np(m, tau, Q, model)
+        return _monodromy_np(m, tau, Q, model, system)
     d = _digits(dps)
     with mpmath.workdps(d + _GUARD):
-        M = _monodromy_mp(m, tau, Q, model)
+        M = _monodromy_mp(m, tau, Q, model, system)
     with mpmath.workdps(d):
         return M.apply(lambda x: +x)
 
@@ -307,7 +327,9 @@ def _roots_np(M):
     return np.stack([mu1, mu2], -1)
 
 
-def floquet_multipliers(m, tau, Q=None, damping="exact", *, backend="mpmath", dps=None):
+def floquet_multipliers(
+    m, tau, Q=None, damping="exact", *, backend="mpmath", dps=None, system=PAPER, duty=None
+):
     """The two Floquet multipliers (eigenvalues of :func:`monodromy_matrix`), larger modulus first.
 
     mpmath: a pair of mpf (real multipliers) or of conjugate mpc (complex ones, the one with
@@ -315,22 +337,27 @@ def floquet_multipliers(m, tau, Q=None, damping="exact", *, backend="mpmath", dp
     ``exp(-2 gamma T)``; inside an interval of instability they are real with the sign ``(-1)**n``.
     """
     model = _check_common(damping, backend)
+    system = _system(system, duty)
     if backend == "numpy":
-        return _roots_np(_monodromy_np(m, tau, Q, model))
+        return _roots_np(_monodromy_np(m, tau, Q, model, system))
     d = _digits(dps)
     with mpmath.workdps(d + _GUARD):
-        mu = _roots_mp(_monodromy_mp(m, tau, Q, model))
+        mu = _roots_mp(_monodromy_mp(m, tau, Q, model, system))
     with mpmath.workdps(d):
         return tuple(+x for x in mu)
 
 
-def growth_factor(m, tau, Q=None, damping="exact", *, backend="mpmath", dps=None):
+def growth_factor(
+    m, tau, Q=None, damping="exact", *, backend="mpmath", dps=None, system=PAPER, duty=None
+):
     """The growth of the amplitude per modulation period, ``max |mu|`` over the two multipliers.
 
     Above 1 inside an interval of instability; 1 on its edges and outside it without friction;
     ``exp(-gamma T)`` outside it with friction.
     """
-    mu = floquet_multipliers(m, tau, Q, damping, backend=backend, dps=dps)
+    mu = floquet_multipliers(
+        m, tau, Q, damping, backend=backend, dps=dps, system=system, duty=duty
+    )
     if backend == "numpy":
         return np.abs(mu).max(axis=-1)
     with mpmath.workdps(_digits(dps)):

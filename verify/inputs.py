@@ -24,6 +24,7 @@ __all__ = [
     "as_range",
     "as_tolerance",
     "as_period",
+    "as_system",
     "DIGITS_RANGE",
     "MAX_ORDER",
 ]
@@ -34,8 +35,7 @@ DIGITS_RANGE = (5, 10000)
 MAX_ORDER = 10000
 
 
-class InputError(ValueError):
-    """A value outside what the engine accepts; the message names the value and the range."""
+from analytic.errors import InputError  # noqa: E402  (the one error type, shared with analytic)
 
 
 def as_depth(m) -> Fraction | mpmath.mpf:
@@ -279,3 +279,12 @@ def as_period(T, *, name: str = "period T/T0") -> Fraction | mpmath.mpf:
     if not 0 < val <= MAX_PERIOD:
         raise InputError(f"{name} = {T} is outside the allowed range 0 < T <= {MAX_PERIOD}")
     return val
+
+
+def as_system(system="pendulum", duty="1/2", omega_sq=None, jump=None):
+    """A member of the family (:class:`analytic.system.System`): a name (``pendulum``,
+    ``torsion``, ``meissner``, ``custom`` with ``omega_sq`` and ``jump``) or a ``System``, with the
+    duty ``0 < D < 1``."""
+    from analytic.system import system as make
+
+    return make(system, duty=duty, omega_sq=omega_sq, jump=jump)

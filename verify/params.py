@@ -47,6 +47,8 @@ from fractions import Fraction
 
 import mpmath
 
+from analytic.system import PAPER, System, phase_regimes
+
 from .derived import Backend
 
 __all__ = [
@@ -116,21 +118,26 @@ class Halves:
 NEAR_CRITICAL = 0.05
 
 
-def form_for(m: Fraction, Q: Fraction | None, damping: str) -> tuple[str, tuple[str, str] | None]:
+def form_for(
+    m: Fraction, Q: Fraction | None, damping: str, system: System = PAPER
+) -> tuple[str, tuple[str, str] | None]:
     """Which equations solve the problem: ``("normal", None)`` or ``("trace", (half1, half2))``.
 
     The normal form without friction, in the paper model, and in the exact model with both halves
-    under-damped and half 1 not within :data:`NEAR_CRITICAL` of critical damping; the trace form
-    otherwise."""
-    hv = halves(m, Q, damping)
+    under-damped and half 1 (the low-frequency phase) not within :data:`NEAR_CRITICAL` of critical
+    damping (``Omega1^2 / gamma^2 < NEAR_CRITICAL^2``); the trace form otherwise."""
+    if not system.is_paper:
+        from .system_params import canonical
+
+        system = canonical(system)
+    hv = halves(m, Q, damping, system)
     if not hv.normal:
         return "trace", (hv.half1, hv.half2)
-    if (
-        Q is not None
-        and damping == "exact"
-        and (4 * Q * Q - 1 - m) / (1 + m) < Fraction(NEAR_CRITICAL) ** 2
-    ):
-        return "trace", ("under", "under")
+    if Q is not None and damping == "exact":
+        w1 = system.omega1_sq(m if system.uses_depth else None)
+        g2 = 1 / (4 * Q * Q)
+        if (w1 - g2) / g2 < Fraction(NEAR_CRITICAL) ** 2:
+            return "trace", ("under", "under")
     return "normal", None
 
 
@@ -146,17 +153,10 @@ def exact_fraction(x) -> Fraction:
     return Fraction(x)
 
 
-def halves(m: Fraction, Q: Fraction | None, damping: str) -> Halves:
-    """Regime of each half for the exact depth ``m`` and quality factor ``Q``."""
-    if Q is None:
-        return Halves("undamped", "undamped")
-    if damping == "paper":
-        return Halves("under", "under")
-
-    def one(u: Fraction) -> str:
-        return "under" if u > 0 else ("critical" if u == 0 else "over")
-
-    return Halves(one(4 * Q * Q - 1 - m), one(4 * Q * Q - 1 + m))
+def halves(m: Fraction, Q: Fraction | None, damping: str, system: System = PAPER) -> Halves:
+    """Regime of each half (phase) for the exact depth ``m`` and quality factor ``Q``
+    (:func:`analytic.system.phase_regimes`, the one definition of the rule)."""
+    return Halves(*phase_regimes(system, m, Q, damping))
 
 
 def _lift(x, B: Backend):
@@ -186,14 +186,19 @@ def _undamped(m, B: Backend):
     return r, r * r, u, beta, w, bm
 
 
-def normal_params(m, Q, damping: str, B: Backend) -> NormalParams:
+def normal_params(m, Q, damping: str, B: Backend, system: System = PAPER) -> NormalParams:
     """The normal-form parameters for depth ``m`` and quality factor ``Q`` (``None``: no friction)
     in the damping model ``damping`` (``"exact"`` or ``"paper"``), as numbers of back end ``B``.
 
     ``m`` and ``Q`` are exact :class:`~fractions.Fraction` s (the rational parts are then computed
     exactly and rounded once) or numbers of the back end.  For the exact model both halves must be
-    under-damped (``4 Q^2 > 1 + m``).
+    under-damped (``4 Q^2 > 1 + m``).  Any other member of the family (``system``) takes the
+    general route of :mod:`verify.system_params`, which the tests check against this one.
     """
+    if not system.is_paper:
+        from .system_params import normal_values
+
+        return NormalParams(**normal_values(system, m, Q, damping, B))
     r, r2, u, beta, w0, bm = _undamped(m, B)
     zero = r * 0
     if Q is None:
@@ -221,12 +226,19 @@ def normal_params(m, Q, damping: str, B: Backend) -> NormalParams:
     return NormalParams(B.sqrt(r2), r2, u, beta, w, g, w0, diff / (w * w0), 2 * nu1 / nsum)
 
 
-def trace_params(m, Q, B: Backend) -> TraceParams:
+def trace_params(m, Q, B: Backend, system: System = PAPER) -> TraceParams:
     """``kappa``, ``nu1``, ``nu2`` of the exact model's trace form (any regime).
 
     With exact ``m``, ``Q`` the signs of ``u_i`` are exact, and a critically damped half gets
-    ``nu_i = 0`` exactly (its forms do not use it).
+    ``nu_i = 0`` exactly (its forms do not use it).  Other members of the family and duties:
+    :func:`verify.system_params.trace_values` (phase lengths folded into ``kappa, nu_i``).
     """
+    if not system.is_paper:
+        from .system_params import normal_values, trace_values
+
+        tv = trace_values(system, m, Q, B)
+        w0 = normal_values(system, m, None, "exact", B)["w0"]
+        return TraceParams(tv["kappa"], tv["nu1"], tv["nu2"], _lift(Q, B), w0)
     q2 = 4 * Q * Q
     kappa = q2 * ((1 + m) / ((1 - m) * (1 - m)) + (1 - m) / ((1 + m) * (1 + m))) - 2
     u1, u2 = (q2 - 1 - m) / (1 + m), (q2 - 1 + m) / (1 - m)

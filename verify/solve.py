@@ -66,8 +66,11 @@ from .certify import (
     upper_mpf,
 )
 from .derived import backend, edge_equation, indicator, trace_indicator, trace_window
+from analytic.system import PAPER, System
+
 from .inputs import (
     InputError,
+    as_system,
     as_damping,
     as_depth,
     as_digits,
@@ -110,6 +113,8 @@ class Request:
     m_input: object = None
     #: relative tolerance of ``T/T0`` for ``method="auto"`` (:mod:`verify.auto`)
     tol: object = None
+    #: the member of the family (:mod:`analytic.system`); the paper's pendulum by default
+    system: System = PAPER
 
     @property
     def parity_sign(self) -> int:
@@ -147,6 +152,8 @@ class Boundary:
     notes: tuple = field(default=())
     #: proven radii of ``lower, upper, delta_lower, delta_upper`` (for printing only proven digits)
     radii: tuple | None = field(default=None, repr=False)
+    #: the member of the family (:mod:`analytic.system`)
+    system: System = PAPER
 
     @property
     def width(self) -> mpmath.mpf | None:
@@ -167,7 +174,8 @@ class Boundary:
         fmt = lambda x, k: None if x is None else self._fmt(x, k)  # noqa: E731
         return {
             "order": self.order,
-            "m": _fraction_text(self.m),
+            **self.system.as_json(),
+            "m": None if self.m is None else _fraction_text(self.m),
             "Q": None if self.Q is None else _fraction_text(self.Q),
             "damping": self.damping if self.Q is not None else "none",
             "digits": self.digits,
@@ -189,15 +197,19 @@ class Boundary:
             if self.Q is None
             else f"Q = {_fraction_text(self.Q)} ({self.damping} model)"
         )
-        head = f"order {self.order}, m = {_fraction_text(self.m)}, {fr}"
+        where = f"m = {_fraction_text(self.m)}, " if self.m is not None else ""
+        head = f"order {self.order}, {where}{fr}"
+        if not self.system.is_paper:
+            head = f"{self.system.label}: {head}"
+        off = "T - n T_av/2" if self.system.is_paper else "T - T_n"
         if not self.exists:
             body = "  no interval of instability"
         else:
             body = (
                 f"  lower T/T0 = {self._fmt(self.lower, 0)}   "
-                f"(T - n T_av/2 = {self._fmt(self.delta_lower, 2)})\n"
+                f"({off} = {self._fmt(self.delta_lower, 2)})\n"
                 f"  upper T/T0 = {self._fmt(self.upper, 1)}   "
-                f"(T - n T_av/2 = {self._fmt(self.delta_upper, 3)})"
+                f"({off} = {self._fmt(self.delta_upper, 3)})"
             )
         proof = (
             f"certified, error < {mpmath.nstr(self.radius, 2)}"
@@ -249,7 +261,16 @@ def register_method(name: str):
 
 
 def boundary(
-    order, m, *, Q=None, damping="exact", digits=30, method="certified", tol=None
+    order,
+    m=None,
+    *,
+    Q=None,
+    damping="exact",
+    digits=30,
+    method="certified",
+    tol=None,
+    system="pendulum",
+    duty="1/2",
 ) -> Boundary:
     """The lower and upper boundary ``T/T0`` of the ``order``-th interval of instability.
 
@@ -260,9 +281,16 @@ def boundary(
     solver from :data:`METHODS`.  ``tol`` (a relative error of ``T/T0``) instead lets the engine
     pick the cheapest method that provably meets it (``method="auto"``, :mod:`verify.auto`; the
     digits then follow from ``tol``); ``Boundary.method`` says which one it used.
+
+    ``system`` is a member of the family: ``"pendulum"`` (the paper's), ``"torsion"``,
+    ``"meissner"``, or a value of :func:`analytic.system.custom` (which has no depth: leave ``m``
+    out); ``duty`` is the fraction ``D`` of the period spent in phase 1 (default ``1/2``).
     """
     n = as_order(order)
-    mm = as_depth(m)
+    sysv = as_system(system, duty)
+    mm = as_depth(m) if sysv.uses_depth or m is not None else None
+    if not sysv.uses_depth and m is not None:
+        raise InputError(f"a custom system has no depth: leave m out (got m = {m!r})")
     QQ = as_quality(Q)
     model = as_damping(damping)
     d = as_digits(digits)
@@ -278,7 +306,14 @@ def boundary(
     except KeyError:
         raise InputError(f"method {method!r} is not one of: {', '.join(sorted(METHODS))}") from None
     QF = None if QQ is None else exact_fraction(QQ)
-    req = Request(n, exact_fraction(mm), QF, model, d, mm, tt)
+    if sysv.is_paper:
+        req = Request(n, exact_fraction(mm), QF, model, d, mm, tt)
+    else:
+        if method != "certified":
+            raise InputError(
+                f"method {method!r} is for the paper's system only; {sysv.label} uses 'certified'"
+            )
+        req = Request(n, None if mm is None else exact_fraction(mm), QF, model, d, mm, tt, sysv)
     return solver(req)
 
 
@@ -363,8 +398,8 @@ def _undamped(req: Request) -> Boundary:
     f_math = form.compiled("math", (0, 1, 2))
     f_arb = form.compiled("arb", 0)
     df_arb = form.compiled("arb", 1)
-    pf = normal_params(req.m, None, "exact", _MATH)
-    P = _AtPrecision(lambda: normal_params(req.m, None, "exact", _ARB))
+    pf = normal_params(req.m, None, "exact", _MATH, req.system)
+    P = _AtPrecision(lambda: normal_params(req.m, None, "exact", _ARB, req.system))
     C = _AtPrecision(lambda: arb.pi() * n / 2)
     sgn = _sgn(n)
     roots = []
@@ -447,6 +482,7 @@ def _result(
         regime=regime,
         notes=tuple(notes),
         radii=radii,
+        system=req.system,
     )
 
 
@@ -462,6 +498,7 @@ def _none(req, method, regime, notes=(), certified=True) -> Boundary:
         certified=certified,
         regime=regime,
         notes=tuple(notes),
+        system=req.system,
     )
 
 
@@ -637,7 +674,7 @@ def _solve_hump(req: Request, h: _Hump, bits: int):
     return True, lo_root, hi_root, _prove_shape(h, lo_root, hi_root)
 
 
-def hump_normal(n: int, m: Fraction, Q: Fraction, damping: str, bits: int):
+def hump_normal(n: int, m: Fraction, Q: Fraction, damping: str, bits: int, system=PAPER):
     """The friction problem in the normal form, for order ``n`` at exact ``m``, ``Q``: the
     :class:`_Hump` (arb functions, proven bracket, float stage) and the parameters at precision."""
     from analytic.stitching import Parity
@@ -646,13 +683,13 @@ def hump_normal(n: int, m: Fraction, Q: Fraction, damping: str, bits: int):
 
     parity = Parity.of(n)
     # float parameters from the exact rationals (right also next to critical damping)
-    pm = normal_params(m, Q, damping, _MATH)
+    pm = normal_params(m, Q, damping, _MATH, system)
     Pn = NormalParams(*(np.array([float(getattr(pm, f.name))]) for f in fields(NormalParams)))
     fl = damped_normal(np.array([[n]]), Pn)
     fl = {k: float(np.asarray(v).ravel()[0]) for k, v in fl.items()}
     form = indicator(parity)
     D0, D1, D2 = (form.compiled("arb", k) for k in (0, 1, 2))
-    P = _AtPrecision(lambda: normal_params(m, Q, damping, _ARB))
+    P = _AtPrecision(lambda: normal_params(m, Q, damping, _ARB, system))
     C = _AtPrecision(lambda: arb.pi() * n / 2)
 
     def args():
@@ -690,7 +727,7 @@ def hump_normal(n: int, m: Fraction, Q: Fraction, damping: str, bits: int):
 
 def _normal_damped(req: Request) -> Boundary:
     bits = bits_for_digits(req.digits + 2)
-    h, P = hump_normal(req.order, req.m, req.Q, req.damping, bits)
+    h, P = hump_normal(req.order, req.m, req.Q, req.damping, bits, req.system)
     regime = "normal form with friction"
     exists, lo_root, hi_root, shape = _solve_hump(req, h, bits)
     notes = (
@@ -717,13 +754,13 @@ def _normal_damped(req: Request) -> Boundary:
     )
 
 
-def hump_trace(n: int, m: Fraction, Q: Fraction, regimes: tuple[str, str]):
+def hump_trace(n: int, m: Fraction, Q: Fraction, regimes: tuple[str, str], system=PAPER):
     """The friction problem in the trace form (exact model, a half critically or over-damped):
     the :class:`_Hump` in ``zeta`` on the proven window of order ``n``, and the parameters; or
     ``(None, reason)`` if the order has no window."""
     from .grid import damped_trace, trace_window_ends
 
-    Tf = trace_params(m, Q, _MATH)
+    Tf = trace_params(m, Q, _MATH, system)
     window = trace_window_ends(n, regimes, Tf)
     if window is None:
         why = (
@@ -734,7 +771,7 @@ def hump_trace(n: int, m: Fraction, Q: Fraction, regimes: tuple[str, str]):
         return None, why
     form = trace_indicator(*regimes)
     D0, D1, D2 = (form.compiled("arb", k) for k in (0, 1, 2))
-    P = _AtPrecision(lambda: trace_params(m, Q, _ARB))
+    P = _AtPrecision(lambda: trace_params(m, Q, _ARB, system))
     sigma = -1 if n % 2 else 1
 
     def args():
@@ -765,7 +802,7 @@ def hump_trace(n: int, m: Fraction, Q: Fraction, regimes: tuple[str, str]):
 def _trace_damped(req: Request, regimes) -> Boundary:
     bits = bits_for_digits(req.digits + 2)
     regime = f"trace form (half 1 {regimes[0]}, half 2 {regimes[1]})"
-    h, P = hump_trace(req.order, req.m, req.Q, regimes)
+    h, P = hump_trace(req.order, req.m, req.Q, regimes, req.system)
     if h is None:
         return _none(req, "certified", regime, (P,))
     exists, lo_root, hi_root, shape = _solve_hump(req, h, bits)
@@ -822,7 +859,7 @@ def _prove_window(n, regimes, P, za, zb) -> bool:
 def _certified(req: Request) -> Boundary:
     if req.Q is None:
         return _undamped(req)
-    kind, regimes = form_for(req.m, req.Q, req.damping)
+    kind, regimes = form_for(req.m, req.Q, req.damping, req.system)
     if kind == "normal":
         return _normal_damped(req)
     return _trace_damped(req, regimes)
