@@ -41,12 +41,23 @@ from math import gcd
 
 import sympy as sp
 
+from .errors import InputError
 from .identity import Verdict, prove_zero
 from .model import Damping, S
 from .normal_form import edge_factor, normal_form
 from .stitching import Parity, monodromy
+from .system import PAPER, System
 
-__all__ = ["Closing", "Closings", "Step", "closings", "closing_pairs", "theorem_steps", "DIGITS"]
+__all__ = [
+    "Closing",
+    "Closings",
+    "Step",
+    "closings",
+    "closing_pairs",
+    "theorem_steps",
+    "family_steps",
+    "DIGITS",
+]
 
 #: decimal digits of the closing period that are printed (certified)
 DIGITS = 40
@@ -75,22 +86,31 @@ class Closing:
     order: int
     a: int
     b: int
-    m: Fraction
+    m: Fraction | None
     T: str
     multiplier: int
+    system: System = PAPER
 
     @property
     def T_exact(self) -> sp.Expr:
-        return self.a * self.b * sp.sqrt(sp.Rational(2, self.a**2 + self.b**2))
+        if self.system.is_paper:
+            return self.a * self.b * sp.sqrt(sp.Rational(2, self.a**2 + self.b**2))
+        return _family_period(self.system, self.a, self.m)
 
     @property
     def T_text(self) -> str:
         """The exact period as text that sympy parses: ``a*b*sqrt(2/(a^2+b^2))``."""
-        return f"{self.a * self.b}*sqrt(2/{self.a**2 + self.b**2})"
+        if self.system.is_paper:
+            return f"{self.a * self.b}*sqrt(2/{self.a**2 + self.b**2})"
+        return sp.sstr(self.T_exact)
 
     @property
     def ratio(self) -> str:
-        return f"{self.b}:{self.a}"
+        """``T1 : T2`` (for equal halves ``b : a``; for duty ``D`` it is ``b D : a (1 - D)``)."""
+        if self.system.duty == Fraction(1, 2):
+            return f"{self.b}:{self.a}"
+        r = Fraction(self.b) * self.system.duty / (self.a * (1 - self.system.duty))
+        return f"{r.numerator}:{r.denominator}"
 
     @property
     def lowest_terms(self) -> bool:
@@ -105,7 +125,7 @@ class Closing:
         return {
             "order": self.order,
             "ratio": self.ratio,
-            "m": f"{self.m.numerator}/{self.m.denominator}",
+            "m": None if self.m is None else f"{self.m.numerator}/{self.m.denominator}",
             "T": self.T,
             "a": self.a,
             "b": self.b,
@@ -123,6 +143,7 @@ class Closings:
     items: tuple[Closing, ...]
     steps: tuple[Step, ...]
     statement: str
+    system: System = PAPER
 
     def __iter__(self):
         return iter(self.items)
@@ -291,14 +312,12 @@ def _closing(n: int, a: int, b: int) -> Closing:
     return Closing(n, a, b, _depth(a, b), _certified_decimal(a, b, DIGITS), (-1) ** n)
 
 
-def closings(max_order: int = 12) -> Closings:
+def closings(max_order: int = 12, system: System = PAPER) -> Closings:
     """The closing theorem with its derivation steps, and every closing of orders ``1..max_order``
-    (sorted by order, then depth)."""
-    from verify.inputs import InputError, as_order
-
-    n_max = as_order(max_order)
-    if n_max > 200:
-        raise InputError(f"max-order {n_max} is outside the allowed range 1 to 200")
+    (sorted by order, then depth) of ``system`` (any member of the family, any duty)."""
+    n_max = _max_order(max_order)
+    if not system.is_paper:
+        return _family_closings(n_max, system)
     items = tuple(
         sorted(
             (_closing(n, a, b) for n in range(1, n_max + 1) for a, b in closing_pairs(n)),
@@ -306,3 +325,134 @@ def closings(max_order: int = 12) -> Closings:
         )
     )
     return Closings(n_max, items, theorem_steps(), STATEMENT)
+
+
+def _max_order(value) -> int:
+    text = str(value).strip()
+    if isinstance(value, bool) or not text.lstrip("+").isdigit():
+        raise InputError(f"max-order {value!r} is not an integer; allowed range 1 to 200")
+    n = int(text)
+    if not 1 <= n <= 200:
+        raise InputError(f"max-order {n} is outside the allowed range 1 to 200")
+    return n
+
+
+# ---------------------------------------------------------------------------------------------
+# any member of the family, any duty
+
+FAMILY_STATEMENT = (
+    "Without friction the n-th interval of a two-level system with duty D has zero width exactly "
+    "where both phases turn through whole multiples of pi: omega_1 D T = a pi and "
+    "omega_2 (1 - D) T = b pi with integers a, b >= 1, a + b = n; there omega_2^2/omega_1^2 = "
+    "(b D / (a (1 - D)))^2 fixes the depth, T = a / (2 D sqrt(omega_1^2/omega_0^2)) T0, and the "
+    "monodromy is M = (-1)^n I. There are no other closings (r != 0)."
+)
+
+
+def _ratio_sq(system: System, a: int, b: int) -> Fraction:
+    """``(omega2/omega1)^2`` needed for ``omega1 D T = a pi``, ``omega2 (1-D) T = b pi``."""
+    D = system.duty
+    return (Fraction(b) * D / (a * (1 - D))) ** 2
+
+
+@cache
+def _depth_solutions(system: System) -> tuple:
+    """``m`` as a function of ``rho2 = (omega2/omega1)^2``: the roots in ``(0, 1)`` of
+    ``omega2^2(m) = rho2 omega1^2(m)``, solved by sympy once per system (``rho2`` symbolic)."""
+    rho2 = sp.Symbol("rho2", positive=True)
+    W1, W2, _ = (sp.sympify(v) for v in system.values(S.m))
+    num = sp.numer(sp.together(W2 - rho2 * W1))
+    return rho2, tuple(sp.solve(num, S.m))
+
+
+def _depths(system: System, a: int, b: int) -> list[Fraction]:
+    rho2, sols = _depth_solutions(system)
+    value = _ratio_sq(system, a, b)
+    out = []
+    for sol in sols:
+        mv = sp.nsimplify(sol.subs(rho2, sp.Rational(value.numerator, value.denominator)))
+        if mv.is_Rational and 0 < mv < 1:
+            out.append(Fraction(int(mv.p), int(mv.q)))
+        elif mv.is_real and not mv.is_Rational:  # pragma: no cover - no built-in law needs it
+            raise NotImplementedError(f"an irrational closing depth {mv} of {system.label}")
+    return out
+
+
+def _family_period(system: System, a: int, m) -> sp.Expr:
+    """``T / T0 = a / (2 D sqrt(omega1^2))`` at the closing."""
+    W1 = sp.sympify(system.omega1_sq(sp.Rational(m.numerator, m.denominator) if m else None))
+    D = sp.Rational(system.duty.numerator, system.duty.denominator)
+    return sp.nsimplify(a / (2 * D * sp.sqrt(W1)))
+
+
+def _family_decimal(system: System, a: int, m, digits: int) -> str:
+    from flint import arb, ctx, fmpq
+
+    W1 = Fraction(system.omega1_sq(m if system.uses_depth else None))
+    D = system.duty
+    for extra in (20, 60, 200):
+        with ctx.workdps(digits + extra):
+            ball = arb(fmpq(a * D.denominator, 2 * D.numerator)) / arb(
+                fmpq(W1.numerator, W1.denominator)
+            ).sqrt()
+            texts = {_round_exact(e, digits) for e in (ball.lower(), ball.upper())}
+        if len(texts) == 1:
+            return texts.pop()
+    raise ArithmeticError("could not certify the closing period")  # pragma: no cover
+
+
+@cache
+def family_steps(system: System) -> tuple[Step, ...]:
+    """The closing theorem for ``system``: the system-free steps 1-4 of :func:`theorem_steps`,
+    then the depth equation solved for this system and the monodromy of the family at a
+    closing (symbolic duty and jump)."""
+    from .family import D as Dsym
+    from .family import k as ksym
+    from .family import monodromy as family_monodromy
+
+    steps = list(theorem_steps()[:6])
+    if system.uses_depth:
+        rho2, sols = _depth_solutions(system)
+        W1, W2, _ = (sp.sympify(v) for v in system.values(S.m))
+        ok = bool(sols) and all(sp.simplify((W2 - rho2 * W1).subs(S.m, s)) == 0 for s in sols)
+        steps.append(
+            Step(
+                f"{system.name}: omega2^2/omega1^2 = rho^2 solved for the depth",
+                sp.Tuple(*(sp.Eq(S.m, s) for s in sols)),
+                Verdict(ok, "symbolic"),
+            )
+        )
+    j, l = sp.symbols("a b", integer=True, positive=True)
+    M = family_monodromy(Damping.NONE)
+    w1 = S.omega1
+    sub = {S.T: j * sp.pi / (w1 * Dsym), S.omega2: l * w1 * Dsym / (j * (1 - Dsym))}
+    Mc = sp.simplify(M.subs(sub))
+    target = (-1) ** (j + l) * sp.eye(2)
+    ok = all(sp.simplify(e) == 0 for e in sp.simplify(Mc - target))
+    steps.append(
+        Step(
+            "at omega1 D T = a pi, omega2 (1-D) T = b pi the monodromy is (-1)^(a+b) I for every "
+            "duty D and jump k",
+            sp.Eq(sp.Symbol("M"), target),
+            Verdict(ok, "symbolic"),
+        )
+    )
+    _ = ksym
+    return tuple(steps)
+
+
+def _family_closings(n_max: int, system: System) -> Closings:
+    items = []
+    for n in range(1, n_max + 1):
+        for a in range(1, n):
+            b = n - a
+            if system.uses_depth:
+                depths = _depths(system, a, b)
+            else:
+                W1, W2 = system.omega_sq
+                depths = [None] if W2 / W1 == _ratio_sq(system, a, b) else []
+            for mv in depths:
+                T = _family_decimal(system, a, mv, DIGITS)
+                items.append(Closing(n, a, b, mv, T, (-1) ** n, system))
+    items.sort(key=lambda c: (c.order, c.m or 0))
+    return Closings(n_max, tuple(items), family_steps(system), FAMILY_STATEMENT, system)

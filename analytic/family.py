@@ -41,7 +41,6 @@ its definition when it is built.
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from fractions import Fraction
 from functools import cache
 
 import sympy as sp

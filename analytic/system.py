@@ -28,7 +28,17 @@ from fractions import Fraction
 
 from .errors import InputError
 
-__all__ = ["System", "Law", "LAWS", "NAMES", "system", "custom", "PAPER", "phase_regimes", "is_normal"]
+__all__ = [
+    "System",
+    "Law",
+    "LAWS",
+    "NAMES",
+    "system",
+    "custom",
+    "PAPER",
+    "phase_regimes",
+    "is_normal",
+]
 
 
 @dataclass(frozen=True)
@@ -234,8 +244,7 @@ def custom(omega_sq, jump=1, duty="1/2") -> System:
         ) from None
     if len(items) != 2:
         raise InputError(
-            f"omega_sq = {omega_sq!r} must be two numbers omega1^2, omega2^2 > 0 "
-            f"(got {len(items)})"
+            f"omega_sq = {omega_sq!r} must be two numbers omega1^2, omega2^2 > 0 (got {len(items)})"
         )
     ws = tuple(_rational(w, "omega^2", "omega^2 > 0 (units of omega0^2)") for w in items)
     for given, w in zip(items, ws, strict=True):

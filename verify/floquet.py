@@ -58,6 +58,7 @@ from .inputs import InputError, as_damping, as_depth, as_digits, as_period, as_q
 
 __all__ = [
     "monodromy_matrix",
+    "monodromy_arb",
     "floquet_multipliers",
     "growth_factor",
     "floquet_vector",
@@ -176,6 +177,64 @@ def _monodromy_mp(m, tau, Q, model, system):
     M11, M12 = a2 * a1 + b2 * c1, a2 * b1 + b2 * d1
     M21, M22 = (c2 * a1 + d2 * c1) / k, (c2 * b1 + d2 * d1) / k
     return mpmath.matrix([[M11, M12], [M21, M22]])
+
+
+def _half_arb(w, z_sign, z, g, t, model: str, friction: bool):
+    """:func:`_half_mp` in ball arithmetic (python-flint ``arb``): every entry encloses the exact
+    one.  ``z_sign`` is the exact sign of ``z`` (the regime), so no branch depends on a ball."""
+    from flint import arb
+
+    if not friction or model == "paper":
+        W = w.sqrt()
+        c, s = (W * t).cos(), t * (W * t).sinc()
+        e = (-g * t).exp() if friction else arb(1)
+        return e * c, e * s, -e * w * s, e * c
+    if z_sign > 0:
+        W = z.sqrt()
+        c, s = (W * t).cos(), t * (W * t).sinc()
+    elif z_sign == 0:
+        c, s = arb(1), t
+    else:
+        L = (-z).sqrt()
+        c, s = (L * t).cosh(), (L * t).sinh() / L
+    e = (-g * t).exp()
+    return e * (c + g * s), e * s, -e * w * s, e * (c - g * s)
+
+
+def monodromy_arb(m, tau, Q, damping: str, system):
+    """The monodromy as four ``arb`` balls ``(M11, M12, M21, M22)`` at the working precision
+    (``flint.ctx.prec``), for exact ``m``, ``tau`` and ``Q`` (Fractions; ``Q = None``: no
+    friction): the certified version of :func:`monodromy_matrix`."""
+    from flint import arb, fmpq
+
+    def A(x: Fraction):
+        return arb(fmpq(x.numerator, x.denominator))
+
+    W1, W2, k = _system_values(system, m)
+    pi = arb.pi()
+    four_pi2 = 4 * pi * pi
+    w1, w2 = A(Fraction(W1)) * four_pi2, A(Fraction(W2)) * four_pi2
+    friction = Q is not None
+    if friction:
+        g2 = 1 / (4 * Fraction(Q) ** 2)
+        zf = (Fraction(W1) - g2, Fraction(W2) - g2)
+        z1, z2 = A(zf[0]) * four_pi2, A(zf[1]) * four_pi2
+        g = pi / A(Fraction(Q))
+    else:
+        zf = (Fraction(W1), Fraction(W2))
+        z1, z2, g = w1, w2, arb(0)
+    t1 = A(Fraction(tau) * system.duty)
+    t2 = A(Fraction(tau) * (1 - system.duty))
+    a1, b1, c1, d1 = _half_arb(w1, zf[0], z1, g, t1, damping, friction)
+    a2, b2, c2, d2 = _half_arb(w2, zf[1], z2, g, t2, damping, friction)
+    kk = A(Fraction(k))
+    c1, d1 = kk * c1, kk * d1
+    return (
+        a2 * a1 + b2 * c1,
+        a2 * b1 + b2 * d1,
+        (c2 * a1 + d2 * c1) / kk,
+        (c2 * b1 + d2 * d1) / kk,
+    )
 
 
 def _system(system, duty):

@@ -56,6 +56,8 @@ import mpmath
 import numpy as np
 from flint import arb, ctx
 
+from analytic.system import PAPER, System
+
 from .certify import (
     CertificationError,
     ball,
@@ -66,16 +68,14 @@ from .certify import (
     upper_mpf,
 )
 from .derived import backend, edge_equation, indicator, trace_indicator, trace_window
-from analytic.system import PAPER, System
-
 from .inputs import (
     InputError,
-    as_system,
     as_damping,
     as_depth,
     as_digits,
     as_order,
     as_quality,
+    as_system,
     as_tolerance,
 )
 from .params import NormalParams, exact_fraction, form_for, normal_params, trace_params

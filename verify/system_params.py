@@ -79,7 +79,9 @@ def _values_fn(system: System, damping: str, B: Backend):
 def _atoms(system: System, damping: str, m, Q, B: Backend) -> tuple:
     """The atoms at ``m, Q``: exact Fractions when both are exact, else numbers of ``B``."""
     names, atoms, *_ = _compiled(system, damping)
-    exact = isinstance(m, Fraction | int | type(None)) and isinstance(Q, Fraction | int | type(None))
+    exact = isinstance(m, Fraction | int | type(None)) and isinstance(
+        Q, Fraction | int | type(None)
+    )
     if exact:
         with_q = Fraction(1) if Q is None else Fraction(Q)
         vals = atoms(Fraction(m) if m is not None else Fraction(0), with_q)
@@ -138,8 +140,15 @@ def normal_values(system: System, m, Q, damping: str, B: Backend) -> dict:
     w, w0 = v["w"], v["w0"]
     dinv = v["dw"] / (w * w0) if "g" in v else zero
     return {
-        "r": r, "r2": r2, "u": v["u"], "beta": beta, "w": w, "g": g, "w0": w0,
-        "dinv": dinv if Q is not None and damping == "exact" else zero, "bm": bm,
+        "r": r,
+        "r2": r2,
+        "u": v["u"],
+        "beta": beta,
+        "w": w,
+        "g": g,
+        "w0": w0,
+        "dinv": dinv if Q is not None and damping == "exact" else zero,
+        "bm": bm,
     }
 
 
@@ -162,8 +171,13 @@ def trace_values(system: System, m, Q, B: Backend) -> dict:
     zeta``, ``zeta = gamma T/2``).  ``m`` and ``Q`` exact; ``kappa = N/gamma^2``."""
     system = canonical(system)
     names, atoms, *_ = _compiled(system, "exact")
-    vals = dict(zip(names, atoms(Fraction(m) if system.uses_depth else Fraction(0), Fraction(Q)),
-                    strict=True))
+    vals = dict(
+        zip(
+            names,
+            atoms(Fraction(m) if system.uses_depth else Fraction(0), Fraction(Q)),
+            strict=True,
+        )
+    )
     G2 = Fraction(vals["G"]) ** 2
     Dv = system.duty
     kappa = Fraction(vals["N"]) / G2 * 4 * Dv * (1 - Dv)

@@ -3,20 +3,70 @@
 
 from __future__ import annotations
 
-__all__ = ["add_order", "add_depth", "add_friction", "add_json"]
+__all__ = ["add_order", "add_depth", "add_friction", "add_json", "add_system", "system_of"]
 
 
 def add_order(p, help: str = "order of the resonance (1, 2, ...)") -> None:
     p.add_argument("--order", required=True, metavar="N", help=help)
 
 
-def add_depth(p) -> None:
+def add_depth(p, *, required: bool = True) -> None:
     p.add_argument(
         "--m",
-        required=True,
+        required=required,
+        default=None,
         metavar="M",
-        help="modulation depth, 0 < m < 1 (exact: 0.3, 3/5, 1e-12)",
+        help="modulation depth, 0 < m < 1 (exact: 0.3, 3/5, 1e-12)"
+        + ("" if required else "; not for --system custom"),
     )
+
+
+def add_system(p) -> None:
+    """``--system``, ``--duty`` and, for ``custom``, ``--omega-sq`` and ``--jump``."""
+    g = p.add_argument_group("the oscillator (a member of the two-level family)")
+    g.add_argument(
+        "--system",
+        default="pendulum",
+        metavar="NAME",
+        help=(
+            "pendulum (default: the paper's, bob sliding on a light rod), torsion (moment of "
+            "inertia switched), meissner (stiffness switched, no jump), or custom"
+        ),
+    )
+    g.add_argument(
+        "--duty",
+        default="1/2",
+        metavar="D",
+        help="fraction of the period spent in phase 1 (the low-frequency phase), 0 < D < 1; "
+        "default 1/2",
+    )
+    g.add_argument(
+        "--omega-sq",
+        default=None,
+        metavar="W1,W2",
+        help="custom only: omega1^2,omega2^2 in units of omega0^2, e.g. 4/5,6/5",
+    )
+    g.add_argument(
+        "--jump",
+        default=None,
+        metavar="K",
+        help="custom only: the factor k > 0 on the angular velocity at the switch 1 -> 2 "
+        "(default 1)",
+    )
+
+
+def system_of(args):
+    """The :class:`analytic.system.System` the options describe, checked; also checks that
+    ``--m`` is given exactly when the system has a depth."""
+    from verify.inputs import InputError, as_system
+
+    sysv = as_system(args.system, args.duty, args.omega_sq, args.jump)
+    m = getattr(args, "m", None)
+    if sysv.uses_depth and hasattr(args, "m") and m is None:
+        raise InputError(f"system {sysv.name} needs --m (a depth 0 < m < 1)")
+    if not sysv.uses_depth and m is not None:
+        raise InputError(f"--m {m} makes no sense with --system custom (it has no depth)")
+    return sysv
 
 
 def add_friction(p, *, required: bool = False) -> None:

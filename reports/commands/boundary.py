@@ -1,7 +1,7 @@
 """``paramres boundary``: the certified edges of one interval of instability.
 
     paramres boundary --order N --m M [--Q Q] [--damping exact|paper] [--digits D | --tol TOL]
-                      [--method certified|fixedpoint] [--json]
+                      [--method certified|fixedpoint] [--system S] [--duty D] [--json]
 
 Prints the lower and upper edge ``T/T0`` and their offsets ``T - n T_av/2`` with ``D`` proven
 digits (ball arithmetic; see :mod:`verify.solve`), or says that the interval does not exist.
@@ -18,7 +18,7 @@ from verify.fixedpoint import FixedPointError
 from verify.inputs import InputError
 from verify.solve import METHODS, boundary
 
-from ._arguments import add_depth, add_friction, add_json, add_order
+from ._arguments import add_depth, add_friction, add_json, add_order, add_system, system_of
 
 __all__ = ["register", "run"]
 
@@ -38,8 +38,9 @@ def register(subparsers) -> None:
         formatter_class=argparse.RawDescriptionHelpFormatter,
     )
     add_order(p)
-    add_depth(p)
+    add_depth(p, required=False)
     add_friction(p)
+    add_system(p)
     p.add_argument(
         "--digits", default=None, metavar="D", help="significant digits, 5 to 10000 (default 30)"
     )
@@ -66,10 +67,12 @@ def register(subparsers) -> None:
 def run(args) -> int:
     if args.tol is not None and args.digits is not None:
         raise InputError("--tol and --digits exclude each other (the tolerance sets the digits)")
+    sysv = system_of(args)
     try:
         result = boundary(
             args.order,
             args.m,
+            system=sysv,
             Q=args.Q,
             damping=args.damping,
             digits=30 if args.digits is None else args.digits,

@@ -13,7 +13,8 @@ import argparse
 from math import gcd
 
 from reports.output import dump_json
-from verify.inputs import InputError
+
+from ._arguments import add_system, system_of
 
 __all__ = ["register", "run", "render_text"]
 
@@ -34,35 +35,30 @@ def register(subparsers) -> None:
     )
     p.add_argument("--max-order", required=True, metavar="N", help="largest order, 1 to 200")
     p.add_argument("--json", action="store_true", help="machine-readable output")
+    add_system(p)
     p.set_defaults(func=run)
-
-
-def _max_order(text) -> int:
-    t = str(text).strip()
-    if not t.lstrip("+").isdigit():
-        raise InputError(f"max-order {text!r} is not an integer; allowed range 1 to 200")
-    n = int(t)
-    if not 1 <= n <= 200:
-        raise InputError(f"max-order {n} is outside the allowed range 1 to 200")
-    return n
 
 
 def run(args) -> int:
     from analytic.closings import closings
 
-    result = closings(_max_order(args.max_order))
+    result = closings(args.max_order, system_of(args))
     if not result.proven:  # pragma: no cover - a failed step would be a bug in the engine
         raise RuntimeError("a step of the closing theorem did not check out")
     if args.json:
-        dump_json(result.as_json())
+        doc = result.as_json()
+        if not result.system.is_paper:
+            doc = {**result.system.as_json(), "closings": doc}
+        dump_json(doc)
     else:
         print(render_text(result))
     return 0
 
 
 def render_text(result) -> str:
+    where = "" if result.system.is_paper else f" of the {result.system.label}"
     lines = [
-        f"Closings of the intervals of order n <= {result.max_order} (no friction)",
+        f"Closings of the intervals of order n <= {result.max_order}{where} (no friction)",
         "",
         result.statement,
         f"Derivation: {len(result.steps)} steps, all checked "
@@ -76,8 +72,13 @@ def render_text(result) -> str:
     lines.append(head)
     lines.append("-" * len(head) + "-" * 36)
     for c in result.items:
-        m = f"{c.m.numerator}/{c.m.denominator}"
+        m = "-" if c.m is None else f"{c.m.numerator}/{c.m.denominator}"
+        mdec = "-" if c.m is None else f"{float(c.m):.10f}"
         g = gcd(c.a, c.b)
-        note = "" if g == 1 else f"   (= {c.reduced_ratio}: the depth of order {c.order // g})"
-        lines.append(f"{c.order:>4}  {c.ratio:>7}  {m:>12}  {float(c.m):>14.10f}  {c.T}{note}")
+        note = (
+            ""
+            if g == 1 or not result.system.is_paper
+            else f"   (= {c.reduced_ratio}: the depth of order {c.order // g})"
+        )
+        lines.append(f"{c.order:>4}  {c.ratio:>7}  {m:>12}  {mdec:>14}  {c.T}{note}")
     return "\n".join(lines)

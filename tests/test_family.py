@@ -1,0 +1,316 @@
+"""The model axis: every member of the family and every duty, checked against independent routes.
+
+References:
+* the Floquet route (:mod:`verify.floquet`): the monodromy built from the segment maps and the
+  switches of the system's description, at 60 digits, with nothing from :mod:`analytic`'s
+  determinants; an edge is proven to hold an independent root by a sign change of
+  ``det(M - sigma I)`` across ``[T - delta, T + delta]``;
+* for the Meissner equation at ``D = 1/2``: the classical trace condition
+  ``2 cos a cos b - (w1/w2 + w2/w1) sin a sin b = +-2`` (``a = w1 T/2``, ``b = w2 T/2``), written
+  out in this file;
+* the paper's system: the hand-checked fast path of :mod:`verify.params` (itself proven against
+  the definitions in ``test_params.py``).
+"""
+
+from __future__ import annotations
+
+import random
+from fractions import Fraction
+
+import mpmath
+import pytest
+
+from analytic.system import PAPER, custom, system
+from verify.derived import backend
+from verify.floquet import floquet_multipliers, monodromy_matrix
+from verify.inputs import InputError
+from verify.multipliers import multipliers
+from verify.params import normal_params
+from verify.solve import boundary
+
+SYSTEMS = ("pendulum", "torsion", "meissner")
+
+
+def _floquet_condition(T, m, Q, damping, sysv, sigma):
+    with mpmath.workdps(60):
+        M = monodromy_matrix(m, T, Q, damping, system=sysv, dps=60)
+        return (M[0, 0] - sigma) * (M[1, 1] - sigma) - M[0, 1] * M[1, 0]
+
+
+def _independent_root_near(T, m, Q, damping, sysv, n, delta):
+    """A root of the Floquet condition lies in ``[T - delta, T + delta]`` (sign change)."""
+    sigma = (-1) ** n
+    with mpmath.workdps(60):
+        T = mpmath.mpf(T)
+        lo = _floquet_condition(T - delta, m, Q, damping, sysv, sigma)
+        hi = _floquet_condition(T + delta, m, Q, damping, sysv, sigma)
+    return lo * hi < 0, (lo, hi)
+
+
+def _cases(seed: int, count: int):
+    rng = random.Random(seed)
+    out = []
+    for _ in range(count):
+        name = rng.choice(SYSTEMS)
+        duty = Fraction(rng.randint(1, 19), 20)
+        kind = rng.random()
+        if kind < 0.2:
+            m = Fraction(1, 10 ** rng.randint(3, 8))
+        elif kind < 0.4:
+            m = 1 - Fraction(1, 10 ** rng.randint(2, 5))
+        else:
+            m = Fraction(rng.randint(1, 99), 100)
+        n = rng.choice([1, 2, 3, 4, 5, 7, 12, rng.randint(1, 50)])
+        Q = rng.choice([None, None, Fraction(rng.randint(20, 400), 10)])
+        damping = rng.choice(["exact", "paper"])
+        out.append((name, duty, m, n, Q, damping))
+    return out
+
+
+@pytest.mark.parametrize("case", _cases(20261122, 40), ids=lambda c: "-".join(map(str, c)))
+def test_certified_edges_agree_with_floquet_route(case):
+    """Random (system, duty, depth, order, Q, model): each certified edge holds a root of the
+    independent Floquet condition within 1e-25 relative."""
+    name, duty, m, n, Q, damping = case
+    sysv = system(name, duty=duty)
+    b = boundary(n, m, Q=Q, damping=damping, system=sysv, digits=30)
+    if not b.exists:
+        # no interval: the growth factor stays <= 1 at the centre of the frictionless interval
+        b0 = boundary(n, m, system=sysv, digits=20)
+        with mpmath.workdps(40):
+            mid = (b0.lower + b0.upper) / 2
+            mu = floquet_multipliers(m, mid, Q, damping, system=sysv, dps=40)
+            assert max(abs(x) for x in mu) <= 1 + mpmath.mpf(10) ** -30
+        return
+    for T in (b.lower, b.upper):
+        delta = abs(T) * mpmath.mpf(10) ** -25
+        ok, vals = _independent_root_near(T, m, Q, damping, sysv, n, delta)
+        assert ok, f"{case}: no Floquet root within {delta} of {T} ({vals})"
+
+
+@pytest.mark.parametrize(
+    "sysv",
+    [custom(("4/5", "6/5"), jump=1, duty="1/3"), custom(("3", "1/2"), jump="2", duty="1/4")],
+    ids=["custom-a", "custom-b"],
+)
+@pytest.mark.parametrize("n", [1, 2, 3, 6])
+def test_custom_edges_agree_with_floquet_route(sysv, n):
+    b = boundary(n, system=sysv, digits=30)
+    assert b.exists
+    for T in (b.lower, b.upper):
+        ok, vals = _independent_root_near(T, None, None, "exact", sysv, n, T * mpmath.mpf("1e-25"))
+        assert ok, vals
+
+
+@pytest.mark.parametrize("name", SYSTEMS)
+@pytest.mark.parametrize("duty", ["1/2", "1/3", "9/10"])
+@pytest.mark.parametrize("n", [1, 2, 3, 4])
+def test_small_depth_limit(name, duty, n):
+    """At m -> 0 the interval shrinks to the exact tuning T_n = n T0/2 (omega_i -> omega0) and the
+    centre moves by O(m).  The width is O(m), except where the n-th harmonic of the square wave
+    vanishes (``n D`` an integer: the even orders at D = 1/2, every third order at D = 1/3), where
+    it is O(m^2)."""
+    m = Fraction(1, 10**8)
+    b = boundary(n, m, system=system(name, duty=duty), digits=20)
+    width, mf = float(b.width), float(m)
+    if (n * Fraction(duty)).denominator == 1:
+        assert 0 < width < 10 * n * mf**2
+    else:
+        assert mf**1.5 < width < 10 * n * mf
+    assert abs(float((b.upper + b.lower) / 2) - n / 2) < 10 * n * mf
+
+
+def test_swapping_the_phases_gives_the_same_chart():
+    """custom (W1, W2, k, D) and (W2, W1, 1/k, 1 - D) describe one oscillator started in the
+    other phase: the Floquet route (which never reorders the phases) gives the same multipliers,
+    and the certified edges of either description hold its roots."""
+    a = custom(("4/5", "6/5"), jump="3/2", duty="1/3")
+    b = a.swapped()
+    assert b.omega_sq == (Fraction(6, 5), Fraction(4, 5)) and b.duty == Fraction(2, 3)
+    for T in ("0.37", "1.3", "2.71"):
+        with mpmath.workdps(40):
+            mu_a = floquet_multipliers(None, T, system=a, dps=40)
+            mu_b = floquet_multipliers(None, T, system=b, dps=40)
+            for x, y in zip(mu_a, mu_b, strict=True):
+                assert abs(x - y) < mpmath.mpf(10) ** -35
+    for n in (1, 2, 5):
+        ea, eb = boundary(n, system=a, digits=25), boundary(n, system=b, digits=25)
+        for T in (ea.lower, ea.upper, eb.lower, eb.upper):
+            ok, _ = _independent_root_near(T, None, None, "exact", b, n, T * mpmath.mpf("1e-22"))
+            assert ok
+
+
+@pytest.mark.parametrize("m", ["0.05", "0.3", "0.7", "0.99"])  # 0.8 is the 4/5 closing
+@pytest.mark.parametrize("n", [1, 2, 3, 4, 9])
+def test_meissner_classical_trace_condition(m, n):
+    """Meissner equation, D = 1/2: the certified edges satisfy the classical condition
+    2 cos a cos b - (w1/w2 + w2/w1) sin a sin b = 2 (-1)^n (a sign change across each edge)."""
+
+    def classical(T):
+        mm = mpmath.mpf(Fraction(m).numerator) / Fraction(m).denominator
+        w1 = 2 * mpmath.pi * mpmath.sqrt(1 - mm)  # omega0 = 2 pi: stiffness (1 - m) in phase 1
+        w2 = 2 * mpmath.pi * mpmath.sqrt(1 + mm)
+        a, b = w1 * T / 2, w2 * T / 2
+        tr = 2 * mpmath.cos(a) * mpmath.cos(b) - (w1 / w2 + w2 / w1) * mpmath.sin(a) * mpmath.sin(b)
+        return tr - 2 * (-1) ** n
+
+    res = boundary(n, m, system="meissner", digits=30)
+    with mpmath.workdps(50):
+        for T in (res.lower, res.upper):
+            d = T * mpmath.mpf("1e-26")
+            assert classical(T - d) * classical(T + d) < 0
+
+
+@pytest.mark.parametrize("m", ["1/1000000000000", "3/10", "999/1000"])
+@pytest.mark.parametrize("Q", [None, "7", "1/2"])
+def test_general_parameters_match_the_paper_fast_path(m, Q):
+    """The general route (generated from the description) and the paper's hand-checked
+    rearrangements give the same normal-form parameters to 30 digits, also where m is tiny."""
+    from verify.system_params import normal_values
+
+    B = backend("mpmath")
+    mq = Fraction(m)
+    Qf = None if Q is None else Fraction(Q)
+    with mpmath.workdps(30):
+        for damping in ("exact", "paper"):
+            if Qf is not None and damping == "exact" and 4 * Qf * Qf <= 1 + mq:
+                continue
+            fast = normal_params(mq, Qf, damping, B)
+            general = normal_values(PAPER, mq, Qf, damping, B)
+            for key in ("r", "r2", "u", "beta", "w", "g", "w0", "dinv", "bm"):
+                a, b = getattr(fast, key), general[key]
+                assert abs(a - b) <= mpmath.mpf(10) ** -28 * max(abs(a), abs(b), 10**-300), key
+
+
+def test_paper_system_unchanged():
+    """The paper's system through the new interface gives the same digits as before
+    (reference: `paramres boundary --order 3 --m 3/5 --digits 40`, the closing of eq. 19's
+    interval at T = T1 = sqrt(8/5), and --order 2 --m 1e-12 as printed in the README)."""
+    b = boundary(3, "3/5", digits=40, system="pendulum", duty="1/2")
+    assert mpmath.nstr(b.lower, 40) == "1.264911064067351732799557417773087413488"
+    b2 = boundary(2, "1e-12", digits=30)
+    assert mpmath.nstr(b2.delta_lower, 30) == "-7.49999999999999999999998722825e-25"
+
+
+# ---------------------------------------------------------------------------------------------
+# closings of any duty
+
+
+@pytest.mark.parametrize(
+    "sysv",
+    [system("pendulum", duty="1/3"), system("meissner", duty="3/5"), system("torsion")],
+    ids=lambda s: s.label,
+)
+def test_closings_are_multiples_of_identity(sysv):
+    """At every listed closing M = (-1)^n I to 1e-35 (Floquet route at the listed 40-digit T)."""
+    from analytic.closings import closings
+
+    result = closings(9, sysv)
+    assert result.proven and len(result) > 0
+    for c in result:
+        with mpmath.workdps(60):
+            M = monodromy_matrix(c.m, mpmath.mpf(c.T), system=sysv, dps=60)
+            target = (-1) ** c.order
+            err = max(abs(M[0, 0] - target), abs(M[1, 1] - target), abs(M[0, 1]), abs(M[1, 0]))
+            assert err < mpmath.mpf(10) ** -35, (c.order, c.m, err)
+
+
+@pytest.mark.parametrize(
+    "sysv", [system("pendulum", duty="1/3"), system("meissner", duty="3/5")], ids=lambda s: s.label
+)
+def test_no_unlisted_closings(sysv):
+    """A scan of the width over 300 depths per order finds a near-zero width only next to a
+    listed closing (the width is V-shaped there: the edges exchange)."""
+    from analytic.closings import closings
+
+    listed = {}
+    for c in closings(6, sysv):
+        listed.setdefault(c.order, []).append(float(c.m))
+    for n in range(1, 7):
+        ms = [Fraction(i, 301) for i in range(1, 301)]
+        widths = [float(boundary(n, m, system=sysv, digits=8).width) for m in ms]
+        for i in range(1, len(ms) - 1):
+            w = widths[i]
+            if w < widths[i - 1] and w < widths[i + 1] and w < 0.2 * max(widths):
+                near = [x for x in listed.get(n, []) if abs(x - float(ms[i])) < 2 / 301]
+                assert near, f"order {n}: unlisted minimum of the width at m = {float(ms[i])}"
+        for x in listed.get(n, []):  # and each listed closing is a minimum of the scan
+            j = min(range(len(ms)), key=lambda i: abs(float(ms[i]) - x))
+            assert widths[j] < 0.2 * max(widths)
+
+
+def test_custom_closings():
+    """A custom system closes only where its ratio fits: omega2/omega1 = 2 at D = 1/2 closes
+    orders 3, 6, 9, ... with T = a/(2 D sqrt(W1))."""
+    from analytic.closings import closings
+
+    result = closings(9, custom(("1", "4")))
+    assert result.proven
+    assert [(c.order, c.T) for c in result] == [(3, "1"), (6, "2"), (9, "3")]
+
+
+# ---------------------------------------------------------------------------------------------
+# certified multipliers
+
+
+@pytest.mark.parametrize(
+    "args",
+    [
+        ("1.45", "0.3", None, "exact", PAPER),
+        ("1.2", "0.3", None, "exact", PAPER),
+        ("1.2", "0.3", "0.3", "exact", system("meissner", duty="1/3")),
+        ("0.9", "0.6", "5", "paper", system("torsion", duty="0.7")),
+        ("2", None, None, "exact", custom(("4/5", "6/5"), jump=1, duty="1/3")),
+        ("0.501", "0.999999", "3", "exact", PAPER),
+    ],
+)
+def test_multipliers_digits_against_mpmath(args):
+    """Every printed digit of the certified multipliers agrees with the Floquet route at 60
+    digits (an independent evaluation of the same monodromy)."""
+    T, m, Q, damping, sysv = args
+    res = multipliers(T, m, Q=Q, damping=damping, digits=30, system=sysv)
+    with mpmath.workdps(60):
+        ref = floquet_multipliers(m, T, Q, damping, system=sysv, dps=60)
+        ref = sorted(ref, key=lambda z: (-abs(z), -mpmath.im(z)))
+        own = mpmath.mpf(10) ** -55  # the reference's own rounding at 60 digits
+        for (re_, im_), rad, z in zip(res.mu, res.radii, ref, strict=True):
+            assert abs(re_ - mpmath.re(z)) <= rad + own and abs(im_ - mpmath.im(z)) <= rad + own
+            assert rad <= mpmath.mpf(10) ** -29 * max(abs(z), 1)
+        big = max(abs(z) for z in ref)
+        assert abs(res.modulus - big) <= res.modulus_radius + own
+        assert abs(res.growth - mpmath.log(big)) <= res.growth_radius + own
+
+
+def test_multipliers_text_shows_only_proven_digits():
+    """Printed digits come from the proven balls: the imaginary part at T = 1.2, m = 0.3 is
+    0.9994643431384090841571... (mpmath at 60 digits, the Floquet route)."""
+    text = str(multipliers("1.2", "0.3", digits=30))
+    assert "0.999464343138409084157138596696 i" in text
+    assert "stable" in text
+
+
+@pytest.mark.parametrize(
+    "kwargs, word",
+    [
+        ({"system": "custom"}, "omega_sq"),
+        ({"system": "pendulum", "duty": "1"}, "0 < D < 1"),
+        ({"system": "pendulum", "duty": "0"}, "0 < D < 1"),
+        ({"system": "swing"}, "not one of"),
+        ({"system": custom(("1", "2")), "m": "0.3"}, "no depth"),
+    ],
+)
+def test_bad_system_input(kwargs, word):
+    kw = dict(kwargs)
+    m = kw.pop("m", "0.3" if kw.get("system") != "custom" else None)
+    if isinstance(kw.get("system"), str) and kw["system"] == "custom":
+        m = None
+    with pytest.raises(InputError, match=word):
+        boundary(1, m, **kw)
+
+
+def test_bad_custom_values():
+    for bad in [("0", "1"), ("1",), ("-1", "2"), ("a", "2")]:
+        with pytest.raises(InputError):
+            custom(bad)
+    with pytest.raises(InputError, match="k > 0"):
+        custom(("1", "2"), jump="-1")

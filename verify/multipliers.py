@@ -1,0 +1,261 @@
+"""Certified Floquet multipliers at one point ``(T, m)`` of any member of the family.
+
+The monodromy comes from the independent route (:func:`verify.floquet.monodromy_arb`: segment maps
+and switches in ball arithmetic, nothing from :mod:`analytic`'s determinants).  Its eigenvalues
+
+    mu = (tr M +- sqrt((M11 - M22)^2 + 4 M12 M21)) / 2,     mu1 mu2 = det M = exp(-2 gamma T)
+
+are enclosed in balls (complex balls where the discriminant may be negative); the working precision
+is doubled until every ball is as narrow as the digits asked for, or the discriminant's ball holds
+zero (a double multiplier, e.g. at a closing, where the square root halves the digits: the result
+then says so and prints only the digits its balls prove).  Reported: both multipliers, the largest
+modulus ``|mu|max`` and the growth rate per period ``ln |mu|max`` (positive inside an interval of
+instability).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from fractions import Fraction
+
+import mpmath
+from flint import acb, arb, ctx
+
+from analytic.system import System
+
+from .certify import bits_for_digits, to_mpf, upper_mpf
+from .floquet import monodromy_arb
+from .inputs import (
+    InputError,
+    as_damping,
+    as_depth,
+    as_digits,
+    as_period,
+    as_quality,
+    as_system,
+)
+from .params import exact_fraction
+from .solve import proven_text
+
+__all__ = ["Multipliers", "multipliers"]
+
+#: the largest working precision tried, in bits per asked digit
+_MAX_BITS_PER_DIGIT = 16
+
+
+@dataclass(frozen=True)
+class Multipliers:
+    """Both Floquet multipliers at one point, each digit proven.
+
+    ``mu`` holds two pairs ``(re, im)`` of mpmath numbers (``im = 0`` for real multipliers), larger
+    modulus first; ``radii`` their proven radii (per pair, a bound on both parts); ``modulus`` and
+    ``growth`` are ``|mu|max`` and ``ln |mu|max`` with radii ``modulus_radius``,
+    ``growth_radius``.  ``real`` says whether both are proven real, ``double`` whether the two
+    could not be separated (a double multiplier).
+    """
+
+    T: Fraction
+    m: Fraction | None
+    Q: Fraction | None
+    damping: str
+    digits: int
+    system: System
+    mu: tuple
+    radii: tuple
+    modulus: mpmath.mpf
+    modulus_radius: mpmath.mpf
+    growth: mpmath.mpf
+    growth_radius: mpmath.mpf
+    real: bool
+    double: bool
+    notes: tuple = field(default=())
+
+    @property
+    def unstable(self) -> bool | None:
+        """``True`` if ``|mu|max > 1`` is proven, ``False`` if ``<= 1`` is, else ``None``.
+
+        A proven complex pair is stable: ``|mu|^2 = det M = exp(-2 gamma T) <= 1``."""
+        if not self.real and not self.double:
+            return False
+        if self.modulus - self.modulus_radius > 1:
+            return True
+        if self.modulus + self.modulus_radius < 1 or (
+            self.modulus == 1 and self.modulus_radius == 0
+        ):
+            return False
+        return None
+
+    def _num(self, x, rad) -> str:
+        return proven_text(x, rad, self.digits)
+
+    def _mu_text(self, i: int) -> str:
+        re_, im_ = self.mu[i]
+        rad = self.radii[i]
+        if self.real:
+            return self._num(re_, rad)
+        sign = "-" if im_ < 0 else "+"
+        with mpmath.workdps(self.digits + 20):  # abs() rounds to the working precision
+            mag = abs(im_)
+        return f"{self._num(re_, rad)} {sign} {self._num(mag, rad)} i"
+
+    def as_json(self) -> dict:
+        def one(i):
+            re_, im_ = self.mu[i]
+            return {
+                "re": self._num(re_, self.radii[i]),
+                "im": self._num(im_, self.radii[i]),
+                "bound": mpmath.nstr(self.radii[i], 3),
+            }
+
+        return {
+            **self.system.as_json(),
+            "T": _decimal(self.T),
+            "m": None if self.m is None else _text(self.m),
+            "Q": None if self.Q is None else _text(self.Q),
+            "damping": self.damping if self.Q is not None else "none",
+            "digits": self.digits,
+            "multipliers": [one(0), one(1)],
+            "real": self.real,
+            "max_modulus": self._num(self.modulus, self.modulus_radius),
+            "max_modulus_bound": mpmath.nstr(self.modulus_radius, 3),
+            "growth_rate": self._num(self.growth, self.growth_radius),
+            "growth_rate_bound": mpmath.nstr(self.growth_radius, 3),
+            "unstable": self.unstable,
+            "certified": True,
+            "notes": list(self.notes),
+        }
+
+    def __str__(self) -> str:
+        fr = "no friction" if self.Q is None else f"Q = {_text(self.Q)} ({self.damping} model)"
+        where = f"m = {_text(self.m)}, " if self.m is not None else ""
+        head = f"{self.system.label}: T/T0 = {_decimal(self.T)}, {where}{fr}"
+        state = {True: "unstable (inside an interval)", False: "stable", None: "undecided"}[
+            self.unstable
+        ]
+        lines = [
+            head,
+            f"  mu1 = {self._mu_text(0)}",
+            f"  mu2 = {self._mu_text(1)}",
+            f"  |mu|max = {self._num(self.modulus, self.modulus_radius)}",
+            f"  growth per period ln|mu|max = {self._num(self.growth, self.growth_radius)}",
+            f"  [{state}; certified: every printed digit is proven (ball arithmetic)]",
+        ]
+        lines += [f"  note: {n}" for n in self.notes]
+        return "\n".join(lines)
+
+
+def _text(x: Fraction) -> str:
+    return str(x.numerator) if x.denominator == 1 else f"{x.numerator}/{x.denominator}"
+
+
+def _decimal(x: Fraction) -> str:
+    """An exact decimal when ``x`` has one of at most 60 places (as typed), else ``p/q``."""
+    for places in range(61):
+        scaled = x * 10**places
+        if scaled.denominator == 1:
+            if places == 0:
+                return str(scaled.numerator)
+            sign = "-" if scaled < 0 else ""
+            digits = str(abs(scaled.numerator)).rjust(places + 1, "0")
+            return f"{sign}{digits[:-places]}.{digits[-places:]}"
+    return _text(x)
+
+
+def _eigen(M) -> tuple:
+    """Both eigenvalues as ``acb`` balls (larger modulus first) and whether the discriminant is
+    proven positive, proven negative, or holds zero."""
+    a, b, c, d = M
+    tr = a + d
+    disc = (a - d) * (a - d) + 4 * b * c
+    if disc > 0:
+        root = disc.sqrt()
+        big = (tr + root) / 2 if tr >= 0 else (tr - root) / 2
+        if not (tr >= 0 or tr < 0):  # tr straddles 0: take both and order by modulus
+            p, q = (tr + root) / 2, (tr - root) / 2
+            big = p if abs(p) >= abs(q) else q
+        small = (a * d - b * c) / big
+        return acb(big), acb(small), "positive"
+    if disc < 0:
+        im = (-disc).sqrt() / 2
+        return acb(tr / 2, im), acb(tr / 2, -im), "negative"
+    root = acb(disc).sqrt()
+    return (acb(tr) + root) / 2, (acb(tr) - root) / 2, "zero"
+
+
+def multipliers(
+    T, m=None, *, Q=None, damping="exact", digits=30, system="pendulum", duty="1/2"
+) -> Multipliers:
+    """Both Floquet multipliers at period ``T`` (units of ``T0``) and depth ``m`` (left out for a
+    custom system), with friction ``Q`` in the ``exact`` or ``paper`` model, to ``digits``
+    proven digits; ``system``/``duty`` as in :func:`verify.boundary`."""
+    sysv = as_system(system, duty)
+    if sysv.uses_depth:
+        if m is None:
+            raise InputError(f"system {sysv.name} needs a depth m (0 < m < 1)")
+        mm = exact_fraction(as_depth(m))
+    else:
+        if m is not None:
+            raise InputError(f"a custom system has no depth: leave m out (got m = {m!r})")
+        mm = None
+    TT = exact_fraction(as_period(T))
+    QQ = as_quality(Q)
+    QQ = None if QQ is None else exact_fraction(QQ)
+    model = as_damping(damping)
+    d = as_digits(digits)
+    goal = arb(10) ** (-(d + 1))
+    bits = bits_for_digits(d + 4)
+    cap = max(bits * _MAX_BITS_PER_DIGIT, 4096)
+    while True:
+        with ctx.workprec(bits):
+            M = monodromy_arb(mm, TT, QQ, model, sysv)
+            mu1, mu2, kind = _eigen(M)
+            mods = [abs(mu1), abs(mu2)]
+            big = mods[0] if mods[0] >= mods[1] else mods[1]
+            if not (mods[0] >= mods[1] or mods[0] < mods[1]):  # overlapping: the union
+                big = arb.union(mods[0], mods[1]) if hasattr(arb, "union") else mods[0]
+            growth = big.log() if big > 0 else None
+            narrow = all(
+                _rel_ok(x, goal) for x in (mu1.real, mu1.imag, mu2.real, mu2.imag, big)
+            ) and (growth is not None and _abs_ok(growth, goal * (abs(growth) + 1)))
+            if narrow or bits >= cap or kind == "zero" and bits >= 4 * bits_for_digits(d + 4):
+                break
+            bits *= 2
+    if growth is None:  # pragma: no cover - |mu|max = sqrt(det M) > 0 always
+        raise InputError("the multipliers could not be separated from zero")
+    notes = []
+    if kind == "zero":
+        notes.append(
+            "the two multipliers may coincide here (a double multiplier, e.g. on a closing): "
+            "their enclosures overlap and only the digits their balls prove are printed"
+        )
+    with ctx.workprec(bits), mpmath.workdps(d + 10):
+        pairs = [(to_mpf(z.real), to_mpf(z.imag)) for z in (mu1, mu2)]
+        radii = [upper_mpf(arb(max(z.real.rad(), z.imag.rad()))) for z in (mu1, mu2)]
+        real = kind == "positive"
+        if real:
+            pairs = [(re_, mpmath.mpf(0)) for re_, _ in pairs]
+        return Multipliers(
+            T=TT,
+            m=mm,
+            Q=QQ,
+            damping=model,
+            digits=d,
+            system=sysv,
+            mu=tuple(pairs),
+            radii=tuple(radii),
+            modulus=to_mpf(big),
+            modulus_radius=upper_mpf(arb(big.rad())),
+            growth=to_mpf(growth),
+            growth_radius=upper_mpf(arb(growth.rad())),
+            real=real,
+            double=kind == "zero",
+            notes=tuple(notes),
+        )
+
+
+def _rel_ok(x: arb, goal: arb) -> bool:
+    return bool(x.rad() <= goal * abs(x).upper()) or bool(x.rad() <= goal * goal)
+
+
+def _abs_ok(x: arb, bound: arb) -> bool:
+    return bool(x.rad() <= bound)
