@@ -240,7 +240,7 @@ def _check_order(order):
 
 
 def edge_series(
-    order, terms: int = 4, *, units: str = "T0", Q=None, damping: str = "exact"
+    order, terms: int = 4, *, units: str = "T0", Q=None, damping: str = "exact", system=None
 ) -> EdgeSeries:
     """The two edges of the interval of order ``order`` through ``m**terms``.
 
@@ -249,6 +249,9 @@ def edge_series(
     frictionless edges.  With ``Q`` (and ``damping`` ``"paper"`` or ``"exact"``): the edges in the
     distinguished scaling of :mod:`analytic.thresholds` (``1/Q`` of order ``m`` for odd orders,
     ``m**2`` for even ones), as expressions in ``m`` valid above the threshold.
+
+    ``system``: another member of the family or duty (:mod:`analytic.system`): frictionless series
+    for integer orders (:mod:`analytic.family_series`).
     """
     from verify.inputs import InputError, as_damping, as_quality
 
@@ -257,6 +260,21 @@ def edge_series(
     if units not in ("T0", "Tav"):
         raise InputError(f"units {units!r} is not one of: T0, Tav")
     Qv = as_quality(Q)
+    if system is not None and not system.is_paper:
+        if not system.uses_depth:
+            raise InputError("a custom system has no depth: there is no series in m")
+        if Qv is not None:
+            raise InputError(
+                f"series with friction are derived for the paper's system only, not {system.label}"
+            )
+        if isinstance(order, str):
+            raise InputError(
+                f"closed forms in n (--order odd/even) are for the paper's system; give an integer "
+                f"order for {system.label}"
+            )
+        from .family_series import family_edge_series
+
+        return family_edge_series(order, terms, units, system)
     if Qv is not None:
         from .thresholds import near_threshold_edges
 

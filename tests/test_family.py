@@ -314,3 +314,49 @@ def test_bad_custom_values():
             custom(bad)
     with pytest.raises(InputError, match="k > 0"):
         custom(("1", "2"), jump="-1")
+
+
+# ---------------------------------------------------------------------------------------------
+# series in m for any duty
+
+
+@pytest.mark.parametrize("n", [1, 2, 3])
+def test_family_series_reproduce_the_paper_series(n):
+    """The family's series solver (fixed-point steps on truncated series, parameters from the
+    family's definitions), applied to the paper's system, gives the paper's series
+    (:func:`analytic.expansions.edge_series`, a different derivation: the ring of Laurent
+    polynomials and Newton steps)."""
+    import sympy as sp
+
+    from analytic.expansions import edge_series
+    from analytic.family_series import family_edge_series
+
+    K = 5
+    ours = family_edge_series(n, K, "T0", PAPER)
+    ref = edge_series(n, K)
+    for edge in ("lower", "upper"):
+        assert sp.simplify(sp.expand(ours.in_T0[edge] - ref.in_T0[edge])) == 0
+
+
+@pytest.mark.parametrize(
+    "name, duty, n", [("meissner", "1/3", 2), ("torsion", "1/2", 1), ("pendulum", "3/4", 3)]
+)
+@pytest.mark.parametrize("K", [2, 4])
+def test_family_series_error_falls_like_m_to_the_K_plus_1(name, duty, n, K):
+    """The truncation error against the certified edges falls like m^(K+1) (log-log slope between
+    m = 1e-3 and 1e-4 at least K + 1 - 0.15)."""
+    import sympy as sp
+
+    from analytic.expansions import edge_series
+    from analytic.model import S
+
+    sysv = system(name, duty=duty)
+    es = edge_series(n, K, system=sysv)
+    errs = []
+    for m in (Fraction(1, 1000), Fraction(1, 10000)):
+        b = boundary(n, m, system=sysv, digits=40)
+        with mpmath.workdps(40):
+            val = sp.N(es.lower.subs(S.m, sp.Rational(m.numerator, m.denominator)), 40)
+            errs.append(abs(mpmath.mpf(str(val)) - b.lower))
+    slope = mpmath.log10(errs[0] / errs[1])
+    assert slope > K + 1 - 0.15, (errs, slope)

@@ -17,7 +17,7 @@ import sympy as sp
 from reports.output import dump_json
 from verify.inputs import InputError, as_damping, as_quality
 
-from ._arguments import add_friction, add_json
+from ._arguments import add_friction, add_json, add_system, system_of
 
 __all__ = ["register", "run", "render_text", "parse_terms"]
 
@@ -46,6 +46,7 @@ def register(subparsers) -> None:
         "--terms", default="4", metavar="K", help="highest power of m kept, 1 to 12 (default 4)"
     )
     add_friction(p)
+    add_system(p)
     add_json(p)
     p.set_defaults(func=run)
 
@@ -76,7 +77,8 @@ def run(args) -> int:
     terms = parse_terms(args.terms)
     damping = as_damping(args.damping)
     Q = as_quality(args.Q)
-    es = edge_series(order, terms, Q=Q, damping=damping)
+    sysv = system_of(args)
+    es = edge_series(order, terms, Q=Q, damping=damping, system=sysv)
     payload = es.as_json()
     payload["lower"] = _s(es.in_T0["lower"])
     payload["upper"] = _s(es.in_T0["upper"])
@@ -125,8 +127,13 @@ def _threshold_payload(order, terms: int, Q, damping: str) -> dict:
 def render_text(es, payload: dict) -> str:
     lines = []
     what = f"order {es.order}" if isinstance(es.order, int) else f"every {es.order} order n"
+    where = (
+        ""
+        if getattr(es, "system", None) is None or es.system.is_paper
+        else (f" of the {es.system.label}")
+    )
     if es.Q is None:
-        lines.append(f"Edges of the interval of {what}, no friction, through m^{es.terms}:")
+        lines.append(f"Edges of the interval of {what}{where}, no friction, through m^{es.terms}:")
     else:
         lines.append(
             f"Edges of the interval of {what} with friction Q = {es.Q} ({es.damping} model), "
@@ -146,7 +153,8 @@ def render_text(es, payload: dict) -> str:
     lines.append("  in units of T0:")
     lines.append(f"    T-/T0   = {src['in_T0']['lower']}{O}")
     lines.append(f"    T+/T0   = {src['in_T0']['upper']}{O}")
-    lines.append("  in units of T_av:")
+    unit = "T_av" if not where else "2 pi/omega_mean (exact tuning n/2)"
+    lines.append(f"  in units of {unit}:")
     lines.append(f"    T-/T_av = {src['in_Tav']['lower']}{O}")
     lines.append(f"    T+/T_av = {src['in_Tav']['upper']}{O}")
     if es.lower_factor is not None:
