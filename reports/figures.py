@@ -205,6 +205,35 @@ def intervals_figure(
     return fig
 
 
+def family_figure(
+    m: np.ndarray, panels: Sequence[tuple[str, np.ndarray]], orders: Sequence[int]
+) -> Figure:
+    """Members of the family side by side: one panel per ``(name, bounds)``, ``bounds`` of shape
+    ``(len(orders), 2, len(m))``, the same axes in each."""
+    with style():
+        fig, axes = new_figure(height=3.2, ncols=len(panels), sharey=True)
+        for ax, (name, bounds) in zip(axes, panels, strict=True):
+            for k, n in enumerate(orders):
+                col = ORDER_COLOURS[k % len(ORDER_COLOURS)]
+                draw_regions(ax, m, bounds[k : k + 1], color=col, alpha=0.35, edge=col)
+                ax.annotate(
+                    f"$n={n}$",
+                    (n / 2, 1.0),
+                    ha="center",
+                    va="bottom",
+                    color=col,
+                    fontsize=7,
+                    xycoords=("data", "axes fraction"),
+                )
+            ax.set_xlim(0, max(orders) / 2 + 0.3)
+            ax.set_ylim(0, float(np.nanmax(m)))
+            ax.set_xlabel(r"$T/T_0$")
+            ax.text(0.03, 0.97, name, transform=ax.transAxes, va="top", fontsize=8)
+        axes[0].set_ylabel(r"modulation depth $m$")
+        fig.tight_layout(pad=0.4)
+    return fig
+
+
 def friction_figure(
     m: np.ndarray,
     panels: Sequence[tuple[str, Mapping[str, np.ndarray]]],

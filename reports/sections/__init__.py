@@ -26,6 +26,7 @@ SECTIONS = (
     "catalogue",
     "expansions",
     "closings",
+    "family",
     "diagrams",
     "accuracy",
     "performance",
