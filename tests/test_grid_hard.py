@@ -154,3 +154,41 @@ def test_exact_depths_near_one(Q, damping):
     ms = [1 - Fraction(f"{10.0**-k:.6e}") for k in ks]
     ms += [1 - Fraction(1, 10**17), 1 - Fraction(1, 10**20)]
     _assert_grid([1, 2, 3, 6], ms, Q, damping)
+
+
+# ---------------------------------------------------------------------------------------------
+# thresholds and closing gaps: the edges meet in a double root of the indicator
+
+
+def _threshold(n, Q, damping, lo, hi):
+    """The depth where the interval appears or vanishes between the doubles ``lo`` and ``hi``
+    (the certified route's existence differs there), by bisection to adjacent doubles."""
+    has_lo = _certified(n, lo, Q, damping).exists
+    assert _certified(n, hi, Q, damping).exists != has_lo
+    while np.nextafter(lo, hi) != hi:
+        mid = 0.5 * (lo + hi)
+        if _certified(n, mid, Q, damping).exists == has_lo:
+            lo = mid
+        else:
+            hi = mid
+    return lo
+
+
+@pytest.mark.parametrize(
+    "n, Q, damping, lo, hi",
+    [
+        (1, 7, "paper", 0.05, 0.1),  # threshold m_min ~ pi/(6Q)
+        (2, 7, "exact", 0.2, 0.4),  # threshold ~ sqrt(2/(3Q))
+        (3, 7, "exact", 0.4, 0.55),  # the island of Fig. 8 vanishes near 0.48
+        (1, Fraction(2, 5), "exact", 0.6, 0.8),  # over-damped halves: the trace form
+    ],
+)
+def test_next_to_a_threshold(n, Q, damping, lo, hi):
+    """Within a relative 1e-14 .. 1e-2 of a threshold the edges are a near-double root of the
+    indicator, and double precision cannot place them to 1e-14 (the double path lost up to 1e-10
+    there); such entries are escalated to the certified route, and NaN is right on the other
+    side."""
+    m0 = _threshold(n, Q, damping, lo, hi)
+    ks = np.arange(2, 15, 2.0)
+    ms = np.concatenate([m0 * (1 + 10.0**-ks), m0 * (1 - 10.0**-ks), [m0, np.nextafter(m0, 1)]])
+    _assert_grid([n], np.sort(ms), Q, damping)

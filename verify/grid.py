@@ -36,6 +36,7 @@ from .derived import (
     indicator,
     near_one_forms,
     order1_forms,
+    term_sizes,
     trace_indicator,
     trace_window,
 )
@@ -282,7 +283,9 @@ def trace_window_ends(n: int, regimes, T, *, bits: int = 60):
 
 
 def damped_trace(n: int, regimes, T, window):
-    """Friction, trace form, one order and depth: ``dict(a, b, top, dtop, lo, hi)`` in ``zeta``."""
+    """Friction, trace form, one order and depth: ``dict(a, b, top, dtop, lo, hi, doubt)`` in
+    ``zeta``; ``doubt``: the sign of ``D`` at the maximiser is within rounding, or an edge's
+    estimated relative error exceeds :data:`DOUBT` (as :func:`_normal_doubt`)."""
     sigma = -1.0 if n % 2 else 1.0
     form = trace_indicator(*regimes)
     d01 = form.compiled("math", (0, 1))
@@ -305,7 +308,13 @@ def damped_trace(n: int, regimes, T, window):
     else:
         top = float(zs[k])
     dtop = d01(top, *args)[0]
-    out.update(top=top, dtop=dtop)
+    sizes = term_sizes(form).compiled("math", (0, 1))
+
+    def noise(z):  # as :func:`_noise`, the angles of size zeta
+        total, slope = sizes(z, *args)
+        return NOISE_ULPS * 2.0**-53 * (abs(total) + z * abs(slope))
+
+    out.update(top=top, dtop=dtop, doubt=abs(dtop) <= noise(top))
     if dtop <= 0:
         return out
 
@@ -314,6 +323,10 @@ def damped_trace(n: int, regimes, T, window):
 
     out["lo"] = float(_bisect_newton(f01, za, top, 0.5 * (za + top), True))
     out["hi"] = float(_bisect_newton(f01, top, zb, 0.5 * (top + zb), False))
+    for z in (out["lo"], out["hi"]):
+        slope = abs(d01(z, *args)[1])
+        if not noise(z) <= DOUBT * slope * z:
+            out["doubt"] = True
     return out
 
 
@@ -488,7 +501,7 @@ def _is_exactish(m) -> bool:
     return False
 
 
-def _order1_lower(P, cols, x_hi, eps=None):
+def _order1_lower(P, cols, x_hi, eps=None, *, doubt=False):
     """The order-1 edge whose ``x = pi/2 + theta`` goes to 0 as ``m -> 1`` (``T -> 0``), solved
     in ``x`` itself on the forms of :func:`verify.derived.order1_forms` for the columns ``cols``:
     there ``theta`` is within rounding of ``-pi/2`` and carries no digit of ``x``.
@@ -498,7 +511,8 @@ def _order1_lower(P, cols, x_hi, eps=None):
     ``D(x)``, with ``D(0) = -u < 0`` and ``x_hi = pi/2 + top`` (``D(top) > 0``; ``D <= D0 < 0``
     left of the undamped root, so its one zero in ``(0, x_hi)`` is the lower edge).  Safeguarded
     Newton on that bracket, started where the Taylor polynomial ``F(0) + F''(0) x^2/2`` of the form
-    vanishes (both forms are even in ``x``; the start is right to a relative ``O(x^2)``)."""
+    vanishes (both forms are even in ``x``; the start is right to a relative ``O(x^2)``).
+    ``doubt=True`` also returns the mask of roots whose error :func:`_root_doubt` cannot bound."""
     edge, ind = order1_forms()
     bm = P.bm[cols]
     if eps is not None:
@@ -513,8 +527,15 @@ def _order1_lower(P, cols, x_hi, eps=None):
     with np.errstate(invalid="ignore", divide="ignore"):
         x0 = np.sqrt(-2 * np.asarray(f0, float) / np.asarray(f2, float))
     x0 = np.where(np.isfinite(x0) & (x0 > 0) & (x0 < x_hi), x0, 0.5 * x_hi)
-    return _bisect_newton(lambda x: f01(x, *args), 0 * x_hi, x_hi, x0, eps is None)
+    x = _bisect_newton(lambda x: f01(x, *args), 0 * x_hi, x_hi, x0, eps is None)
+    if doubt:
+        return x, _root_doubt(form, x, args, x)
+    return x
 
+
+#: the order-1 lower edge is solved in ``x`` (:func:`_order1_lower`) where ``x`` is below this (an
+#: absolute error of ``theta`` is a relative error of ``x`` amplified by ``1/x``)
+ORDER1_X = 1.0
 
 #: below this ``1 - beta`` (``m > 0.995``) the grid polishes with the forms for ``m -> 1``
 NEAR_ONE = 0.2
@@ -561,7 +582,7 @@ def _fill_normal(out, orders, ms, P, damped: bool) -> np.ndarray:
         T1 = (n / 2.0 + t1 / math.pi) / P.w
         T2 = (n / 2.0 + t2 / math.pi) / P.w
         for i in np.nonzero(orders_arr == 1)[0]:  # the eps = +1 root is the one with x -> 0
-            cols = np.nonzero((_HALF_PI + t1[i] < 0.5) | (P.bm < NEAR_ONE))[0]
+            cols = np.nonzero((_HALF_PI + t1[i] < ORDER1_X) | (P.bm < NEAR_ONE))[0]
             if cols.size:
                 T1[i, cols] = _order1_lower(P, cols, math.pi, 1) / (math.pi * P.w[cols])
         out[:, 0, :] = np.minimum(T1, T2)
@@ -579,12 +600,66 @@ def _fill_normal(out, orders, ms, P, damped: bool) -> np.ndarray:
         base = n / 2.0
         out[rows, 0, :] = (base + lo / math.pi) / P.w
         out[rows, 1, :] = (base + hi / math.pi) / P.w
+        top_doubt, lo_doubt, hi_doubt = _normal_doubt(n, P, res, lo, hi)
         for k, i in enumerate(rows):
             if orders_arr[i] != 1:
                 continue
-            near = (_HALF_PI + lo[k] < 0.5) | (P.bm < NEAR_ONE)
+            near = (_HALF_PI + lo[k] < ORDER1_X) | (P.bm < NEAR_ONE)
             cols = np.nonzero(np.isfinite(lo[k]) & near)[0]
             if cols.size:
-                x = _order1_lower(P, cols, _HALF_PI + res["top"][k, cols])
+                x, unsure = _order1_lower(P, cols, _HALF_PI + res["top"][k, cols], doubt=True)
                 out[i, 0, cols] = x / (math.pi * P.w[cols])
+                lo_doubt[k, cols] = unsure
+        doubt[rows] = top_doubt | lo_doubt | hi_doubt
     return doubt
+
+
+#: rounding of a form's value, in units of 2^-53 times its term sizes (:func:`_noise`)
+NOISE_ULPS = 4
+#: an edge is escalated when its estimated relative error exceeds this (a quarter of the bound)
+DOUBT = ERROR_BOUND / 4
+
+
+def _noise(form, v, args, scale):
+    """A bound on the rounding error of ``form`` at ``v``: :data:`NOISE_ULPS` ulp of its term
+    sizes, the angles (of size ``scale``) with errors of a few ulp
+    (:func:`verify.derived.term_sizes`)."""
+    sizes = term_sizes(form).compiled("numpy", (0, 1))
+    total, slope = sizes(v, *args)
+    return NOISE_ULPS * 2.0**-53 * (np.abs(total) + np.abs(scale) * np.abs(slope))
+
+
+def _root_doubt(form, root, args, scale):
+    """Whether a root ``root`` of ``form`` may be off by more than :data:`DOUBT` relative to
+    ``scale`` (where ``T`` is proportional to ``scale``): the rounding error of the form over its
+    slope at the root."""
+    with np.errstate(invalid="ignore", divide="ignore"):
+        slope = np.abs(np.asarray(form.compiled("numpy", 1)(root, *args), float))
+        err = _noise(form, root, args, scale) / (slope * np.abs(scale))
+        return np.isfinite(root) & ~(err <= DOUBT)
+
+
+def _normal_doubt(n, P, res, lo, hi):
+    """Masks of the entries of the normal-form friction path that must be escalated: ``(top,
+    lower, upper)``: the sign of ``D`` at its maximiser within rounding (existence undecided),
+    and each edge whose estimated error exceeds :data:`DOUBT` (near a threshold or a closing gap,
+    where the edges are a near-double root)."""
+    parity = _parity(int(n.flat[0]))
+    c = n * _HALF_PI
+    std = (c, P.r2, P.u, P.beta, P.g)
+    nearf = near_one_forms()[2]
+    nargs = (c, P.u, P.bm, P.g)
+    polished = np.broadcast_to(P.bm < NEAR_ONE, lo.shape)
+    form = indicator(parity)
+    with np.errstate(invalid="ignore", over="ignore"):
+        top = res["top"]
+        undecided = np.abs(res["dtop"]) <= _noise(form, top, std, c + top)
+        edges = [
+            np.where(
+                polished,
+                _root_doubt(nearf, theta, nargs, c + theta),
+                _root_doubt(form, theta, std, c + theta),
+            )
+            for theta in (lo, hi)
+        ]
+    return undecided, edges[0], edges[1]
