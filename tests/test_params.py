@@ -151,3 +151,38 @@ def test_numpy_backend_matches_arb():
             for k in ("r2", "u", "beta", "w", "g"):
                 want = float(getattr(ref, k).mid())
                 assert abs(getattr(p, k)[i] - want) <= 8 * 2.0**-52 * abs(want), (k, m, damping)
+
+
+@pytest.mark.parametrize("damping, Q", [("exact", None), ("paper", 7.0), ("exact", 7.0)])
+def test_one_minus_m_given_separately(damping, Q):
+    """``om = 1 - m`` passed on its own (the grid near ``m = 1``, where ``1 - float(m)`` has lost
+    the digits of ``1 - m``): the numpy arrays at ``float(m)`` with ``om = float(1 - m)`` equal
+    the definitions at the exact depth (:func:`analytic.normal_form.parameters` by mpmath at 150
+    digits) to a relative 8 ulp, down to ``1 - m = 1e-30``; and in ball arithmetic the separate
+    ``om`` gives the same balls as the exact rational depth."""
+    defs = _definitions(Damping.NONE if Q is None else Damping(damping))
+    exact = [1 - Fraction(1, 10**k) for k in (1, 3, 5, 8, 11, 13, 15, 16, 17, 20, 30)]
+    exact += [1 - Fraction(3, 7) * Fraction(1, 10**k) for k in (9, 14)]
+    ms = np.array([float(m) for m in exact])
+    om = np.array([float(1 - m) for m in exact])
+    p = normal_params(ms, Q, damping, backend("numpy"), om=om)
+    for i, m in enumerate(exact):
+        with mpmath.workdps(150):
+            mm = mpmath.mpf(m.numerator) / m.denominator
+            QQ = mpmath.mpf(1) if Q is None else mpmath.mpf(Q)
+            ref = {k: defs[k if k != "r2" else "r^2"](mm, QQ) for k in ("r2", "beta", "w", "g")}
+            ref["u"] = 1 - ref["r2"]
+            ref["bm"] = 1 - ref["beta"]
+        for k in ("r2", "u", "beta", "w", "bm") + (("g",) if Q is not None else ()):
+            want = float(ref[k])
+            got = getattr(p, k)[i]
+            assert abs(got - want) <= 8 * 2.0**-52 * abs(want), (k, m, damping, got, want)
+        QF = None if Q is None else Fraction(Q)
+        with ctx.workprec(200):
+            a = normal_params(m, QF, damping, backend("arb"))
+            B = backend("arb")
+            Qb = None if QF is None else B.num(QF)
+            b = normal_params(B.num(m), Qb, damping, B, om=B.num(1 - m))
+            for k in ("r2", "u", "beta", "w", "bm", "g"):
+                x, y = getattr(a, k), getattr(b, k)
+                assert x.overlaps(y) and y.rad() <= abs(y.mid()) * 2.0**-190 + 2.0**-400, (k, m)

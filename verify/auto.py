@@ -603,7 +603,7 @@ def boundaries_tol(orders, ms, *, Q=None, damping="exact", tol, progress=None) -
     if QQ is None and DOUBLE_ERROR <= float(tol) / 4:
         from .grid import boundary_grid
 
-        grid = boundary_grid(orders, np.array([float(m) for m in ms]))
+        grid = boundary_grid(orders, ms)  # the exact depths
     tasks = [(i, j) for i in range(len(orders)) for j in range(len(ms))]
     it = progress(tasks) if progress is not None else tasks
     out = []

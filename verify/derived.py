@@ -67,6 +67,7 @@ __all__ = [
     "trace_indicator",
     "half_period_forms",
     "fixed_point_map",
+    "term_sizes",
 ]
 
 
@@ -225,6 +226,28 @@ class Form:
                 fn = lambda *a: tuple(inner(*a))  # noqa: E731
             self._cache[key] = fn
         return fn
+
+
+def term_sizes(form: Form) -> Form:
+    """The sizes of the terms of ``form``, for bounding its rounding error: ``(sum |t_i|, sum
+    |dt_i/dv|)`` over the additive terms ``t_i`` of its expanded expression, ``v`` its first
+    argument, as a form of the same arguments (kept on ``form``; built once).
+
+    Evaluating ``sum t_i`` in floating point with arguments correct to a few ulp errs by at most
+    a few ulp of the first sum, plus what the errors of the angles cost: an angle ``a v + b`` with
+    a relative error ``e`` moves by about ``e |a v + b|``, which changes ``t_i`` by about ``e |v +
+    b/a| |dt_i/dv|`` -- bounded through the second sum by the caller's scale of the angles."""
+    sizes = form._cache.get("term_sizes")
+    if sizes is None:
+        import sympy as sp
+
+        var = form.args[0]
+        terms = sp.Add.make_args(sp.expand(form.exprs[0]))
+        total = sp.Add(*(sp.Abs(t) for t in terms))
+        slope = sp.Add(*(sp.Abs(sp.diff(t, var)) for t in terms))
+        sizes = Form(f"term sizes of {form.title}", form.args, (total, slope))
+        form._cache["term_sizes"] = sizes
+    return sizes
 
 
 def _derivatives(expr, var, count: int) -> tuple:

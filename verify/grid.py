@@ -27,6 +27,7 @@ import math
 from dataclasses import fields
 from fractions import Fraction
 
+import mpmath
 import numpy as np
 
 from .derived import (
@@ -35,14 +36,16 @@ from .derived import (
     indicator,
     near_one_forms,
     order1_forms,
+    term_sizes,
     trace_indicator,
     trace_window,
 )
-from .inputs import as_damping, as_depth, as_orders, as_quality
-from .params import NEAR_CRITICAL, NormalParams, normal_params, trace_params
+from .inputs import InputError, as_damping, as_depth, as_orders, as_quality
+from .params import NEAR_CRITICAL, NormalParams, exact_fraction, normal_params, trace_params
 
 __all__ = [
     "boundary_grid",
+    "ERROR_BOUND",
     "normal_edges",
     "undamped_roots",
     "damped_normal",
@@ -280,7 +283,9 @@ def trace_window_ends(n: int, regimes, T, *, bits: int = 60):
 
 
 def damped_trace(n: int, regimes, T, window):
-    """Friction, trace form, one order and depth: ``dict(a, b, top, dtop, lo, hi)`` in ``zeta``."""
+    """Friction, trace form, one order and depth: ``dict(a, b, top, dtop, lo, hi, doubt)`` in
+    ``zeta``; ``doubt``: the sign of ``D`` at the maximiser is within rounding, or an edge's
+    estimated relative error exceeds :data:`DOUBT` (as :func:`_normal_doubt`)."""
     sigma = -1.0 if n % 2 else 1.0
     form = trace_indicator(*regimes)
     d01 = form.compiled("math", (0, 1))
@@ -303,7 +308,13 @@ def damped_trace(n: int, regimes, T, window):
     else:
         top = float(zs[k])
     dtop = d01(top, *args)[0]
-    out.update(top=top, dtop=dtop)
+    sizes = term_sizes(form).compiled("math", (0, 1))
+
+    def noise(z):  # as :func:`_noise`, the angles of size zeta
+        total, slope = sizes(z, *args)
+        return NOISE_ULPS * 2.0**-53 * (abs(total) + z * abs(slope))
+
+    out.update(top=top, dtop=dtop, doubt=abs(dtop) <= noise(top))
     if dtop <= 0:
         return out
 
@@ -312,6 +323,10 @@ def damped_trace(n: int, regimes, T, window):
 
     out["lo"] = float(_bisect_newton(f01, za, top, 0.5 * (za + top), True))
     out["hi"] = float(_bisect_newton(f01, top, zb, 0.5 * (top + zb), False))
+    for z in (out["lo"], out["hi"]):
+        slope = abs(d01(z, *args)[1])
+        if not noise(z) <= DOUBT * slope * z:
+            out["doubt"] = True
     return out
 
 
@@ -319,11 +334,48 @@ def damped_trace(n: int, regimes, T, window):
 # the grid
 
 
-def _halves_float(m: np.ndarray, Q: Fraction):
-    """Regime names per depth for the exact model (exact rational decision)."""
-    u1 = np.array([4 * Q * Q - 1 - Fraction(float(x)) for x in m], dtype=object)
-    u2 = np.array([4 * Q * Q - 1 + Fraction(float(x)) for x in m], dtype=object)
-    return [regime_of(a) for a in u1], [regime_of(b) for b in u2]
+def _halves_exact(m, Q: Fraction):
+    """Regime names per depth for the exact model (exact rational decision on the exact depths)."""
+    return [regime_of(4 * Q * Q - 1 - x) for x in m], [regime_of(4 * Q * Q - 1 + x) for x in m]
+
+
+#: the relative error bound of every finite entry of :func:`boundary_grid`
+ERROR_BOUND = 1e-14
+#: the double path serves depths with ``1 - m`` at least this (the last double below 1 has
+#: ``1 - m = 2**-53``) and ``m`` at least the smallest normal double; exact depths outside are
+#: computed by the certified route
+OM_MIN = 2.0**-53
+M_MIN = 2.0**-1022
+
+
+class _Depths:
+    """The depths of a grid: ``m`` and ``om = 1 - m`` as float64 arrays, ``om`` computed from the
+    exact depth (``1 - float(m)`` loses every digit of ``1 - m`` that ``float(m)`` rounded off,
+    and near ``m = 1`` the edges depend on ``1 - m`` to the last digit); ``exact(j)`` is the exact
+    depth as a Fraction (the binary value for float input); ``double`` marks the depths the double
+    path serves (:data:`OM_MIN`, :data:`M_MIN`)."""
+
+    def __init__(self, m):
+        arr = np.atleast_1d(np.asarray(m, dtype=object if _is_exactish(m) else float))
+        if arr.dtype == object:
+            self._exact = [exact_fraction(as_depth(x)) for x in arr.ravel()]
+            self.m = np.array([float(x) for x in self._exact], float)
+            self.om = np.array([float(1 - x) for x in self._exact], float)
+        else:
+            self.m = np.ascontiguousarray(arr, float).ravel()
+            bad = ~((self.m > 0) & (self.m < 1))
+            if bad.any():
+                as_depth(float(self.m[np.argmax(bad)]))  # raises the standard error
+            self._exact = None
+            self.om = 1 - self.m  # exact for m >= 1/2 (Sterbenz); relative 2^-53 below
+        self.size = self.m.size
+        self.double = (self.om >= OM_MIN) & (self.m >= M_MIN)
+
+    def exact(self, j: int) -> Fraction:
+        return Fraction(float(self.m[j])) if self._exact is None else self._exact[j]
+
+    def exact_all(self, idx) -> list:
+        return [self.exact(int(j)) for j in idx]
 
 
 def boundary_grid(orders, m, *, Q=None, damping="exact") -> np.ndarray:
@@ -331,42 +383,89 @@ def boundary_grid(orders, m, *, Q=None, damping="exact") -> np.ndarray:
 
     Returns a float64 array of shape ``(len(orders), 2, len(m))``: ``[i, 0, j]`` the lower and
     ``[i, 1, j]`` the upper edge of order ``orders[i]`` at depth ``m[j]``; NaN where the interval
-    does not exist.  ``orders`` keeps the caller's order (duplicates allowed); ``m`` is any array
-    of depths in ``(0, 1)`` (floats, or exact values converted to the nearest float).  Relative
-    error at most 1e-14 against the certified :func:`verify.solve.boundary`.
+    does not exist.  ``orders`` keeps the caller's order (duplicates allowed).  ``m`` is a float
+    array (each depth is the exact binary value of its float) or a sequence of exact depths (str
+    such as ``"0.99999999999"``, ``Fraction``, ``int``, mpmath ``mpf``; each depth is that exact
+    value: ``1 - m`` is computed from it exactly, never from ``float(m)``).
+
+    **Accuracy.**  Every finite entry is within a relative :data:`ERROR_BOUND` (1e-14) of the
+    exact edge at the exact depth, and an entry is NaN exactly where the interval does not exist:
+    for every order, without friction and in both damping models, at every depth ``0 < m < 1``.
+    The double path serves ``1 - m >= 2**-53`` (every double depth) and ``m >= 2**-1022``; exact
+    depths outside, and the points next to a threshold or a closing gap where the double
+    computation cannot decide the edges to that bound (a double root of the indicator), are
+    computed by the certified route (:func:`verify.solve.boundary`).  ``tests/test_grid.py`` and
+    ``tests/test_grid_hard.py`` check the claim against the certified edges on log-spaced samples
+    (``1 - m`` down to ``2**-53``, ``m`` down to 1e-300, orders 1-6 and up to 100).  The order-1
+    lower edge, which goes to 0 like ``1 - m``, is solved in ``x = omega_av T/2`` itself
+    (:func:`verify.derived.order1_forms`) so that it keeps its relative accuracy.
     """
     orders = [int(o) for o in (orders if not isinstance(orders, int | str) else as_orders(orders))]
     as_orders(orders)  # validates
     scalar = np.ndim(m) == 0
-    ms = np.atleast_1d(np.asarray(m, dtype=object if _is_exactish(m) else float))
-    if ms.dtype == object:
-        ms = np.array([float(as_depth(x)) for x in ms], float)
-    else:
-        ms = ms.astype(float)
-        bad = ~((ms > 0) & (ms < 1))
-        if bad.any():
-            as_depth(float(ms[np.argmax(bad)]))  # raises the standard error
+    dep = _Depths(m)
     Qx = as_quality(Q)
     damping = as_damping(damping)
+    out = np.full((len(orders), 2, dep.size), np.nan)
+    doubt = np.zeros((len(orders), dep.size), bool)
+    cols = np.nonzero(dep.double)[0]
+    if cols.size:
+        part, part_doubt = _double_grid(orders, dep, cols, Qx, damping)
+        out[:, :, cols] = part
+        doubt[:, cols] = part_doubt
+    doubt[:, ~dep.double] = True
+    for i, j in zip(*np.nonzero(doubt), strict=True):
+        out[i, :, j] = _certified_point(orders[i], dep.exact(j), Qx, damping)
+    return out[..., 0] if scalar else out
+
+
+def _certified_point(n: int, m: Fraction, Q, damping: str) -> tuple[float, float]:
+    """Both edges from the certified route (NaN if the interval does not exist), at enough digits
+    for a double: 20, more where the route asks for more."""
+    from .certify import CertificationError
+    from .solve import boundary
+
+    err = None
+    for digits in (20, 40, 80, 160):
+        try:
+            b = boundary(n, m, Q=Q, damping=damping, digits=digits)
+        except CertificationError as exc:
+            err = exc
+            continue
+        return (float(b.lower), float(b.upper)) if b.exists else (math.nan, math.nan)
+    raise InputError(
+        f"depth m = {m} (1 - m = {float(1 - m):.3g}, order {n}): outside the double grid "
+        f"(1 - m >= 2**-53, m >= 2**-1022) and the certified route could not enclose it ({err})"
+    )
+
+
+def _double_grid(orders, dep: _Depths, cols, Qx, damping):
+    """The double path for the depths ``cols``: edges ``(len(orders), 2, len(cols))`` and a mask
+    ``(len(orders), len(cols))`` of the entries whose error it cannot bound by
+    :data:`ERROR_BOUND`."""
+    ms, om = dep.m[cols], dep.om[cols]
     out = np.full((len(orders), 2, ms.size), np.nan)
+    doubt = np.zeros((len(orders), ms.size), bool)
     if Qx is None or damping == "paper":
         Qf = None if Qx is None else float(Qx)
-        P = normal_params(ms, Qf, damping, _NP)
-        _fill_normal(out, orders, ms, P, damped=Qx is not None)
-        return out[..., 0] if scalar else out
+        P = normal_params(ms, Qf, damping, _NP, om=om)
+        doubt[:] = _fill_normal(out, orders, ms, P, damped=Qx is not None)
+        return out, doubt
     Qexact = Fraction(Qx) if not isinstance(Qx, Fraction) else Qx
-    h1, h2 = _halves_float(ms, Qexact)
+    exact = dep.exact_all(cols)
+    h1, h2 = _halves_exact(exact, Qexact)
     u1 = (4 * float(Qexact) ** 2 - 1 - ms) / (1 + ms)
     normal = np.array([a == "under" for a in h1]) & (u1 >= NEAR_CRITICAL**2)
     if normal.any():
-        sub = ms[normal]
-        P = _exact_near_critical(normal_params(sub, float(Qexact), "exact", _NP), sub, Qexact)
+        idx = np.nonzero(normal)[0]
+        sub = ms[idx]
+        P = normal_params(sub, float(Qexact), "exact", _NP, om=om[idx])
+        P = _exact_near_critical(P, sub, [exact[j] for j in idx], Qexact)
         part = np.full((len(orders), 2, sub.size), np.nan)
-        _fill_normal(part, orders, sub, P, damped=True)
-        out[:, :, normal] = part
+        doubt[:, idx] = _fill_normal(part, orders, sub, P, damped=True)
+        out[:, :, idx] = part
     for j in np.nonzero(~normal)[0]:
-        mj = Fraction(float(ms[j]))
-        T = trace_params(mj, Qexact, backend("math"))
+        T = trace_params(exact[j], Qexact, backend("math"))
         for i, n in enumerate(orders):
             window = trace_window_ends(n, (h1[j], h2[j]), T)
             if window is None:
@@ -375,56 +474,71 @@ def boundary_grid(orders, m, *, Q=None, damping="exact") -> np.ndarray:
             scale = 2 * float(Qexact) / math.pi
             out[i, 0, j] = res["lo"] * scale
             out[i, 1, j] = res["hi"] * scale
-    return out[..., 0] if scalar else out
+            doubt[i, j] = res.get("doubt", False)
+    return out, doubt
 
 
-def _exact_near_critical(P, ms, Q: Fraction):
+def _exact_near_critical(P, ms, exact, Q: Fraction):
     """Recompute the parameters of depths next to critical damping of half 1 (``4 Q^2 - 1 - m``
-    tiny, where its float value has few correct digits) from exact rationals."""
+    tiny, where its float value has few correct digits) from the exact depths ``exact``."""
     near = np.nonzero(np.abs(4 * float(Q) ** 2 - 1 - ms) < 1e-8)[0]
     if near.size == 0:
         return P
     cols = {f.name: np.array(getattr(P, f.name), float, copy=True) for f in fields(NormalParams)}
     for j in near:
-        pm = normal_params(Fraction(float(ms[j])), Q, "exact", backend("math"))
+        pm = normal_params(exact[j], Q, "exact", backend("math"))
         for k in cols:
             cols[k][j] = float(getattr(pm, k))
     return NormalParams(**cols)
 
 
 def _is_exactish(m) -> bool:
-    if isinstance(m, str | Fraction):
+    if isinstance(m, str | Fraction | mpmath.mpf):
         return True
-    if isinstance(m, list | tuple):
-        return any(isinstance(x, str | Fraction) for x in m)
+    if isinstance(m, list | tuple) or (isinstance(m, np.ndarray) and m.dtype == object):
+        items = np.ravel(np.asarray(m, object))
+        return any(isinstance(x, str | Fraction | mpmath.mpf) for x in items)
     return False
 
 
-def _polish_order1(x0, P, cols, eps=None):
-    """Newton on the order-1 forms in ``x = pi/2 + theta`` (:func:`verify.derived.order1_forms`)
-    for the columns ``cols``: keeps the relative accuracy of small ``x`` (``T -> 0`` as ``m -> 1``).
-    ``eps`` picks the undamped edge equation; ``None`` the friction indicator."""
+def _order1_lower(P, cols, x_hi, eps=None, *, doubt=False):
+    """The order-1 edge whose ``x = pi/2 + theta`` goes to 0 as ``m -> 1`` (``T -> 0``), solved
+    in ``x`` itself on the forms of :func:`verify.derived.order1_forms` for the columns ``cols``:
+    there ``theta`` is within rounding of ``-pi/2`` and carries no digit of ``x``.
+
+    ``eps = 1``: the undamped edge equation ``E(x)``, with ``E(0) = v > 0`` and one simple root in
+    ``(0, x_hi)``, ``x_hi = pi`` (the window theorem); ``eps = None``: the friction indicator
+    ``D(x)``, with ``D(0) = -u < 0`` and ``x_hi = pi/2 + top`` (``D(top) > 0``; ``D <= D0 < 0``
+    left of the undamped root, so its one zero in ``(0, x_hi)`` is the lower edge).  Safeguarded
+    Newton on that bracket, started where the Taylor polynomial ``F(0) + F''(0) x^2/2`` of the form
+    vanishes (both forms are even in ``x``; the start is right to a relative ``O(x^2)``).
+    ``doubt=True`` also returns the mask of roots whose error :func:`_root_doubt` cannot bound."""
     edge, ind = order1_forms()
-    x = np.array(x0, float)
     bm = P.bm[cols]
     if eps is not None:
-        fn = edge.compiled("numpy", (0, 1))
-        v = P.u[cols] / (1 + P.r[cols])
-        args = (v, P.beta[cols], bm)
+        form = edge
+        args = (P.u[cols] / (1 + P.r[cols]), P.beta[cols], bm)
     else:
-        fn = ind.compiled("numpy", (0, 1))
+        form = ind
         args = (P.r2[cols], P.u[cols], P.beta[cols], bm, P.g[cols])
-    for _ in range(8):
-        f, d = fn(x, *args)
-        step = np.asarray(f, float) / np.asarray(d, float)
-        x = x - step
-        if np.all(np.abs(step) <= 4e-16 * np.abs(x)):
-            break
+    f01 = form.compiled("numpy", (0, 1))
+    f0, f2 = form.compiled("numpy", (0, 2))(np.zeros(bm.shape), *args)
+    x_hi = np.asarray(x_hi, float) * np.ones(bm.shape)
+    with np.errstate(invalid="ignore", divide="ignore"):
+        x0 = np.sqrt(-2 * np.asarray(f0, float) / np.asarray(f2, float))
+    x0 = np.where(np.isfinite(x0) & (x0 > 0) & (x0 < x_hi), x0, 0.5 * x_hi)
+    x = _bisect_newton(lambda x: f01(x, *args), 0 * x_hi, x_hi, x0, eps is None)
+    if doubt:
+        return x, _root_doubt(form, x, args, x)
     return x
 
 
+#: the order-1 lower edge is solved in ``x`` (:func:`_order1_lower`) where ``x`` is below this (an
+#: absolute error of ``theta`` is a relative error of ``x`` amplified by ``1/x``)
+ORDER1_X = 1.0
+
 #: below this ``1 - beta`` (``m > 0.995``) the grid polishes with the forms for ``m -> 1``
-NEAR_ONE = 0.05
+NEAR_ONE = 0.2
 
 
 def _polish_near_one(theta, n, P, form):
@@ -451,8 +565,11 @@ def _polish_near_one(theta, n, P, form):
     return theta
 
 
-def _fill_normal(out, orders, ms, P, damped: bool):
+def _fill_normal(out, orders, ms, P, damped: bool) -> np.ndarray:
+    """Fill ``out`` (orders x 2 x depths) from the normal form; returns the mask (orders x
+    depths) of entries whose error is not bounded by :data:`ERROR_BOUND` (to be escalated)."""
     orders_arr = np.array(orders)
+    doubt = np.zeros((len(orders), ms.size), bool)
     P = NormalParams(
         *(np.asarray(getattr(P, f.name), float) * np.ones(ms.shape) for f in fields(NormalParams))
     )
@@ -465,13 +582,12 @@ def _fill_normal(out, orders, ms, P, damped: bool):
         T1 = (n / 2.0 + t1 / math.pi) / P.w
         T2 = (n / 2.0 + t2 / math.pi) / P.w
         for i in np.nonzero(orders_arr == 1)[0]:  # the eps = +1 root is the one with x -> 0
-            x0 = _HALF_PI + t1[i]
-            cols = np.nonzero(x0 < 0.5)[0]
+            cols = np.nonzero((_HALF_PI + t1[i] < ORDER1_X) | (P.bm < NEAR_ONE))[0]
             if cols.size:
-                T1[i, cols] = _polish_order1(x0[cols], P, cols, 1) / (math.pi * P.w[cols])
+                T1[i, cols] = _order1_lower(P, cols, math.pi, 1) / (math.pi * P.w[cols])
         out[:, 0, :] = np.minimum(T1, T2)
         out[:, 1, :] = np.maximum(T1, T2)
-        return
+        return doubt
     for parity in (1, 0):
         rows = np.nonzero(orders_arr % 2 == parity)[0]
         if rows.size == 0:
@@ -484,10 +600,66 @@ def _fill_normal(out, orders, ms, P, damped: bool):
         base = n / 2.0
         out[rows, 0, :] = (base + lo / math.pi) / P.w
         out[rows, 1, :] = (base + hi / math.pi) / P.w
+        top_doubt, lo_doubt, hi_doubt = _normal_doubt(n, P, res, lo, hi)
         for k, i in enumerate(rows):
             if orders_arr[i] != 1:
                 continue
-            x0 = _HALF_PI + lo[k]
-            cols = np.nonzero(np.isfinite(x0) & (x0 < 0.5))[0]
+            near = (_HALF_PI + lo[k] < ORDER1_X) | (P.bm < NEAR_ONE)
+            cols = np.nonzero(np.isfinite(lo[k]) & near)[0]
             if cols.size:
-                out[i, 0, cols] = _polish_order1(x0[cols], P, cols) / (math.pi * P.w[cols])
+                x, unsure = _order1_lower(P, cols, _HALF_PI + res["top"][k, cols], doubt=True)
+                out[i, 0, cols] = x / (math.pi * P.w[cols])
+                lo_doubt[k, cols] = unsure
+        doubt[rows] = top_doubt | lo_doubt | hi_doubt
+    return doubt
+
+
+#: rounding of a form's value, in units of 2^-53 times its term sizes (:func:`_noise`)
+NOISE_ULPS = 4
+#: an edge is escalated when its estimated relative error exceeds this (a quarter of the bound)
+DOUBT = ERROR_BOUND / 4
+
+
+def _noise(form, v, args, scale):
+    """A bound on the rounding error of ``form`` at ``v``: :data:`NOISE_ULPS` ulp of its term
+    sizes, the angles (of size ``scale``) with errors of a few ulp
+    (:func:`verify.derived.term_sizes`)."""
+    sizes = term_sizes(form).compiled("numpy", (0, 1))
+    total, slope = sizes(v, *args)
+    return NOISE_ULPS * 2.0**-53 * (np.abs(total) + np.abs(scale) * np.abs(slope))
+
+
+def _root_doubt(form, root, args, scale):
+    """Whether a root ``root`` of ``form`` may be off by more than :data:`DOUBT` relative to
+    ``scale`` (where ``T`` is proportional to ``scale``): the rounding error of the form over its
+    slope at the root."""
+    with np.errstate(invalid="ignore", divide="ignore"):
+        slope = np.abs(np.asarray(form.compiled("numpy", 1)(root, *args), float))
+        err = _noise(form, root, args, scale) / (slope * np.abs(scale))
+        return np.isfinite(root) & ~(err <= DOUBT)
+
+
+def _normal_doubt(n, P, res, lo, hi):
+    """Masks of the entries of the normal-form friction path that must be escalated: ``(top,
+    lower, upper)``: the sign of ``D`` at its maximiser within rounding (existence undecided),
+    and each edge whose estimated error exceeds :data:`DOUBT` (near a threshold or a closing gap,
+    where the edges are a near-double root)."""
+    parity = _parity(int(n.flat[0]))
+    c = n * _HALF_PI
+    std = (c, P.r2, P.u, P.beta, P.g)
+    nearf = near_one_forms()[2]
+    nargs = (c, P.u, P.bm, P.g)
+    polished = np.broadcast_to(P.bm < NEAR_ONE, lo.shape)
+    form = indicator(parity)
+    with np.errstate(invalid="ignore", over="ignore"):
+        top = res["top"]
+        undecided = np.abs(res["dtop"]) <= _noise(form, top, std, c + top)
+        edges = [
+            np.where(
+                polished,
+                _root_doubt(nearf, theta, nargs, c + theta),
+                _root_doubt(form, theta, std, c + theta),
+            )
+            for theta in (lo, hi)
+        ]
+    return undecided, edges[0], edges[1]

@@ -168,25 +168,36 @@ def _root(x, B: Backend):
     return B.sqrt(_lift(x, B))
 
 
-def omega_av(m, B: Backend):
-    """``w0 = omega_av/omega0 = sqrt((1 + s)/2)/s`` with ``s = sqrt(1 - m^2)`` (undamped)."""
-    s = _root((1 - m) * (1 + m), B)
+def omega_av(m, B: Backend, om=None):
+    """``w0 = omega_av/omega0 = sqrt((1 + s)/2)/s`` with ``s = sqrt(1 - m^2)`` (undamped);
+    ``om`` is ``1 - m`` (see :func:`normal_params`)."""
+    s = _root(_one_minus(m, om) * (1 + m), B)
     return B.sqrt((1 + s) / 2) / s
 
 
-def _undamped(m, B: Backend):
-    s = _root((1 - m) * (1 + m), B)
+def _one_minus(m, om):
+    """``1 - m``: the caller's ``om`` when given (a double depth near 1 passes ``1 - m`` computed
+    from the exact depth), else ``1 - m`` itself (exact for rationals, and for doubles ``m >=
+    1/2``)."""
+    return 1 - m if om is None else om
+
+
+def _undamped(m, B: Backend, om=None):
+    om = _one_minus(m, om)
+    s = _root(om * (1 + m), B)
     beta = _lift(m, B) / (1 + s)
     b2 = beta * beta
     r = beta * (3 + b2) / (1 + 3 * b2)
     omb2 = 2 * s / (1 + s)
     u = omb2 * omb2 * omb2 / ((1 + 3 * b2) * (1 + 3 * b2))
     w = B.sqrt((1 + s) / 2) / s
-    bm = ((1 - _lift(m, B)) + s) / (1 + s)  # (1 - m) first: exact, no cancellation
+    bm = (_lift(om, B) + s) / (1 + s)  # 1 - m is exact or given: no cancellation
     return r, r * r, u, beta, w, bm
 
 
-def normal_params(m, Q, damping: str, B: Backend, system: System = PAPER) -> NormalParams:
+def normal_params(
+    m, Q, damping: str, B: Backend, system: System = PAPER, *, om=None
+) -> NormalParams:
     """The normal-form parameters for depth ``m`` and quality factor ``Q`` (``None``: no friction)
     in the damping model ``damping`` (``"exact"`` or ``"paper"``), as numbers of back end ``B``.
 
@@ -194,12 +205,19 @@ def normal_params(m, Q, damping: str, B: Backend, system: System = PAPER) -> Nor
     exactly and rounded once) or numbers of the back end.  For the exact model both halves must be
     under-damped (``4 Q^2 > 1 + m``).  Any other member of the family (``system``) takes the
     general route of :mod:`verify.system_params`, which the tests check against this one.
+
+    ``om`` is ``1 - m``, for a depth that is not exactly a number of the back end: the formulas
+    above need ``1 - m`` to the relative accuracy of the result (near ``m = 1`` it sets ``s``,
+    ``1 - beta`` and ``1 - r^2``), and ``1 - float(m)`` can be wrong in every digit, while ``m``
+    itself enters only through ``1 + m`` and ``m`` (rounding it changes the result by a relative
+    2^-53).  Omitted, it is ``1 - m``.
     """
     if not system.is_paper:
         from .system_params import normal_values
 
         return NormalParams(**normal_values(system, m, Q, damping, B))
-    r, r2, u, beta, w0, bm = _undamped(m, B)
+    r, r2, u, beta, w0, bm = _undamped(m, B, om)
+    om = _one_minus(m, om)
     zero = r * 0
     if Q is None:
         return NormalParams(r, r2, u, beta, w0, zero, w0, zero, bm)
@@ -207,9 +225,9 @@ def normal_params(m, Q, damping: str, B: Backend, system: System = PAPER) -> Nor
         return NormalParams(r, r2, u, beta, w0, 1 / (2 * _lift(Q, B) * w0), w0, zero, bm)
     q2 = 4 * Q * Q
     nu1 = _root((q2 - 1 - m) / (1 + m), B)
-    nu2 = _root((q2 - 1 + m) / (1 - m), B)
-    om2 = _lift((1 - m) * (1 + m), B)
-    a, b = _lift((1 + m) * (1 + m), B), _lift((1 - m) * (1 - m), B)
+    nu2 = _root((q2 - 1 + m) / om, B)
+    om2 = _lift(om * (1 + m), B)
+    a, b = _lift((1 + m) * (1 + m), B), _lift(om * om, B)
     V = (a * nu1 + b * nu2) / om2
     U = _lift(2 * m * ((q2 - 1) * (3 + m * m) - (1 + 3 * m * m)), B) / (om2 * om2 * V)
     d = _lift(4 * m, B) / om2
@@ -222,7 +240,7 @@ def normal_params(m, Q, damping: str, B: Backend, system: System = PAPER) -> Nor
     beta = _lift(8 * m * Q * Q, B) / (om2 * nsum * nsum)
     g = 2 / nsum
     # w0 - w = (omega1 - Omega1 + omega2 - Omega2)/(4 pi), omega - Omega = gamma^2/(omega + Omega)
-    diff = (1 / (2 * Qb / _root(1 + m, B) + nu1) + 1 / (2 * Qb / _root(1 - m, B) + nu2)) / (4 * Qb)
+    diff = (1 / (2 * Qb / _root(1 + m, B) + nu1) + 1 / (2 * Qb / _root(om, B) + nu2)) / (4 * Qb)
     return NormalParams(B.sqrt(r2), r2, u, beta, w, g, w0, diff / (w * w0), 2 * nu1 / nsum)
 
 

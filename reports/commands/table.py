@@ -3,9 +3,10 @@
     paramres table --orders 1-6 --m START:STOP:STEP [--Q Q] [--damping exact|paper]
                    [--digits D | --tol TOL] [--format csv|json] [--output FILE] [--jobs J]
 
-Without ``--digits`` the vectorised double-precision grid is used (:func:`verify.boundary_grid`,
-relative error below 1e-14; 13 significant digits are printed).  With ``--digits D`` every entry is
-certified to ``D`` digits (:func:`verify.boundary`), in ``--jobs`` processes, with a progress bar.
+Without ``--digits`` the vectorised double-precision grid is used (:func:`verify.boundary_grid`
+at the exact depths of the rows, relative error below 1e-14; 13 significant digits are printed).
+With ``--digits D`` every entry is certified to ``D`` digits (:func:`verify.boundary`), in
+``--jobs`` processes, with a progress bar.
 With ``--tol TOL`` every entry is proven within the relative tolerance by the cheapest method that
 meets it at that order and depth (:func:`verify.auto.boundaries_tol`), named in a ``method`` column.
 ``--output`` is written atomically (nothing is written if anything fails).
@@ -149,7 +150,7 @@ def rows(orders, ms, Q, damping, digits, jobs=1, label="table", tol=None):
                 return None
             return mpmath.nstr(mpmath.mpf(float(v)), GRID_DIGITS, strip_zeros=False)
 
-        grid = boundary_grid(orders, np.array([float(m) for m in ms]), Q=Q, damping=damping)
+        grid = boundary_grid(orders, list(ms), Q=Q, damping=damping)  # the exact depths
         out = []
         for i, n in enumerate(orders):
             for j, m in enumerate(ms):
