@@ -14,6 +14,7 @@ import importlib
 import pkgutil
 import sys
 
+from verify.certify import CertificationError
 from verify.inputs import InputError
 
 from . import commands
@@ -57,6 +58,9 @@ def main(argv: list[str] | None = None) -> int:
         return int(args.func(args) or 0)
     except InputError as exc:
         print(f"{PROG}: error: {exc}", file=sys.stderr)
+        return 2
+    except CertificationError as exc:  # a valid input whose proof is out of reach
+        print(f"{PROG}: error: no proven result: {exc}", file=sys.stderr)
         return 2
     except KeyboardInterrupt:  # pragma: no cover
         print(f"{PROG}: interrupted", file=sys.stderr)

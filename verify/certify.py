@@ -89,9 +89,12 @@ def ball(mid, rad=0) -> arb:
     return mid
 
 
-def _newton(F, dF, x: arb, lo, hi):
-    """One safeguarded Newton step on midpoints; returns ``(x, |step|, lo, hi)``."""
+def _newton(F, dF, x: arb, lo, hi, signs: list | None = None):
+    """One safeguarded Newton step on midpoints; returns ``(x, |step|, lo, hi)``.  ``signs``
+    (a list) collects whether ``F(x)`` had a proven sign."""
     fx = F(x)
+    if signs is not None:
+        signs.append(not fx.contains(0))
     dfx = dF(x)
     if lo is not None:
         if fx > 0:
@@ -117,42 +120,64 @@ def certified_root(
     floor: float = 0.0,
     bracket: tuple | None = None,
     max_bits: int | None = None,
-    scale: float | None = None,
+    scale: float | Callable[[float], float] | None = None,
 ) -> Root:
     """Enclose the simple zero of ``F`` near ``x0`` to relative accuracy ``2**-bits``.
 
     ``F`` and ``dF`` take and return ``arb`` at the current precision.  The radius of the result is
     at most ``2**-bits * max(|root|, floor)`` (``floor`` is an absolute scale for roots that may be
     exactly zero), or ``2**-bits * scale`` if ``scale`` is given (when what matters is the accuracy
-    of a quantity derived from the root, e.g. ``root + shift`` near zero).  ``bracket = (a, b)``
-    (numbers with ``F(a) < 0 < F(b)``) keeps Newton inside: a step that would leave it is replaced
-    by a bisection step.  Raises :class:`CertificationError` if the interval-Newton test does not
-    succeed below ``max_bits`` bits of working precision.
+    of a quantity derived from the root, e.g. ``root + shift`` near zero); ``scale`` may be a
+    function of the root (a float), evaluated at the enclosed root, not at the start.
+    ``bracket = (a, b)`` (numbers with ``F(a) < 0 < F(b)``) keeps Newton inside: a step that would
+    leave it is replaced by a bisection step.
+
+    Where ``F`` is the small difference of large terms (an ill-conditioned variable), the working
+    precision is raised until ``F`` has a sign at the Newton iterate and the interval-Newton test
+    succeeds; :class:`CertificationError` is raised only past ``max_bits`` bits of working
+    precision (default: enough for a cancellation of ``16 * bits + 4096`` bits).
     """
     target = bits + 20
-    max_bits = max_bits or 4 * target + 256
+    max_bits = max_bits or 16 * target + 4096
     x = ball(x0)
     lo = ball(bracket[0]) if bracket else None
     hi = ball(bracket[1]) if bracket else None
     floor_b = arb(floor)
-    # Newton on midpoints, doubling the precision each step
+
+    def size_of(x):
+        return max(abs(x), floor_b)
+
+    def want_of(x):
+        if scale is None:
+            return size_of(x)
+        s = scale(float(x.mid())) if callable(scale) else scale
+        return arb(s)
+
+    def polish(x, lo, hi, prec, count):
+        """Newton on midpoints at ``prec`` bits until the step is at the precision's noise (or
+        ``F`` has no sign there: then more precision is needed)."""
+        step, signs = None, []
+        with ctx.workprec(prec):
+            for _ in range(count):
+                x, step, lo, hi = _newton(F, dF, x, lo, hi, signs)
+                if not signs[-1] or step <= size_of(x) * arb(2) ** (-prec + 8):
+                    break  # converged, or at the noise floor of this precision
+        return x, step, lo, hi
+
+    # Newton on midpoints, doubling the precision each step (one step per precision while the
+    # iteration converges quadratically; more where it does not yet)
     prec, step = 53, None
     while prec < target:
         prec = min(2 * prec, target)
         with ctx.workprec(prec + 10):
             x, step, lo, hi = _newton(F, dF, x, lo, hi)
-    with ctx.workprec(target + 10):
-        for _ in range(60):
-            size = max(abs(x), floor_b) if not scale else arb(scale)
-            if step is not None and step <= size * arb(2) ** (-target + 4):
-                break
-            x, step, lo, hi = _newton(F, dF, x, lo, hi)
+    x, step, lo, hi = polish(x, lo, hi, target + 10, 200)
     # interval Newton, enlarging the search ball (or the precision) until it succeeds
     work = target + 10
     while work <= max_bits:
         with ctx.workprec(work):
-            size = max(abs(x), floor_b)
-            want = ((arb(scale) if scale else size) * arb(2) ** (-bits)).abs_lower()
+            size = size_of(x)
+            want = (want_of(x) * arb(2) ** (-bits)).abs_lower()
             delta = max(
                 arb(step) * 4 if step is not None else arb(0), size * arb(2) ** (-work + 12)
             )
@@ -169,9 +194,7 @@ def certified_root(
                     break  # proven, but too wide at this precision
                 delta = delta * 16
         work *= 2
-        with ctx.workprec(work):
-            for _ in range(2):
-                x, step, lo, hi = _newton(F, dF, x, lo, hi)
+        x, step, lo, hi = polish(x, lo, hi, work, 200)
     raise CertificationError(
         f"could not enclose a simple root near {float(x.mid())} below {max_bits} bits"
     )

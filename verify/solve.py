@@ -60,6 +60,7 @@ from analytic.system import PAPER, System
 
 from .certify import (
     CertificationError,
+    Root,
     ball,
     bits_for_digits,
     certified_root,
@@ -67,7 +68,15 @@ from .certify import (
     to_mpf,
     upper_mpf,
 )
-from .derived import backend, edge_equation, indicator, trace_indicator, trace_window
+from .derived import (
+    backend,
+    edge_equation,
+    indicator,
+    near_one_forms,
+    order1_forms,
+    trace_indicator,
+    trace_window,
+)
 from .inputs import (
     InputError,
     as_damping,
@@ -402,6 +411,19 @@ def _undamped(req: Request) -> Boundary:
     P = _AtPrecision(lambda: normal_params(req.m, None, "exact", _ARB, req.system))
     C = _AtPrecision(lambda: arb.pi() * n / 2)
     sgn = _sgn(n)
+    if pf.bm < NEAR_ONE:
+        ys = sorted((_near_one_edge(n, eps, P, C, bits) for eps in (1, -1)), key=lambda r: float(r.ball.mid()))
+        return _result(
+            req,
+            "certified",
+            None,
+            None,
+            P,
+            bits,
+            "per-edge equations",
+            max(r.prec for r in ys),
+            ys=tuple(r.ball for r in ys),
+        )
     roots = []
     for eps in (1, -1):
         start = _float_edge(f_math, n, eps, pf.r, pf.beta)
@@ -422,7 +444,7 @@ def _undamped(req: Request) -> Boundary:
             bits=bits,
             floor=_theta_floor(bits, n),
             bracket=(-half, half),
-            scale=_theta_scale(start, n, bits),
+            scale=lambda t: _theta_scale(t, n, bits),
         )
         roots.append(root)
     lo_root, hi_root = sorted(roots, key=lambda rt: float(rt.ball.mid()))
@@ -438,15 +460,96 @@ def _undamped(req: Request) -> Boundary:
     )
 
 
+#: below this ``1 - beta`` (``m > 0.995``) the certified solver uses the forms for ``m -> 1``
+#: (:func:`verify.derived.near_one_forms`, :func:`verify.derived.order1_forms`), whose terms are
+#: of the size of the result; the standard forms cancel to ``1 - beta`` there
+NEAR_ONE = 0.05
+
+
+def _near_one_edge(n: int, eps: int, P, C, bits: int) -> Root:
+    """One undamped edge for ``1 - beta < NEAR_ONE``, in ``y = theta + pi/2`` (the distance from
+    the window's left end, where an edge goes as ``m -> 1``) on the forms whose terms are of the
+    size of the result: :func:`verify.derived.order1_forms` in ``x = y`` for order 1, ``eps = +1``
+    (``T`` proportional to ``x -> 0``); :func:`verify.derived.near_one_forms` at ``theta = y -
+    pi/2`` otherwise.  Each has one simple root in ``(0, pi)`` (the window theorem)."""
+    half = math.pi / 2
+    if n == 1 and eps == 1:
+        f = order1_forms()[0]
+        f0, f1 = f.compiled("arb", 0), f.compiled("arb", 1)
+
+        def F(y):  # the form is positive at x = 0: negate for F(0) < 0 < F(pi)
+            p = P()
+            return -f0(y, p.u / (1 + p.r), p.beta, p.bm)
+
+        def dF(y):
+            p = P()
+            return -f1(y, p.u / (1 + p.r), p.beta, p.bm)
+
+    else:
+        f = near_one_forms()[0 if eps == 1 else 1]
+        f0, f1 = f.compiled("arb", 0), f.compiled("arb", 1)
+
+        def F(y):
+            p = P()
+            return f0(y - arb.pi() / 2, C(), p.r, p.u / (1 + p.r), p.bm)
+
+        def dF(y):
+            p = P()
+            return f1(y - arb.pi() / 2, C(), p.r, p.u / (1 + p.r), p.bm)
+
+    # start: bisection in floats on the sign (the forms are well scaled in y)
+    lo, hi = 0.0, math.pi
+    with ctx.workprec(64):
+        for _ in range(60):
+            mid = 0.5 * (lo + hi) if hi > 1e-3 or lo > 0 else hi / 16
+            v = F(ball(mid))
+            if v > 0:
+                hi = mid
+            elif v < 0:
+                lo = mid
+            else:
+                break
+            if hi - lo < 1e-6 * hi:
+                break
+    start = 0.5 * (lo + hi)
+    return certified_root(
+        F,
+        dF,
+        start,
+        bits=bits,
+        floor=1e-300,
+        bracket=(0.0, math.pi),
+        scale=lambda y: max(min(abs(y - half), abs(y + (n - 1) * half)), 1e-300),
+    )
+
+
 def _result(
-    req, method, th_lo, th_hi, P, bits, regime, prec, notes=(), theta=True, certified=True
+    req,
+    method,
+    th_lo,
+    th_hi,
+    P,
+    bits,
+    regime,
+    prec,
+    notes=(),
+    theta=True,
+    certified=True,
+    ys=None,
 ) -> Boundary:
     """Turn two ``theta`` (or ``zeta``) balls into the result: ``T/T0`` and offsets as balls,
-    midpoints returned, radius the largest proven error."""
+    midpoints returned, radius the largest proven error.  ``ys`` (balls of ``y = theta + pi/2``
+    for the two edges, near ``m = 1``; ``None`` to use ``theta``) give ``T`` from ``x = y + (n -
+    1) pi/2`` and the offset from ``theta = y - pi/2``, each without cancellation."""
     n = req.order
     with ctx.workprec(prec + 20):
         p = P()
-        if theta:
+        if theta and ys is not None:
+            pi = arb.pi()
+            half = arb(n) / 2
+            Ts = [(y + (n - 1) * pi / 2) / (pi * p.w) for y in ys]
+            ds = [(y - pi / 2) / (pi * p.w) + half * p.dinv for y in ys]
+        elif theta:
             pi = arb.pi()
             half = arb(n) / 2
             Ts = [(half + th / pi) / p.w for th in (th_lo, th_hi)]
@@ -522,22 +625,31 @@ class _Hump:
     lo: float
     hi: float
     floor: float
-    shift: float = 0.0  # T is proportional to (variable + shift): accuracy relative to both
+    #: T and the offset are proportional to (variable + shift) for these shifts: the accuracy of
+    #: the variable is measured relative to the smallest of them
+    shifts: tuple = (0.0,)
+    variable: str = "theta"  # or "y" = theta + pi/2 (near m = 1)
 
 
 def _prove_shape(h: _Hump, lo_root, hi_root) -> bool:
     """``D < 0`` on ``[a, lower)``, ``> 0`` on ``(lower, upper)``, ``< 0`` on ``(upper, b]``."""
     e1, e2 = float(lo_root.ball.mid()), float(hi_root.ball.mid())
-    for prec in (64, 128, 256):
+    top_prec = max(256, 2 * max(lo_root.prec, hi_root.prec))
+    precs = [64]
+    while precs[-1] < top_prec:
+        precs.append(2 * precs[-1])
+    for prec in precs:
         ok = True
         with ctx.workprec(prec):
             # monotone neighbourhoods Y1, Y2 of the two zeros
             ys = []
             for e, root, sign in ((e1, lo_root, 1), (e2, hi_root, -1)):
-                rho = max(min(e2 - e1, e1 - h.a, h.b - e2) / 4, abs(e) * 2.0**-40, 1e-300)
+                size = min(abs(e + sh) for sh in h.shifts)
+                gap = min(e2 - e1, e1 - h.a, h.b - e2)
+                rho = max(gap / 4, min(size * 2.0**-40, gap / 2), 1e-300)
                 found = None
-                for _ in range(40):
-                    Y = arb(ball(e), arb(rho).abs_upper())
+                for _ in range(80):
+                    Y = arb(root.ball.mid(), arb(rho).abs_upper())
                     Y = arb(Y.mid(), max(Y.rad(), (root.ball.rad() * 2)))
                     lo_end, hi_end = ball(Y.lower()), ball(Y.upper())
                     if (
@@ -661,15 +773,15 @@ def _solve_hump(req: Request, h: _Hump, bits: int):
         hi0 = h.hi if math.isfinite(h.hi) else 0.5 * (top + h.b)
 
     def scale(t):
-        return max(min(abs(t), abs(t + h.shift)) if h.shift else abs(t), h.floor, 1e-300)
+        return max(min(abs(t + sh) for sh in h.shifts), h.floor, 1e-300)
 
     lo_root = certified_root(
-        h.D, h.dD, lo0, bits=bits, floor=h.floor, bracket=(h.a, top), scale=scale(lo0)
+        h.D, h.dD, lo0, bits=bits, floor=h.floor, bracket=(h.a, top), scale=scale
     )
     neg = lambda t: -h.D(t)  # noqa: E731
     dneg = lambda t: -h.dD(t)  # noqa: E731
     hi_root = certified_root(
-        neg, dneg, hi0, bits=bits, floor=h.floor, bracket=(top, h.b), scale=scale(hi0)
+        neg, dneg, hi0, bits=bits, floor=h.floor, bracket=(top, h.b), scale=scale
     )
     return True, lo_root, hi_root, _prove_shape(h, lo_root, hi_root)
 
@@ -709,6 +821,8 @@ def hump_normal(n: int, m: Fraction, Q: Fraction, damping: str, bits: int, syste
         )
     if not outside:  # pragma: no cover - the float bracket is always this good
         a, b = -math.pi / 2, math.pi / 2
+    if pm.bm < NEAR_ONE:
+        return _hump_near_one(n, P, fl, b, C, E0), P
     h = _Hump(
         D=lambda t: D0(t, *args()),
         dD=lambda t: D1(t, *args()),
@@ -720,9 +834,65 @@ def hump_normal(n: int, m: Fraction, Q: Fraction, damping: str, bits: int, syste
         lo=fl["lo"],
         hi=fl["hi"],
         floor=_theta_floor(bits, n),
-        shift=n * math.pi / 2,
+        shifts=(0.0, n * math.pi / 2),
     )
     return h, P
+
+
+def _hump_near_one(n, P, fl, b, C, E0) -> _Hump:
+    """Friction near ``m = 1`` (``1 - beta < NEAR_ONE``): the hump in ``y = theta + pi/2``, the
+    distance from the window's left end, where the lower edge goes as ``m -> 1``.  ``D`` is the
+    form whose terms are of the size of ``D``: :func:`verify.derived.order1_forms` in ``x = y``
+    (order 1; ``T`` is proportional to ``x``), :func:`verify.derived.near_one_forms` at ``theta = y
+    - pi/2`` otherwise.  The bracket is ``[0, b + pi/2]``: the interval lies in the window, and
+    ``D < 0`` at its left end."""
+    half = math.pi / 2
+    if n == 1:
+        form = order1_forms()[1]
+
+        def yargs():
+            p = P()
+            return (p.r2, p.u, p.beta, p.bm, p.g)
+
+        def at(y):
+            return y
+
+    else:
+        form = near_one_forms()[2]
+
+        def yargs():
+            p = P()
+            return (C(), p.u, p.bm, p.g)
+
+        def at(y):
+            return y - arb.pi() / 2
+
+    Y0, Y1, Y2 = (form.compiled("arb", k) for k in (0, 1, 2))
+    by = b + half
+    with ctx.workprec(128):
+        p = P()
+        thb = ball(by) - arb.pi() / 2
+        sgn = _sgn(n)
+        if not all(E0(thb, C(), sgn, e, p.r, p.beta) > 0 for e in (1, -1)):  # pragma: no cover
+            by = math.pi
+
+    def shifted(v):
+        return v + half if math.isfinite(v) and v + half > 0 else math.nan
+
+    return _Hump(
+        D=lambda y: Y0(at(y), *yargs()),
+        dD=lambda y: Y1(at(y), *yargs()),
+        d2D=lambda y: Y2(at(y), *yargs()),
+        a=0.0,
+        b=by,
+        top=shifted(fl["top"]),
+        dtop=fl["dtop"],
+        lo=shifted(fl["lo"]),
+        hi=shifted(fl["hi"]),
+        floor=1e-300,
+        shifts=(-half, (n - 1) * half),  # theta = y - pi/2, x = y + (n - 1) pi/2
+        variable="y",
+    )
 
 
 def _normal_damped(req: Request) -> Boundary:
@@ -740,17 +910,21 @@ def _normal_damped(req: Request) -> Boundary:
     )
     if not exists:
         return _none(req, "certified", regime, notes)
+    lo_ball, hi_ball, ys = lo_root.ball, hi_root.ball, None
+    if h.variable == "y":
+        ys = (lo_ball, hi_ball)
     return _result(
         req,
         "certified",
-        lo_root.ball,
-        hi_root.ball,
+        lo_ball,
+        hi_ball,
         P,
         bits,
         regime,
         max(lo_root.prec, hi_root.prec),
         notes,
         certified=shape,
+        ys=ys,
     )
 
 
@@ -795,6 +969,8 @@ def hump_trace(n: int, m: Fraction, Q: Fraction, regimes: tuple[str, str], syste
         lo=fl["lo"],
         hi=fl["hi"],
         floor=0.0,
+        # T = 2 Q zeta/pi and the offset T - n/(2 w0): accuracy relative to both
+        shifts=(0.0, -math.pi * n / (4 * float(Q) * Tf.w0)),
     )
     return h, P
 
