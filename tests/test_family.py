@@ -360,3 +360,140 @@ def test_family_series_error_falls_like_m_to_the_K_plus_1(name, duty, n, K):
             errs.append(abs(mpmath.mpf(str(val)) - b.lower))
     slope = mpmath.log10(errs[0] / errs[1])
     assert slope > K + 1 - 0.15, (errs, slope)
+
+
+# ---------------------------------------------------------------------------------------------
+# the double grid for every member
+
+
+@pytest.mark.parametrize(
+    "name, duty", [("meissner", "1/3"), ("torsion", "0.7"), ("pendulum", "0.25")]
+)
+@pytest.mark.parametrize("Q, damping", [(None, "exact"), (7, "paper"), (7, "exact")])
+def test_family_grid_accuracy(name, duty, Q, damping):
+    """boundary_grid for other members meets the same 1e-14 relative bound against the
+    certified edges (log-spaced depths toward both ends; fixed seed)."""
+    import numpy as np
+
+    from verify.grid import boundary_grid
+
+    rng = np.random.default_rng(20261122)
+    ms = np.concatenate([10 ** rng.uniform(-12, -0.05, 12), 1 - 10 ** rng.uniform(-7, -1, 6)])
+    orders = [1, 2, 3, 12]
+    sysv = system(name, duty=duty)
+    g = boundary_grid(orders, ms, Q=Q, damping=damping, system=sysv)
+    bad = []
+    for i, n in enumerate(orders):
+        for j, m in enumerate(ms):
+            b = boundary(n, float(m), Q=Q, damping=damping, system=sysv, digits=20)
+            if not b.exists:
+                if not np.isnan(g[i, 0, j]):
+                    bad.append((n, m, "grid has an interval, certified has none"))
+                continue
+            for k, T in enumerate((b.lower, b.upper)):
+                rel = abs(g[i, k, j] - float(T)) / float(T)
+                if not rel <= 1e-14:
+                    bad.append((n, m, k, g[i, k, j], T, rel))
+    assert not bad, bad
+
+
+def test_cli_family_options(capsys):
+    """Every command with a model takes --system/--duty; JSON echoes them."""
+    import json
+
+    from reports.cli import main
+
+    assert (
+        main(
+            [
+                "table",
+                "--orders",
+                "1-2",
+                "--m",
+                "0.1:0.2:0.1",
+                "--system",
+                "torsion",
+                "--duty",
+                "1/3",
+                "--format",
+                "json",
+            ]
+        )
+        == 0
+    )
+    doc = json.loads(capsys.readouterr().out)
+    assert doc["system"] == "torsion" and doc["duty"] == "1/3" and len(doc["rows"]) == 4
+    assert (
+        main(
+            [
+                "boundary",
+                "--order",
+                "2",
+                "--system",
+                "custom",
+                "--omega-sq",
+                "4/5,6/5",
+                "--duty",
+                "1/3",
+                "--json",
+            ]
+        )
+        == 0
+    )
+    doc = json.loads(capsys.readouterr().out)
+    assert doc["omega_sq"] == ["4/5", "6/5"] and doc["m"] is None and doc["exists"]
+    assert main(["multipliers", "--T", "1.45", "--m", "0.3", "--json"]) == 0
+    doc = json.loads(capsys.readouterr().out)
+    assert doc["unstable"] is True and doc["system"] == "pendulum"
+    assert main(["crossings", "--max-order", "5", "--duty", "1/3", "--json"]) == 0
+    doc = json.loads(capsys.readouterr().out)
+    assert doc["duty"] == "1/3" and [c["order"] for c in doc["closings"]] == [4, 5]
+    assert (
+        main(["series", "--order", "2", "--terms", "2", "--system", "meissner", "--duty", "1/3"])
+        == 0
+    )
+    assert "meissner, D = 1/3" in capsys.readouterr().out
+
+
+@pytest.mark.parametrize(
+    "argv, word",
+    [
+        (["boundary", "--order", "1", "--m", "0.3", "--duty", "1"], "0 < D < 1"),
+        (["boundary", "--order", "1", "--m", "0.3", "--duty=-1/2"], "0 < D < 1"),
+        (["boundary", "--order", "1", "--m", "0.3", "--omega-sq", "1,2"], "only for system"),
+        (
+            ["boundary", "--order", "1", "--system", "custom", "--omega-sq", "1,2", "--m", "0.3"],
+            "no depth",
+        ),
+        (["boundary", "--order", "1", "--system", "custom", "--omega-sq", "0,2"], "not positive"),
+        (["boundary", "--order", "1", "--system", "custom", "--omega-sq", "1"], "two numbers"),
+        (
+            ["boundary", "--order", "1", "--system", "custom", "--omega-sq", "1,2", "--jump", "0"],
+            "k > 0",
+        ),
+        (["boundary", "--order", "1", "--system", "torsion"], "needs --m"),
+        (["multipliers", "--T", "1", "--m", "0.3", "--system", "swing"], "not one of"),
+        (
+            [
+                "table",
+                "--orders",
+                "1",
+                "--m",
+                "0.1:0.2:0.1",
+                "--system",
+                "meissner",
+                "--tol",
+                "1e-8",
+            ],
+            "--digits",
+        ),
+        (["series", "--order", "odd", "--system", "torsion"], "integer order"),
+        (["crossings", "--max-order", "5", "--duty", "2"], "0 < D < 1"),
+    ],
+)
+def test_cli_family_bad_input(argv, word, capsys):
+    from reports.cli import main
+
+    assert main(argv) == 2
+    err = capsys.readouterr().err
+    assert err.startswith("paramres: error:") and word in err and "Traceback" not in err

@@ -378,7 +378,7 @@ class _Depths:
         return [self.exact(int(j)) for j in idx]
 
 
-def boundary_grid(orders, m, *, Q=None, damping="exact") -> np.ndarray:
+def boundary_grid(orders, m, *, Q=None, damping="exact", system="pendulum", duty=None):
     """Lower and upper boundaries ``T/T0`` for every order in ``orders`` and depth in ``m``.
 
     Returns a float64 array of shape ``(len(orders), 2, len(m))``: ``[i, 0, j]`` the lower and
@@ -399,7 +399,19 @@ def boundary_grid(orders, m, *, Q=None, damping="exact") -> np.ndarray:
     (``1 - m`` down to ``2**-53``, ``m`` down to 1e-300, orders 1-6 and up to 100).  The order-1
     lower edge, which goes to 0 like ``1 - m``, is solved in ``x = omega_av T/2`` itself
     (:func:`verify.derived.order1_forms`) so that it keeps its relative accuracy.
+
+    **Other members of the family** (``system``, ``duty``; :mod:`analytic.system`): the same
+    double path with the generated parameters (:mod:`verify.system_params`) without friction and
+    in the paper model, for ``1 - m >=`` :data:`FAMILY_OM_MIN`; every other entry (the exact
+    model with friction, depths closer to 1, and the entries the double path cannot bound) comes
+    from the certified route, so the accuracy claim is the same.  ``tests/test_family.py`` checks
+    it on random samples.
     """
+    from .inputs import as_system
+
+    sysv = as_system(system, "1/2" if duty is None else duty)
+    if not sysv.uses_depth:
+        raise InputError(f"a custom system has no depth: there is no grid over m ({sysv.label})")
     orders = [int(o) for o in (orders if not isinstance(orders, int | str) else as_orders(orders))]
     as_orders(orders)  # validates
     scalar = np.ndim(m) == 0
@@ -408,18 +420,37 @@ def boundary_grid(orders, m, *, Q=None, damping="exact") -> np.ndarray:
     damping = as_damping(damping)
     out = np.full((len(orders), 2, dep.size), np.nan)
     doubt = np.zeros((len(orders), dep.size), bool)
-    cols = np.nonzero(dep.double)[0]
-    if cols.size:
-        part, part_doubt = _double_grid(orders, dep, cols, Qx, damping)
-        out[:, :, cols] = part
-        doubt[:, cols] = part_doubt
-    doubt[:, ~dep.double] = True
+    if sysv.is_paper:
+        cols = np.nonzero(dep.double)[0]
+        if cols.size:
+            part, part_doubt = _double_grid(orders, dep, cols, Qx, damping)
+            out[:, :, cols] = part
+            doubt[:, cols] = part_doubt
+        doubt[:, ~dep.double] = True
+    else:
+        served = dep.double & (dep.om >= FAMILY_OM_MIN)
+        if Qx is not None and damping == "exact":
+            served[:] = False
+        cols = np.nonzero(served)[0]
+        if cols.size:
+            Qf = None if Qx is None else float(Qx)
+            P = normal_params(dep.m[cols], Qf, damping, _NP, sysv)
+            part = np.full((len(orders), 2, cols.size), np.nan)
+            doubt[:, cols] = _fill_normal(part, orders, dep.m[cols], P, damped=Qx is not None)
+            out[:, :, cols] = part
+        doubt[:, ~served] = True
     for i, j in zip(*np.nonzero(doubt), strict=True):
-        out[i, :, j] = _certified_point(orders[i], dep.exact(j), Qx, damping)
+        out[i, :, j] = _certified_point(orders[i], dep.exact(j), Qx, damping, sysv)
     return out[..., 0] if scalar else out
 
 
-def _certified_point(n: int, m: Fraction, Q, damping: str) -> tuple[float, float]:
+#: other members of the family: depths closer to 1 than this go to the certified route (their
+#: generated parameters are evaluated from the double depth, whose ``1 - m`` is exact only for a
+#: double input)
+FAMILY_OM_MIN = 1e-6
+
+
+def _certified_point(n: int, m: Fraction, Q, damping: str, system=None) -> tuple[float, float]:
     """Both edges from the certified route (NaN if the interval does not exist), at enough digits
     for a double: 20, more where the route asks for more."""
     from .certify import CertificationError
@@ -428,7 +459,8 @@ def _certified_point(n: int, m: Fraction, Q, damping: str) -> tuple[float, float
     err = None
     for digits in (20, 40, 80, 160):
         try:
-            b = boundary(n, m, Q=Q, damping=damping, digits=digits)
+            kw = {} if system is None else {"system": system}
+            b = boundary(n, m, Q=Q, damping=damping, digits=digits, **kw)
         except CertificationError as exc:
             err = exc
             continue

@@ -35,7 +35,7 @@ from verify.inputs import (
     as_tolerance,
 )
 
-from ._arguments import add_friction
+from ._arguments import add_friction, add_system, system_of
 
 __all__ = ["register", "run", "rows", "decimal_text"]
 
@@ -61,6 +61,7 @@ def register(subparsers) -> None:
         help="depths, e.g. 0.05:0.95:0.05 (exact decimal arithmetic)",
     )
     add_friction(p)
+    add_system(p)
     p.add_argument(
         "--digits",
         default=None,
@@ -115,8 +116,8 @@ def decimal_text(x: Fraction) -> str:
 def _certified(task):
     from verify.solve import boundary
 
-    order, m, Q, damping, digits = task
-    b = boundary(order, m, Q=Q, damping=damping, digits=digits)
+    order, m, Q, damping, digits, system = task
+    b = boundary(order, m, Q=Q, damping=damping, digits=digits, system=system)
     j = b.as_json()
     return (order, m, j["lower"], j["upper"], j["delta_lower"], j["delta_upper"], j["radius"])
 
@@ -135,9 +136,17 @@ def _tol_rows(orders, ms, Q, damping, tol, label):
     return out
 
 
-def rows(orders, ms, Q, damping, digits, jobs=1, label="table", tol=None):
+def rows(orders, ms, Q, damping, digits, jobs=1, label="table", tol=None, system=None):
     """Table rows ``(order, m, lower, upper[, delta_lower, delta_upper, radius[, method]])`` as
-    text (``method`` with a tolerance ``tol``)."""
+    text (``method`` with a tolerance ``tol``), for ``system`` (default: the paper's pendulum)."""
+    from analytic.system import PAPER
+
+    system = PAPER if system is None else system
+    if tol is not None and not system.is_paper:
+        raise InputError(
+            f"--tol chooses among methods built for the paper's system; use --digits for "
+            f"{system.label}"
+        )
     if tol is not None:
         return _tol_rows(orders, ms, Q, damping, tol, label)
     if digits is None:
@@ -150,13 +159,13 @@ def rows(orders, ms, Q, damping, digits, jobs=1, label="table", tol=None):
                 return None
             return mpmath.nstr(mpmath.mpf(float(v)), GRID_DIGITS, strip_zeros=False)
 
-        grid = boundary_grid(orders, list(ms), Q=Q, damping=damping)  # the exact depths
+        grid = boundary_grid(orders, list(ms), Q=Q, damping=damping, system=system)
         out = []
         for i, n in enumerate(orders):
             for j, m in enumerate(ms):
                 out.append((n, m, fmt(grid[i, 0, j]), fmt(grid[i, 1, j])))
         return out
-    tasks = [(n, m, Q, damping, digits) for n in orders for m in ms]
+    tasks = [(n, m, Q, damping, digits, system) for n in orders for m in ms]
     if jobs > 1 and len(tasks) > 1:
         ctx = multiprocessing.get_context("spawn" if os.name == "nt" else "fork")
         with ctx.Pool(jobs) as pool:
@@ -185,13 +194,17 @@ def run(args) -> int:
     if len(orders) * len(ms) > 2_000_000:
         raise InputError(f"{len(orders) * len(ms)} table entries; at most 2000000 allowed")
     Qtext = None if Q is None else decimal_text(Fraction(Q))
-    data = rows(orders, ms, Q, damping, digits, jobs, tol=tol)
+    sysv = system_of(args)
+    if not sysv.uses_depth:
+        raise InputError("a custom system has no depth: a table over m makes no sense for it")
+    data = rows(orders, ms, Q, damping, digits, jobs, tol=tol, system=sysv)
     certified = digits is not None or tol is not None
     header = ["order", "m", "lower", "upper"]
     header += ["delta_lower", "delta_upper", "radius"] if certified else []
     header += ["method"] if tol is not None else []
     if args.format == "json":
         doc = {
+            **sysv.as_json(),
             "orders": orders,
             "Q": Qtext,
             "damping": damping if Q is not None else "none",
