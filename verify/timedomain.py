@@ -47,8 +47,13 @@ from functools import cache
 import mpmath
 import numpy as np
 
+from analytic.system import PAPER, phase_regimes
+
+from .params import exact_fraction
+
 from .inputs import (
     InputError,
+    as_system,
     as_damping,
     as_depth,
     as_digits,
@@ -118,18 +123,14 @@ def as_amplitude(A) -> Fraction:
 # the derived building blocks, lambdified once
 
 
-def _regime(m, Q, half: int, model: str) -> str:
-    """``"under"``, ``"critical"`` or ``"over"``: the sign of ``omega_i**2 - gamma**2``, i.e. of
-    ``4 Q**2 - (1 -+ m)`` (exact for rational ``m`` and ``Q``)."""
+def _regime(m, Q, half: int, model: str, system=PAPER) -> str:
+    """``"under"``, ``"critical"`` or ``"over"``: the sign of ``omega_i**2 - gamma**2``
+    (:func:`analytic.system.phase_regimes`, exact for rational ``m`` and ``Q``)."""
     if Q is None or model == "paper":
         return "under"
-    one = (1 + m) if half == 1 else (1 - m)
-    if isinstance(m, Fraction) and isinstance(Q, Fraction):
-        d = 4 * Q * Q - one
-    else:
-        with mpmath.workdps(50):
-            d = 4 * _mp(Q) ** 2 - _mp(one)
-    return "under" if d > 0 else ("critical" if d == 0 else "over")
+    mq = m if isinstance(m, Fraction) else exact_fraction(m)
+    Qq = Q if isinstance(Q, Fraction) else exact_fraction(Q)
+    return phase_regimes(system, mq, Qq, model)[half - 1]
 
 
 @cache
@@ -270,6 +271,8 @@ class Simulation:
     rtol: float | None = None
     atol: float | None = None
     saturation_estimate: float | None = None
+    #: the member of the family (:mod:`analytic.system`)
+    system: object = PAPER
 
     # -- derived figures ---------------------------------------------------------------------
 
@@ -330,6 +333,7 @@ class Simulation:
                 return mpmath.nstr(mpmath.mpmathify(x), d, min_fixed=-5, max_fixed=5)
 
         out = {
+            **self.system.as_json(),
             "closure_error": num(self.closure_error),
             "growth_per_period": num(self.growth_per_period),
             "floquet_multiplier": num(self.floquet_multiplier),
@@ -455,6 +459,8 @@ def simulate(
     rtol: float = RTOL,
     atol: float = ATOL,
     progress=None,
+    system="pendulum",
+    duty="1/2",
 ) -> Simulation:
     """Follow the pendulum for ``periods`` modulation periods; see the module docstring.
 
@@ -464,13 +470,23 @@ def simulate(
     the edge period).  ``samples`` per half period for the plotted segments (default: fewer when
     the run is long).  ``initial``: a start ``(phi, phi')`` in rad and rad/T0 (then ``amplitude`` is
     not used).  ``progress``: an optional wrapper for the loop over periods (e.g.
-    :func:`reports.output.progress`).
+    :func:`reports.output.progress`).  ``system``, ``duty``: a member of the family
+    (:mod:`analytic.system`; ``m`` is ``None`` for a custom system); the nonlinear model is the
+    pendulum's (``sin phi``) and is offered for ``system="pendulum"`` only.
     """
     from . import boundary
     from .floquet import floquet_multipliers, floquet_vector, monodromy_matrix
 
+    sysv = as_system(system, duty)
     n = as_order(order)
-    m = as_depth(m)
+    if sysv.uses_depth:
+        m = as_depth(m)
+    elif m is not None:
+        raise InputError(f"a custom system has no depth: leave m out (got m = {m!r})")
+    if nonlinear and sysv.name != "pendulum":
+        raise InputError(
+            f"the nonlinear model (sin phi) is the pendulum's; {sysv.name} is simulated linearly"
+        )
     Q = as_quality(Q)
     model = as_damping(damping)
     digits = as_digits(digits)
@@ -497,7 +513,7 @@ def simulate(
     P = 2 if n % 2 else 1
     work = digits + _GUARD
 
-    bnd = boundary(n, m, Q=Q, damping=model, digits=work)
+    bnd = boundary(n, m, Q=Q, damping=model, digits=work, system=sysv)
     interval = (bnd.lower, bnd.upper) if bnd.exists else None
 
     with mpmath.workdps(work):
@@ -511,18 +527,18 @@ def simulate(
         else:
             tau = _mp(T)
         tau = mpmath.mpf(tau)
-        w1 = 2 * mpmath.pi / mpmath.sqrt(1 + _mp(m))
+        w1 = 2 * mpmath.pi * mpmath.sqrt(_mp(sysv.omega1_sq(m if sysv.uses_depth else None)))
 
         # the start
         kind = None
         if start is not None:
             v = start
-        elif edge is not None and Q is None:
+        elif edge is not None and Q is None and sysv.is_paper:
             kind = _edge_kind(n, m, tau)
             num, den = _initial_ratio(kind)
             v = (den(_mp(m), tau), num(_mp(m), tau))  # (phi, phi') up to a factor
         elif edge is not None:
-            M = monodromy_matrix(m, tau, Q, model, dps=work)
+            M = monodromy_matrix(m, tau, Q, model, dps=work, system=sysv)
             v = floquet_vector(M, mpmath.mpf(sigma))
         else:
             v = (mpmath.mpf(1), mpmath.mpf(0))
@@ -536,14 +552,14 @@ def simulate(
                 v = (-v[0], -v[1])
             scale = _mp(A) / _norm(v, w1)
             s0 = (v[0] * scale, v[1] * scale)
-        mus = floquet_multipliers(m, tau, Q, model, dps=digits)
+        mus = floquet_multipliers(m, tau, Q, model, dps=digits, system=sysv)
 
     if samples is None:
         samples = int(max(16, min(256, 400_000 // (2 * K))))
     steps = max(K, 2)
     loop = range(steps) if progress is None else progress(range(steps), total=steps)
     if nonlinear:
-        strobe, segments = _run_nonlinear(m, Q, tau, s0, loop, K, samples, rtol, atol)
+        strobe, segments = _run_nonlinear(m, Q, tau, s0, loop, K, samples, rtol, atol, sysv)
         with mpmath.workdps(work):
             strobe_mp = [tuple(mpmath.mpf(float(x)) for x in s) for s in strobe]
         method = (
@@ -552,7 +568,7 @@ def simulate(
             + ("exact friction" if Q is not None else "no friction")
         )
     else:
-        strobe_mp, segments = _run_linear(m, Q, eff, tau, s0, loop, K, samples, work)
+        strobe_mp, segments = _run_linear(m, Q, eff, tau, s0, loop, K, samples, work, sysv)
         strobe = strobe_mp
         method = (
             f"linear model, exact piecewise propagation (closed-form segments of "
@@ -611,6 +627,7 @@ def simulate(
         rtol=rtol if nonlinear else None,
         atol=atol if nonlinear else None,
         saturation_estimate=sat,
+        system=sysv,
     )
 
 
@@ -642,41 +659,46 @@ def _edge_kind(n: int, m, tau) -> str:
     return min(vals, key=vals.get).value
 
 
-def _frequencies(m, Q, eff, work):
-    """``omega_i``, ``gamma``, ``Omega_i``, ``Lambda_i`` (the latter zero where not applicable)."""
+def _frequencies(m, Q, eff, work, system=PAPER):
+    """``omega_i``, ``gamma``, ``Omega_i``, ``Lambda_i`` (the latter zero where not applicable),
+    from the system's description (``omega0 = 2 pi``)."""
     with mpmath.workdps(work):
-        mm = _mp(m)
         g = mpmath.mpf(0) if Q is None else mpmath.pi / _mp(Q)
         out = []
-        for half, one in ((1, 1 + mm), (2, 1 - mm)):
-            w = 2 * mpmath.pi / mpmath.sqrt(one)
+        W = system.values(m if system.uses_depth else None)[:2]
+        for half, Wi in ((1, W[0]), (2, W[1])):
+            w = 2 * mpmath.pi * mpmath.sqrt(_mp(Wi))
             z = w * w - g * g
-            reg = _regime(m, Q, half, eff)
+            reg = _regime(m, Q, half, eff, system)
             Om = mpmath.sqrt(z) if reg == "under" and eff == "exact" else mpmath.mpf(0)
             La = mpmath.sqrt(-z) if reg == "over" else mpmath.mpf(0)
             out.append((w, g, Om, La, reg))
         return out
 
 
-def _run_linear(m, Q, eff, tau, s0, loop, K, samples, work):
-    freqs = _frequencies(m, Q, eff, work)
+def _run_linear(m, Q, eff, tau, s0, loop, K, samples, work, system=PAPER):
+    freqs = _frequencies(m, Q, eff, work, system)
     U_mp = [_propagator(eff, freqs[h][4], h + 1, "mpmath") for h in (0, 1)]
     U_np = [_propagator(eff, freqs[h][4], h + 1, "numpy") for h in (0, 1)]
-    j12, j21 = _jump("mpmath")
     with mpmath.workdps(work):
-        mm = _mp(m)
-        k12, k21 = j12(mm), j21(mm)
-        half = tau / 2
+        if system.is_paper:
+            j12, j21 = _jump("mpmath")
+            mm = _mp(m)
+            k12, k21 = j12(mm), j21(mm)
+        else:
+            k12 = _mp(Fraction(system.jump(m if system.uses_depth else None)))
+            k21 = 1 / k12
+        lengths = (tau * _mp(system.duty), tau - tau * _mp(system.duty))
         maps = []
         for h in (0, 1):
             w, g, Om, La, _ = freqs[h]
-            maps.append([f(half, w, g, Om, La) for f in U_mp[h]])
-        tgrid = np.linspace(0.0, float(half), samples)
+            maps.append([f(lengths[h], w, g, Om, La) for f in U_mp[h]])
+        tgrids = [np.linspace(0.0, float(lengths[h]), samples) for h in (0, 1)]
         fl = [tuple(float(x) for x in freqs[h][:4]) for h in (0, 1)]
         with np.errstate(all="ignore"):
             dense = [
                 [
-                    np.broadcast_to(np.asarray(f(tgrid, *fl[h]), dtype=float), tgrid.shape)
+                    np.broadcast_to(np.asarray(f(tgrids[h], *fl[h]), dtype=float), tgrids[h].shape)
                     for f in U_np[h]
                 ]
                 for h in (0, 1)
@@ -692,28 +714,30 @@ def _run_linear(m, Q, eff, tau, s0, loop, K, samples, work):
                     A_, B_, C_, D_ = dense[h]
                     with np.errstate(all="ignore"):
                         phi, dphi = A_ * p0 + B_ * v0, C_ * p0 + D_ * v0
-                    segments.append(Segment(h + 1, float(k * tau + h * half) + tgrid, phi, dphi))
+                    t0 = float(k * tau + h * lengths[0])
+                    segments.append(Segment(h + 1, t0 + tgrids[h], phi, dphi))
                 s = (a * s[0] + b * s[1], c * s[0] + d * s[1])
                 s = (s[0], s[1] * (k12 if h == 0 else k21))
             strobe.append(s)
     return strobe, segments
 
 
-def _run_nonlinear(m, Q, tau, s0, loop, K, samples, rtol, atol):
+def _run_nonlinear(m, Q, tau, s0, loop, K, samples, rtol, atol, system=PAPER):
     from scipy.integrate import solve_ivp
 
-    mf = float(m)
-    w2 = [(2 * math.pi) ** 2 / (1 + mf), (2 * math.pi) ** 2 / (1 - mf)]
+    W = system.values(m)
+    w2 = [(2 * math.pi) ** 2 * float(W[0]), (2 * math.pi) ** 2 * float(W[1])]
     g = 0.0 if Q is None else math.pi / float(Q)
-    k12 = ((1 + mf) / (1 - mf)) ** 2
-    half = float(tau) / 2
+    k12 = float(W[2])
+    lengths = (float(tau) * float(system.duty), float(tau) * (1 - float(system.duty)))
     s = np.array([float(s0[0]), float(s0[1])])
     strobe = [tuple(s)]
     segments = []
-    tgrid = np.linspace(0.0, half, samples)
     for k in loop:
         for h in (0, 1):
             w = w2[h]
+            half = lengths[h]
+            tgrid = np.linspace(0.0, half, samples)
 
             def rhs(t, y, w=w):
                 return [y[1], -2 * g * y[1] - w * math.sin(y[0])]
@@ -725,7 +749,8 @@ def _run_nonlinear(m, Q, tau, s0, loop, K, samples, rtol, atol):
                 raise RuntimeError(f"integration failed in period {k}: {sol.message}")
             if k < K:
                 y = sol.sol(tgrid)
-                segments.append(Segment(h + 1, k * float(tau) + h * half + tgrid, y[0], y[1]))
+                t0 = k * float(tau) + h * lengths[0]
+                segments.append(Segment(h + 1, t0 + tgrid, y[0], y[1]))
             s = sol.y[:, -1].copy()
             s[1] *= k12 if h == 0 else 1 / k12
         strobe.append(tuple(s))

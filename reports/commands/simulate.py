@@ -19,7 +19,7 @@ import mpmath
 from reports.output import dump_json, progress
 from verify.timedomain import EDGES, MAX_PERIODS
 
-from ._arguments import add_depth, add_friction, add_json, add_order
+from ._arguments import add_depth, add_friction, add_json, add_order, add_system, system_of
 
 __all__ = ["register", "run", "render_text"]
 
@@ -40,7 +40,7 @@ def register(subparsers) -> None:
         formatter_class=argparse.RawDescriptionHelpFormatter,
     )
     add_order(p)
-    add_depth(p)
+    add_depth(p, required=False)
     where = p.add_mutually_exclusive_group(required=True)
     where.add_argument(
         "--edge", choices=EDGES, help="start on this edge of the interval of order N"
@@ -49,6 +49,7 @@ def register(subparsers) -> None:
         "--T", metavar="T", help="modulation period in units of T0 (start from rest at angle A)"
     )
     add_friction(p)
+    add_system(p)
     p.add_argument(
         "--periods",
         metavar="K",
@@ -82,6 +83,7 @@ def run(args) -> int:
     from verify.timedomain import simulate
 
     plot = check_plot_path(args.plot) if args.plot else None  # refuse a bad name before any work
+    sysv = system_of(args)
     sim = simulate(
         args.order,
         args.m,
@@ -94,6 +96,7 @@ def run(args) -> int:
         nonlinear=args.nonlinear,
         digits=args.digits,
         progress=lambda it, total: progress(it, total=total, label="simulate"),
+        system=sysv,
     )
     if plot is not None:
         fig = time_figure(sim, numbered=0 if sim.periods > 4 else 8, envelope=sim.nonlinear)
@@ -123,7 +126,8 @@ def render_text(sim, plot=None) -> str:
     lines = []
     where = f"{sim.edge} edge" if sim.edge else "given period"
     fr = "no friction" if sim.Q is None else f"Q = {sim.Q}, {sim.damping} friction model"
-    lines.append(f"order {sim.order}, m = {sim.m}, {fr}")
+    head = f"order {sim.order}, " + ("" if sim.m is None else f"m = {sim.m}, ") + fr
+    lines.append(head if sim.system.is_paper else f"{sim.system.label}: {head}")
     lines.append(f"  T/T0 = {_fmt(sim.tau, sim.digits)} ({where})")
     if sim.interval is not None:
         lo, hi = (_fmt(x, 12) for x in sim.interval)
