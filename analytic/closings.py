@@ -294,7 +294,7 @@ def _closing(n: int, a: int, b: int) -> Closing:
 def closings(max_order: int = 12) -> Closings:
     """The closing theorem with its derivation steps, and every closing of orders ``1..max_order``
     (sorted by order, then depth)."""
-    from verify.inputs import InputError, as_order
+    from paramres.inputs import InputError, as_order
 
     n_max = as_order(max_order)
     if n_max > 200:

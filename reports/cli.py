@@ -40,6 +40,9 @@ def build_parser() -> argparse.ArgumentParser:
             "(0 < m < 1), friction is the quality factor Q."
         ),
     )
+    from paramres import __version__
+
+    parser.add_argument("--version", action="version", version=f"{PROG} {__version__}")
     sub = parser.add_subparsers(dest="command", metavar="COMMAND", parser_class=_Parser)
     sub.required = True
     for info in sorted(pkgutil.iter_modules(commands.__path__), key=lambda i: i.name):
