@@ -33,7 +33,8 @@ from analytic.reductions import Step
 def _sample():
     t, m = sp.symbols("t m", positive=True)
     f = sp.Function("phi")
-    expr = sp.Eq(f(t).diff(t), -m * sp.cos(sp.pi * t / 3) * f(t) + sp.Rational(3, 7) + sp.Float(0.1))
+    rhs = -m * sp.cos(sp.pi * t / 3) * f(t) + sp.Rational(3, 7) + sp.Float(0.1)
+    expr = sp.Eq(f(t).diff(t), rhs)
     return {
         "none": None,
         "flags": [True, False],
