@@ -14,7 +14,8 @@ import importlib
 import pkgutil
 import sys
 
-from verify.inputs import InputError
+from paramres.inputs import InputError
+from verify.certify import CertificationError
 
 from . import commands
 
@@ -61,11 +62,19 @@ def main(argv: list[str] | None = None) -> int:
     except InputError as exc:
         print(f"{PROG}: error: {exc}", file=sys.stderr)
         return 2
+    except CertificationError as exc:
+        # a proof the engine could not complete at this input and precision: say so, no traceback
+        print(f"{PROG}: error: {_one_line(exc)}", file=sys.stderr)
+        return 2
     except KeyboardInterrupt:  # pragma: no cover
         print(f"{PROG}: interrupted", file=sys.stderr)
         return 130
     except BrokenPipeError:  # pragma: no cover - e.g. `paramres table | head`
         return 0
+
+
+def _one_line(exc: BaseException) -> str:
+    return " ".join(str(exc).split()) or type(exc).__name__
 
 
 if __name__ == "__main__":  # pragma: no cover
