@@ -49,10 +49,10 @@ import numpy as np
 
 from .inputs import (
     InputError,
-    as_number,
     as_damping,
     as_depth,
     as_digits,
+    as_number,
     as_order,
     as_period,
     as_quality,
