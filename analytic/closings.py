@@ -41,7 +41,8 @@ from math import gcd
 
 import sympy as sp
 
-from .errors import InputError
+from paramres.inputs import InputError
+
 from .identity import Verdict, prove_zero
 from .model import Damping, S
 from .normal_form import edge_factor, normal_form

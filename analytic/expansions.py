@@ -224,7 +224,7 @@ class EdgeSeries:
 
 
 def _check_terms(terms) -> int:
-    from verify.inputs import InputError
+    from paramres.inputs import InputError
 
     if isinstance(terms, bool) or not isinstance(terms, int) or not 1 <= terms <= MAX_TERMS:
         raise InputError(f"terms {terms!r} is outside the allowed range 1 to {MAX_TERMS}")
@@ -232,7 +232,7 @@ def _check_terms(terms) -> int:
 
 
 def _check_order(order):
-    from verify.inputs import as_order
+    from paramres.inputs import as_order
 
     if isinstance(order, str) and order.strip().lower() in _PARITY_WORDS:
         return order.strip().lower()
@@ -253,7 +253,7 @@ def edge_series(
     ``system``: another member of the family or duty (:mod:`analytic.system`): frictionless series
     for integer orders (:mod:`analytic.family_series`).
     """
-    from verify.inputs import InputError, as_damping, as_quality
+    from paramres.inputs import InputError, as_damping, as_quality
 
     order = _check_order(order)
     terms = _check_terms(terms)

@@ -26,7 +26,7 @@ from collections.abc import Callable
 from dataclasses import dataclass
 from fractions import Fraction
 
-from .errors import InputError
+from paramres.inputs import InputError, as_number
 
 __all__ = [
     "System",
@@ -214,10 +214,9 @@ def _text(x: Fraction) -> str:
 
 
 def _rational(value, what: str, allowed: str) -> Fraction:
-    """A user value as an exact positive rational (decimal strings are exact)."""
-    from .errors import parse_rational
-
-    return parse_rational(value, what, allowed)
+    """A user value as an exact rational (decimal strings are exact; a float means its shortest
+    decimal)."""
+    return as_number(value, name=what, allowed=allowed)
 
 
 def _as_duty(duty) -> Fraction:

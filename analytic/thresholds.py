@@ -215,7 +215,7 @@ def threshold_series(order, terms: int = 4, *, damping: str = "exact") -> Thresh
     ``order``: an integer, or ``"odd"``/``"even"`` (symbol ``n``).  ``damping``: ``"paper"`` or
     ``"exact"``.  See :class:`ThresholdSeries`.
     """
-    from verify.inputs import as_damping
+    from paramres.inputs import as_damping
 
     from .expansions import _check_order
 

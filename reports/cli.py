@@ -14,8 +14,8 @@ import importlib
 import pkgutil
 import sys
 
+from paramres.inputs import InputError
 from verify.certify import CertificationError
-from verify.inputs import InputError
 
 from . import commands
 
@@ -41,6 +41,9 @@ def build_parser() -> argparse.ArgumentParser:
             "(0 < m < 1), friction is the quality factor Q."
         ),
     )
+    from paramres import __version__
+
+    parser.add_argument("--version", action="version", version=f"{PROG} {__version__}")
     sub = parser.add_subparsers(dest="command", metavar="COMMAND", parser_class=_Parser)
     sub.required = True
     for info in sorted(pkgutil.iter_modules(commands.__path__), key=lambda i: i.name):
@@ -59,14 +62,19 @@ def main(argv: list[str] | None = None) -> int:
     except InputError as exc:
         print(f"{PROG}: error: {exc}", file=sys.stderr)
         return 2
-    except CertificationError as exc:  # a valid input whose proof is out of reach
-        print(f"{PROG}: error: no proven result: {exc}", file=sys.stderr)
+    except CertificationError as exc:
+        # a proof the engine could not complete at this input and precision: say so, no traceback
+        print(f"{PROG}: error: {_one_line(exc)}", file=sys.stderr)
         return 2
     except KeyboardInterrupt:  # pragma: no cover
         print(f"{PROG}: interrupted", file=sys.stderr)
         return 130
     except BrokenPipeError:  # pragma: no cover - e.g. `paramres table | head`
         return 0
+
+
+def _one_line(exc: BaseException) -> str:
+    return " ".join(str(exc).split()) or type(exc).__name__
 
 
 if __name__ == "__main__":  # pragma: no cover

@@ -356,9 +356,9 @@ def check_plot_path(path) -> Path:
     path = Path(path)
     if path.suffix.lower() not in FORMATS:
         raise InputError(f"plot file {str(path)!r} must end in one of: {', '.join(FORMATS)}")
-    if path.is_dir():
-        raise InputError(f"plot file {str(path)!r} is a directory")
-    return path
+    from .output import check_writable
+
+    return check_writable(path, "plot file")
 
 
 def figure_bytes(fig: Figure, suffix: str, what: str = "report") -> bytes:

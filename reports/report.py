@@ -120,7 +120,9 @@ def build_report(
     with cache_dir_override(cache_dir) as base:
         report_cache = None if base is None else base / "report"
         ctx = Context(
-            config=config, cache=Cache(report_cache, ("analytic", "verify", "reports")), log=log
+            config=config,
+            cache=Cache(report_cache, ("analytic", "verify", "reports", "paramres")),
+            log=log,
         )
         assembled = assemble(ctx, sections)
     if engine is not None:

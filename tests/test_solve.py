@@ -122,7 +122,9 @@ def test_result_object():
 @pytest.mark.parametrize("m", ["0.3", 0.3, Fraction(3, 10), mpmath.mpf("0.3")])
 def test_depth_types(m):
     b = boundary(1, m, digits=20)
-    ref = boundary(1, Fraction(0.3) if isinstance(m, float | mpmath.mpf) else "3/10", digits=20)
+    # a float means its shortest decimal (0.3 is 3/10, as on the command line); an mpf its binary
+    # value
+    ref = boundary(1, Fraction(0.3) if isinstance(m, mpmath.mpf) else "3/10", digits=20)
     assert b.lower == ref.lower
     if isinstance(m, str):
         assert b.m == Fraction(3, 10)  # "0.3" is exact

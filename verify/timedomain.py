@@ -57,6 +57,7 @@ from .inputs import (
     as_damping,
     as_depth,
     as_digits,
+    as_number,
     as_order,
     as_period,
     as_quality,
@@ -105,15 +106,8 @@ def as_periods(K) -> int:
 
 def as_amplitude(A) -> Fraction:
     """The initial amplitude in radians, ``0 < A < pi`` (an angle beyond ``pi`` is not a swing),
-    kept exact (``"0.1"`` is ``1/10``; a float is taken at its binary value)."""
-    try:
-        if isinstance(A, bool):
-            raise TypeError
-        if isinstance(A, float) and not math.isfinite(A):
-            raise ValueError
-        val = Fraction(A.strip()) if isinstance(A, str) else Fraction(A)
-    except (TypeError, ValueError, ZeroDivisionError):
-        raise InputError(f"amplitude {A!r} is not a number; allowed range 0 < A < pi") from None
+    kept exact (``"0.1"`` is ``1/10``; a float means its shortest decimal)."""
+    val = as_number(A, name="amplitude", allowed="0 < A < pi")
     if not 0 < val < math.pi:
         raise InputError(f"amplitude {A!r} is outside the allowed range 0 < A < pi (radians)")
     return val

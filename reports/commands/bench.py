@@ -16,10 +16,8 @@ from __future__ import annotations
 
 import argparse
 import json
-import os
 
 from reports.output import BANNER, atomic_write, dump_json, progress
-from verify.inputs import InputError
 
 __all__ = ["register", "run", "render_text", "plot"]
 
@@ -72,7 +70,17 @@ def render_text(result) -> str:
 
 def plot(result, path) -> None:
     """The Pareto picture of ``result`` written to ``path``."""
-    from reports.benchplots import pareto_figure, save_figure
+    from reports.output import atomic_write
+
+    atomic_write(path, plot_bytes(result, path))
+
+
+def plot_bytes(result, path) -> bytes:
+    """The Pareto picture of ``result`` rendered in the format ``path``'s suffix names."""
+    from pathlib import Path
+
+    from reports.benchplots import pareto_figure
+    from reports.figures import figure_bytes
     from verify.bench import pareto
 
     m = result.machine
@@ -83,29 +91,33 @@ def plot(result, path) -> None:
         ],
         subtitle=f"paramres bench, {result.date}, {m['cpu']} ({m['cores']} cores)",
     )
-    save_figure(fig, path)
+    return figure_bytes(fig, Path(path).suffix, what="bench")
 
 
 def run(args) -> int:
+    from reports.output import check_writable
     from verify.bench import run as bench_run
 
+    # refuse a bad file name before the work
     if args.plot:
         from reports.figures import check_plot_path
 
-        check_plot_path(args.plot)  # refuse a bad file name before the work
-    if args.output and os.path.isdir(args.output):
-        raise InputError(f"--output {args.output!r} is a directory")
+        check_plot_path(args.plot)
+    if args.output:
+        check_writable(args.output, "--output")
 
     def bar(items):
         return progress(items, total=len(items), label="bench")
 
     result = bench_run(quick=args.quick, progress=bar)
     doc = result.as_json()
+    # everything is rendered before anything is written
+    picture = plot_bytes(result, args.plot) if args.plot else None
     if args.output:
         text = json.dumps({"generated_by": BANNER.format(what="bench"), **doc}, indent=2)
         atomic_write(args.output, text + "\n")
-    if args.plot:
-        plot(result, args.plot)
+    if picture is not None:
+        atomic_write(args.plot, picture)
     if args.json:
         dump_json(doc)
     else:

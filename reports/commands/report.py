@@ -52,13 +52,10 @@ def run(args) -> int:
     from analytic.cache import cache_dir
 
     from ..build import BuildError, how_to_get_pdf
+    from ..output import check_writable
     from ..report import TEX_NAME, build_report
 
-    out = Path(args.out)
-    if out.exists() and not out.is_dir():
-        from verify.inputs import InputError
-
-        raise InputError(f"--out {out} exists and is not a directory")
+    out = check_writable(args.out, "--out", directory=True)  # before any work
     cache = None if args.no_cache else (Path(args.cache) if args.cache else cache_dir())
     if cache is not None and cache.exists() and not cache.is_dir():
         from verify.inputs import InputError

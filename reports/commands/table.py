@@ -189,8 +189,12 @@ def run(args) -> int:
         raise InputError(f"--jobs {args.jobs!r} is not an integer; allowed range 1 to 64") from None
     if not 1 <= jobs <= 64:
         raise InputError(f"--jobs {jobs} is outside the allowed range 1 to 64")
-    if args.output is not None and os.path.isdir(args.output):
-        raise InputError(f"--output {args.output!r} is a directory")
+    if args.output is not None:  # refuse an unwritable file before the work
+        from reports.output import check_writable
+
+        check_writable(args.output, "--output")
+        if args.format == "csv":
+            check_writable(sidecar(args.output), "--output's metadata file")
     if len(orders) * len(ms) > 2_000_000:
         raise InputError(f"{len(orders) * len(ms)} table entries; at most 2000000 allowed")
     Qtext = None if Q is None else decimal_text(Fraction(Q))
@@ -215,20 +219,39 @@ def run(args) -> int:
         }
         if tol is not None:
             doc["tolerance"] = args.tol.strip()
-        if args.output:
-            doc = {"generated_by": BANNER.format(what="table"), **doc}
         text = json.dumps(doc, indent=2) + "\n"
     else:
         buf = io.StringIO()
-        if args.output:
-            buf.write("# " + BANNER.format(what="table") + "\n")
         w = csv.writer(buf, lineterminator="\n")
         w.writerow(header)
         for r in data:
             w.writerow([r[0], decimal_text(r[1])] + ["" if v is None else v for v in r[2:]])
         text = buf.getvalue()
     if args.output:
+        # the file holds exactly what standard output would show; a CSV's metadata (what the
+        # columns mean, the inputs) goes to a JSON file beside it
+        if args.format == "csv":
+            meta = {
+                "generated_by": BANNER.format(what="table"),
+                "file": os.path.basename(args.output),
+                "orders": orders,
+                "Q": Qtext,
+                "damping": damping if Q is not None else "none",
+                "digits": (
+                    digits if digits is not None else (None if tol is not None else GRID_DIGITS)
+                ),
+                "method": "auto" if tol is not None else ("certified" if certified else "grid"),
+                "columns": header,
+            }
+            if tol is not None:
+                meta["tolerance"] = args.tol.strip()
+            atomic_write(sidecar(args.output), json.dumps(meta, indent=2) + "\n")
         atomic_write(args.output, text)
     else:
         print(text, end="")
     return 0
+
+
+def sidecar(path) -> str:
+    """The metadata file written beside a CSV table: ``FILE.meta.json``."""
+    return f"{path}.meta.json"

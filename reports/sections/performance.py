@@ -19,7 +19,11 @@ CACHED = False
 #: the paper's time-domain figures redrawn here (numbers of :data:`reports.timeplots.PAPER_SCENES`)
 SCENES = (1, 4, 7, 9)
 #: where the benchmark writes its measurements (relative to the project root)
-BENCH_RESULTS = Path(__file__).resolve().parents[2] / "benchmarks" / "results.json"
+#: the benchmark's results: in a source tree ``benchmarks/results.json``; an installed wheel carries
+#: a copy as ``paramres/data/bench-results.json`` (see setup.py)
+_SOURCE_RESULTS = Path(__file__).resolve().parents[2] / "benchmarks" / "results.json"
+_PACKAGED_RESULTS = Path(__file__).resolve().parents[2] / "paramres" / "data" / "bench-results.json"
+BENCH_RESULTS = _PACKAGED_RESULTS if _PACKAGED_RESULTS.is_file() else _SOURCE_RESULTS
 
 
 def _time_domain(ctx: Context) -> tuple[list[Latex], list[tuple[str, bytes]]]:

@@ -1,0 +1,114 @@
+"""Every input gets an answer: the inputs that used to end in a traceback or a hang now end with
+exit status 2 and one line ``paramres: error: ...`` naming the value and the allowed range, and
+unwritable outputs are refused before any work, with nothing written."""
+
+from __future__ import annotations
+
+import time
+
+import pytest
+
+from paramres.inputs import InputError, as_depth, as_number, as_quality, as_tolerance
+from reports.cli import main
+
+
+def run(capsys, argv):
+    code = main(argv)
+    out, err = capsys.readouterr()
+    return code, out, err
+
+
+def refused(capsys, argv, *words):
+    code, out, err = run(capsys, argv)
+    assert code == 2, (argv, out, err)
+    lines = err.strip().splitlines()
+    assert len(lines) == 1 and lines[0].startswith("paramres: error: "), err
+    for w in words:
+        assert w in lines[0], (w, lines[0])
+    return lines[0]
+
+
+@pytest.mark.parametrize(
+    "argv, words",
+    [
+        (["boundary", "--order", "1", "--m", "1e-5000"], ("1e-5000", "0 < m < 1")),
+        (["boundary", "--order", "1", "--m", "1e999999999"], ("1e999999999", "0 < m < 1")),
+        (["boundary", "--order", "1", "--m", "0.3", "--Q", "1e400"], ("1e400", "Q <=")),
+        (["table", "--orders", "1", "--m", "0.1:0.2:0.1", "--Q", "1e400"], ("1e400", "Q <=")),
+        (["existence", "--order", "1", "--Q", "1e400"], ("1e400", "Q <=")),
+        (["existence", "--order", "1", "--Q", "1e-400"], ("1e-400", "<= Q")),
+        (["boundary", "--order", "1", "--m", "0.3", "--tol", "1/0"], ("1/0", "0.1")),
+        (["table", "--orders", "1", "--m", "1e999999999:1:1"], ("1e999999999",)),
+        (["table", "--orders", "1", "--m", "1e-5000:0.1:0.1"], ("0 < m < 1",)),
+        (["simulate", "--order", "1", "--m", "0.3", "--T", "1e999999999"], ("1e999999999",)),
+        (
+            ["simulate", "--order", "1", "--m", "0.3", "--edge", "lower", "--amplitude", "1e99999"],
+            ("1e99999",),
+        ),
+        (["boundary", "--order", "9" * 5000, "--m", "0.3"], ("order", "1 to")),
+        (["boundary", "--order", "1", "--m", "0.3", "--digits", "9" * 5000], ("digits",)),
+    ],
+)
+def test_refused_at_once(capsys, argv, words):
+    start = time.monotonic()
+    refused(capsys, argv, *words)
+    # a hang would show here (the exponent used to be expanded); generous bound, not a benchmark
+    assert time.monotonic() - start < 30
+
+
+def test_unwritable_outputs_refused_before_any_work(capsys, tmp_path):
+    afile = tmp_path / "afile"
+    afile.write_text("x")
+    refused(
+        capsys,
+        ["table", "--orders", "1", "--m", "0.1:0.2:0.1", "--output", "/proc/x.csv"],
+        "/proc/x.csv",
+    )
+    refused(
+        capsys,
+        ["simulate", "--order", "1", "--m", "0.3", "--edge", "lower", "--plot", "/proc/x.png"],
+        "/proc/x.png",
+    )
+    refused(
+        capsys,
+        ["report", "--out", str(afile / "sub"), "--no-pdf", "-q", "--no-cache"],
+        "not a directory",
+    )
+    refused(
+        capsys,
+        ["table", "--orders", "1", "--m", "0.1:0.2:0.1", "--output", str(tmp_path)],
+        "directory",
+    )
+    # the JSON is not written when the plot cannot be (it used to be written, then a crash)
+    target = tmp_path / "a.json"
+    start = time.monotonic()
+    refused(
+        capsys,
+        ["bench", "--quick", "--output", str(target), "--plot", "/proc/x.png"],
+        "/proc/x.png",
+    )
+    assert time.monotonic() - start < 30  # refused before the benchmark runs
+    assert not target.exists()
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["afile"]
+
+
+def test_api_refuses_the_same_values():
+    for bad in ("1e-5000", "1e999999999", "1/0", "0", "1", "x", "1e" + "9" * 50, "9" * 3000):
+        with pytest.raises(InputError):
+            as_depth(bad)
+    for bad in ("1e400", "1e-400", "0", "-1", "1/0"):
+        with pytest.raises(InputError):
+            as_quality(bad)
+    for bad in ("1/0", "1", "0", "1e-20000"):
+        with pytest.raises(InputError):
+            as_tolerance(bad)
+    # exact values at the ends of the ranges are accepted
+    assert as_depth("1e-1000") == as_number("1/1" + "0" * 1000, name="m", allowed="")
+    assert as_quality("1e30") == 10**30 and as_quality("1e-6") * 10**6 == 1
+
+
+def test_floats_mean_their_shortest_decimal():
+    from fractions import Fraction
+
+    assert as_depth(0.3) == Fraction(3, 10)  # as --m 0.3 on the command line
+    assert as_quality(7.1) == Fraction(71, 10)
