@@ -60,6 +60,9 @@ __all__ = [
     "trace_link",
     "ParameterForms",
     "parameter_forms",
+    "stitching_system",
+    "stitching_link",
+    "stationary_ratio",
 ]
 
 #: the duty and the velocity factor at the switch 1 -> 2, as symbols
@@ -272,3 +275,70 @@ def parameter_forms(system: System, damping: Damping = Damping.NONE) -> Paramete
         }
     forms = ParameterForms(system, damping, atoms, values, defs)
     return forms
+
+
+# ---------------------------------------------------------------------------------------------
+# the stitching system of the family, and its link to the monodromy
+
+
+@cache
+def stitching_system(parity, damping: Damping = Damping.NONE) -> tuple[sp.Matrix, sp.Expr]:
+    """The paper's stitching for any duty and jump: segments ``phi1`` on ``0 < t < D T`` and
+    ``phi2`` on ``-(1 - D) T < t < 0``, joined by continuity of the angle and ``k phi1'(0) =
+    phi2'(0)`` at ``t = 0`` (the switch 2 -> 1 divides the velocity by ``k``), and by
+    (anti)periodicity across ``t = D T``: ``phi1(D T) = sigma phi2(-(1-D) T)``, ``k phi1'(D T) =
+    sigma phi2'(-(1-D) T)``.  Returns the 4 x 4 matrix in ``A1, B1, A2, B2`` and its determinant."""
+    from .model import segment
+    from .stitching import Parity
+
+    sigma = Parity(parity).sigma
+    damping = Damping(damping)
+    t, T = S.t, S.T
+    seg1 = segment(S.omega1, S.A1, S.B1, damping)
+    seg2 = segment(S.omega2, S.A2, S.B2, damping)
+    at = lambda e, v: e.subs(t, v)  # noqa: E731
+    residuals = [
+        at(seg1.phi, 0) - at(seg2.phi, 0),
+        k * at(seg1.dphi, 0) - at(seg2.dphi, 0),
+        at(seg1.phi, D * T) - sigma * at(seg2.phi, -(1 - D) * T),
+        k * at(seg1.dphi, D * T) - sigma * at(seg2.dphi, -(1 - D) * T),
+    ]
+    unknowns = (S.A1, S.B1, S.A2, S.B2)
+    M = sp.Matrix([[sp.diff(r, u) for u in unknowns] for r in residuals])
+    return M, sp.expand(M.det(method="berkowitz"))
+
+
+@cache
+def stitching_link(parity, damping: Damping = Damping.NONE) -> Link:
+    """``det(stitching system) = F det(M - sigma I)`` for every duty and jump, with ``F > 0`` (a
+    product of positive symbols and exponentials): the determinant the paper builds *is* the
+    Floquet condition of the family."""
+    from .identity import factor_between
+    from .stitching import Parity
+
+    parity = Parity(parity)
+    _, det = stitching_system(parity, damping)
+    Mm = monodromy(Damping(damping))
+    s = parity.sigma
+    cond = sp.expand((Mm[0, 0] - s) * (Mm[1, 1] - s) - Mm[0, 1] * Mm[1, 0])
+    F = factor_between(det, cond)
+    ok = F is not None and bool(sp.sympify(F).is_positive)  # never zero: the same roots
+    return Link(
+        f"stitching = F det(M - sigma I), {parity.name.lower()} orders",
+        det,
+        cond if F is None else F * cond,
+        "the conditions at t = 0 and t = D T are the monodromy's, up to the factor F",
+        Verdict(ok, "symbolic", factor=F),
+    )
+
+
+def stationary_ratio(edge_shape: str) -> sp.Expr:
+    """``phi'(0)/phi(0)`` of a frictionless edge oscillation for any member and duty: the edge
+    solutions are symmetric (``"cos"``) or antisymmetric (``"sin"``) about the middle of phase 1,
+    ``phi1 = A cos(omega1 (t - D T/2))`` or ``A sin(omega1 (t - D T/2))``, which gives
+    ``omega1 tan(omega1 D T/2)`` or ``-omega1 cot(omega1 D T/2)`` (the paper's condition after
+    eq. 15 is ``D = 1/2``)."""
+    t = S.t
+    f = sp.cos if edge_shape == "cos" else sp.sin
+    phi = f(S.omega1 * (t - D * S.T / 2))
+    return sp.simplify(sp.diff(phi, t).subs(t, 0) / phi.subs(t, 0))

@@ -533,3 +533,55 @@ def test_simulated_growth_matches_the_multiplier_for_a_member():
 
     sim = simulate(1, "0.3", T="0.5", system="meissner", duty="1/3", periods=12)
     assert sim.growth_per_period > 1 and sim.growth_agreement < 1e-20
+
+
+# ---------------------------------------------------------------------------------------------
+# the derivation for the family
+
+
+@pytest.mark.parametrize("damping", ["none", "paper", "exact"])
+def test_family_chain_is_proven(damping):
+    """det M = p^2, the trace form and the stitching determinant = F det(M - sigma I) (F > 0)
+    hold with symbolic duty D and jump k, for both parities."""
+    from analytic.family import det_link, stitching_link, trace_link
+    from analytic.stitching import Parity
+
+    assert det_link(damping).verdict.holds
+    assert trace_link(damping).verdict.holds
+    for parity in (Parity.ODD, Parity.EVEN):
+        assert stitching_link(parity, damping).verdict.holds
+
+
+@pytest.mark.parametrize(
+    "name, duty, n", [("meissner", "1/3", 1), ("torsion", "0.7", 2), ("pendulum", "1/4", 3)]
+)
+def test_stationary_start_of_the_family(name, duty, n):
+    """On each frictionless edge the Floquet eigenvector for (-1)^n (the independent route) has
+    phi'(0)/phi(0) equal to one of the derived ratios omega1 tan(omega1 D T/2) or
+    -omega1 cot(omega1 D T/2), evaluated at the certified edge (30 digits)."""
+    import sympy as sp
+
+    from analytic.family import D as Dsym
+    from analytic.family import stationary_ratio
+    from analytic.model import S
+    from verify.floquet import floquet_vector
+
+    sysv = system(name, duty=duty)
+    b = boundary(n, "0.4", system=sysv, digits=35)
+    W1 = sysv.omega1_sq(Fraction(4, 10))
+    for T in (b.lower, b.upper):
+        with mpmath.workdps(40):
+            M = monodromy_matrix("0.4", T, system=sysv, dps=40)
+            v = floquet_vector(M, mpmath.mpf((-1) ** n))
+            got = v[1] / v[0]
+            cands = []
+            for shape in ("cos", "sin"):
+                expr = stationary_ratio(shape).subs(
+                    {
+                        Dsym: sp.Rational(sysv.duty.numerator, sysv.duty.denominator),
+                        S.omega1: 2 * sp.pi * sp.sqrt(sp.Rational(W1.numerator, W1.denominator)),
+                        S.T: sp.Float(mpmath.nstr(T, 40), 40),
+                    }
+                )
+                cands.append(mpmath.mpf(str(sp.N(expr, 40))))
+            assert min(abs(got - c) / abs(c) for c in cands) < mpmath.mpf(10) ** -25
