@@ -67,7 +67,7 @@ def as_number(value, *, name: str, allowed: str) -> Fraction:
     if isinstance(value, float):
         if not math.isfinite(value):
             raise InputError(f"{name} = {value!r} is not finite; allowed range {allowed}")
-        return Fraction(repr(value))
+        return Fraction(repr(float(value)))  # np.float64 too
     if not isinstance(value, str):
         raise InputError(f"{name} = {value!r} is not a number; allowed range {allowed}")
     text = value.strip()

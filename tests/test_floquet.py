@@ -162,7 +162,9 @@ def test_numpy_and_mpmath_agree_at_random_points():
     bad = []
     for m, tau, Q, model in random_points(300, seed=20240601):
         Mn = monodromy_matrix(m, tau, Q, model, backend="numpy")
-        Mm = monodromy_matrix(m, tau, Q, model, dps=30)
+        # the same binary inputs for mpmath (a float given to the API means its shortest decimal)
+        exact = [None if v is None else F(v) for v in (m, tau, Q)]
+        Mm = monodromy_matrix(*exact, model, dps=30)
         with mpmath.workdps(30):
             err = relnorm(as_mp_matrix(Mn), Mm)
         if err > 1e-13:

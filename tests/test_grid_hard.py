@@ -86,9 +86,15 @@ def _near_zero(seed, count):
 
 
 def test_order1_lower_edge_near_one_is_positive_and_right():
-    """Was -8.4479e-06; the true value 8.0315494785835133163e-12 (certified route, 20 digits)."""
-    g = boundary_grid([1], [0.9999999999821584])
+    """Was -8.4479e-06.  At the binary value of the float (``Fraction(0.9999999999821584)``) the
+    true value is 8.0315494785835133163e-12; a float passed to the API means its shortest decimal,
+    0.9999999999821584, where it is 8.03154179319819e-12 (both: certified route, 20 digits,
+    `paramres boundary --order 1 --m ... --digits 20`)."""
+    g = boundary_grid([1], [Fraction(0.9999999999821584)])
     assert abs(g[0, 0, 0] - 8.0315494785835133163e-12) <= ERROR_BOUND * 8.0315494785835133163e-12
+    assert 0 < g[0, 0, 0] < g[0, 1, 0]
+    g = boundary_grid([1], [0.9999999999821584])
+    assert abs(g[0, 0, 0] - 8.03154179319819e-12) <= 1e-13 * 8.03154179319819e-12
     assert 0 < g[0, 0, 0] < g[0, 1, 0]
 
 

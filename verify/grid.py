@@ -352,7 +352,7 @@ class _Depths:
     """The depths of a grid: ``m`` and ``om = 1 - m`` as float64 arrays, ``om`` computed from the
     exact depth (``1 - float(m)`` loses every digit of ``1 - m`` that ``float(m)`` rounded off,
     and near ``m = 1`` the edges depend on ``1 - m`` to the last digit); ``exact(j)`` is the exact
-    depth as a Fraction (the binary value for float input); ``double`` marks the depths the double
+    depth as a Fraction (the shortest decimal for float input); ``double`` marks the depths the double
     path serves (:data:`OM_MIN`, :data:`M_MIN`)."""
 
     def __init__(self, m):
@@ -367,12 +367,20 @@ class _Depths:
             if bad.any():
                 as_depth(float(self.m[np.argmax(bad)]))  # raises the standard error
             self._exact = None
-            self.om = 1 - self.m  # exact for m >= 1/2 (Sterbenz); relative 2^-53 below
+            # a float depth means its shortest decimal (as everywhere in the API): 1 - m from the
+            # decimal, corrected where the decimal and the binary value differ enough to matter
+            # (1 - m_binary is exact for m >= 1/2 by Sterbenz; relative 2^-53 below)
+            self.om = 1 - self.m
+            near = np.nonzero(self.om < 0.25)[0]
+            for j in near:
+                x = float(self.m[j])
+                self.om[j] = float(1 - Fraction(repr(x)))
         self.size = self.m.size
         self.double = (self.om >= OM_MIN) & (self.m >= M_MIN)
 
     def exact(self, j: int) -> Fraction:
-        return Fraction(float(self.m[j])) if self._exact is None else self._exact[j]
+        """The exact depth: the shortest decimal of a float input, as in the rest of the API."""
+        return Fraction(repr(float(self.m[j]))) if self._exact is None else self._exact[j]
 
     def exact_all(self, idx) -> list:
         return [self.exact(int(j)) for j in idx]
@@ -384,7 +392,7 @@ def boundary_grid(orders, m, *, Q=None, damping="exact", system="pendulum", duty
     Returns a float64 array of shape ``(len(orders), 2, len(m))``: ``[i, 0, j]`` the lower and
     ``[i, 1, j]`` the upper edge of order ``orders[i]`` at depth ``m[j]``; NaN where the interval
     does not exist.  ``orders`` keeps the caller's order (duplicates allowed).  ``m`` is a float
-    array (each depth is the exact binary value of its float) or a sequence of exact depths (str
+    array (each depth is the shortest decimal of its float, as everywhere in the API) or a sequence of exact depths (str
     such as ``"0.99999999999"``, ``Fraction``, ``int``, mpmath ``mpf``; each depth is that exact
     value: ``1 - m`` is computed from it exactly, never from ``float(m)``).
 
@@ -434,7 +442,7 @@ def boundary_grid(orders, m, *, Q=None, damping="exact", system="pendulum", duty
         cols = np.nonzero(served)[0]
         if cols.size:
             Qf = None if Qx is None else float(Qx)
-            P = normal_params(dep.m[cols], Qf, damping, _NP, sysv)
+            P = normal_params(dep.m[cols], Qf, damping, _NP, sysv, om=dep.om[cols])
             part = np.full((len(orders), 2, cols.size), np.nan)
             doubt[:, cols] = _fill_normal(part, orders, dep.m[cols], P, damped=Qx is not None)
             out[:, :, cols] = part
@@ -444,10 +452,8 @@ def boundary_grid(orders, m, *, Q=None, damping="exact", system="pendulum", duty
     return out[..., 0] if scalar else out
 
 
-#: other members of the family: depths closer to 1 than this go to the certified route (their
-#: generated parameters are evaluated from the double depth, whose ``1 - m`` is exact only for a
-#: double input)
-FAMILY_OM_MIN = 1e-6
+#: other members of the family: depths closer to 1 than this go to the certified route
+FAMILY_OM_MIN = 1e-9
 
 
 def _certified_point(n: int, m: Fraction, Q, damping: str, system=None) -> tuple[float, float]:

@@ -215,7 +215,7 @@ def normal_params(
     if not system.is_paper:
         from .system_params import normal_values
 
-        return NormalParams(**normal_values(system, m, Q, damping, B))
+        return NormalParams(**normal_values(system, m, Q, damping, B, om))
     r, r2, u, beta, w0, bm = _undamped(m, B, om)
     om = _one_minus(m, om)
     zero = r * 0

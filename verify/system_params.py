@@ -76,8 +76,10 @@ def _values_fn(system: System, damping: str, B: Backend):
     return fn
 
 
-def _atoms(system: System, damping: str, m, Q, B: Backend) -> tuple:
-    """The atoms at ``m, Q``: exact Fractions when both are exact, else numbers of ``B``."""
+def _atoms(system: System, damping: str, m, Q, B: Backend, om=None) -> tuple:
+    """The atoms at ``m, Q``: exact Fractions when both are exact, else numbers of ``B``; with
+    ``om = 1 - m`` given (float arrays), the depths ``m >= 1/2`` use the atoms written in ``om``
+    (factored again after ``m = 1 - om``), so that ``1 - m`` enters to its own accuracy."""
     names, atoms, *_ = _compiled(system, damping)
     exact = isinstance(m, Fraction | int | type(None)) and isinstance(
         Q, Fraction | int | type(None)
@@ -87,10 +89,19 @@ def _atoms(system: System, damping: str, m, Q, B: Backend) -> tuple:
         vals = atoms(Fraction(m) if m is not None else Fraction(0), with_q)
         return tuple(B.num(Fraction(v)) for v in vals)
     lift = lambda x: B.num(x) if isinstance(x, Fraction | int) else x  # noqa: E731
-    fn = _numeric_atoms(system, damping, B.name)
+    fn, fn_om = _numeric_atoms(system, damping, B.name)
     mm = lift(Fraction(0) if m is None else m)
     QQ = lift(Fraction(1) if Q is None else Q)
-    return tuple(lift(v) for v in fn(mm, QQ))
+    vals = tuple(lift(v) for v in fn(mm, QQ))
+    if om is None or B.name != "numpy" or not system.uses_depth:
+        return vals
+    import numpy as np
+
+    high = np.asarray(m) >= 0.5
+    if not high.any():
+        return vals
+    vals_om = tuple(lift(v) for v in fn_om(om, QQ))
+    return tuple(np.where(high, b, a) for a, b in zip(vals, vals_om, strict=True))
 
 
 @cache
@@ -103,29 +114,30 @@ def _numeric_atoms(system: System, damping: str, backend_name: str):
     from .derived import backend
 
     forms = parameter_forms(system, damping)
-    return sp.lambdify(
-        (S.m, S.Q),
-        [forms.atoms[n] for n in forms.atoms],
-        modules=[backend(backend_name).namespace],
-        printer=_printer(),
-        docstring_limit=0,
-    )
+    om = sp.Symbol("om", positive=True)
+    ns = [backend(backend_name).namespace]
+    exprs = [forms.atoms[n] for n in forms.atoms]
+    in_m = sp.lambdify((S.m, S.Q), exprs, modules=ns, printer=_printer(), docstring_limit=0)
+    near_one = [sp.factor(sp.expand(e.subs(S.m, 1 - om))) for e in exprs]
+    in_om = sp.lambdify((om, S.Q), near_one, modules=ns, printer=_printer(), docstring_limit=0)
+    return in_m, in_om
 
 
-def _evaluate(system: System, m, Q, damping: str, B: Backend) -> dict:
+def _evaluate(system: System, m, Q, damping: str, B: Backend, om=None) -> dict:
     model = "none" if Q is None else damping
     system = canonical(system)
-    vals = _values_fn(system, model, B)(*_atoms(system, model, m, Q, B))
+    vals = _values_fn(system, model, B)(*_atoms(system, model, m, Q, B, om))
     _, _, vnames, *_ = _compiled(system, model)
     return dict(zip(vnames, vals, strict=True))
 
 
-def normal_values(system: System, m, Q, damping: str, B: Backend) -> dict:
+def normal_values(system: System, m, Q, damping: str, B: Backend, om=None) -> dict:
     """``r, r2, u, beta, w, g, w0, dinv, bm`` of the normal form (``r, beta >= 0``), for ``system``
     at depth ``m`` (ignored by custom systems) and quality factor ``Q`` (``None``: no friction) in
     the model ``damping``; numbers of ``B``.  In the exact model both phases must be under-damped.
+    ``om``: ``1 - m`` to its own accuracy, for float arrays of depths near 1.
     """
-    v = _evaluate(system, m, Q, damping, B)
+    v = _evaluate(system, m, Q, damping, B, om)
     if "r2" in v:
         r2 = v["r2"]
         r = B.sqrt(r2)

@@ -49,11 +49,8 @@ import numpy as np
 
 from analytic.system import PAPER, phase_regimes
 
-from .params import exact_fraction
-
 from .inputs import (
     InputError,
-    as_system,
     as_damping,
     as_depth,
     as_digits,
@@ -61,7 +58,9 @@ from .inputs import (
     as_order,
     as_period,
     as_quality,
+    as_system,
 )
+from .params import exact_fraction
 
 __all__ = [
     "Simulation",
