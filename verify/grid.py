@@ -351,9 +351,9 @@ M_MIN = 2.0**-1022
 class _Depths:
     """The depths of a grid: ``m`` and ``om = 1 - m`` as float64 arrays, ``om`` computed from the
     exact depth (``1 - float(m)`` loses every digit of ``1 - m`` that ``float(m)`` rounded off,
-    and near ``m = 1`` the edges depend on ``1 - m`` to the last digit); ``exact(j)`` is the exact
-    depth as a Fraction (the shortest decimal for float input); ``double`` marks the depths the double
-    path serves (:data:`OM_MIN`, :data:`M_MIN`)."""
+    and near ``m = 1`` the edges depend on ``1 - m`` to the last digit); ``exact(j)`` is the
+    exact depth as a Fraction (the shortest decimal for float input); ``double`` marks the depths
+    the double path serves (:data:`OM_MIN`, :data:`M_MIN`)."""
 
     def __init__(self, m):
         arr = np.atleast_1d(np.asarray(m, dtype=object if _is_exactish(m) else float))
@@ -392,9 +392,10 @@ def boundary_grid(orders, m, *, Q=None, damping="exact", system="pendulum", duty
     Returns a float64 array of shape ``(len(orders), 2, len(m))``: ``[i, 0, j]`` the lower and
     ``[i, 1, j]`` the upper edge of order ``orders[i]`` at depth ``m[j]``; NaN where the interval
     does not exist.  ``orders`` keeps the caller's order (duplicates allowed).  ``m`` is a float
-    array (each depth is the shortest decimal of its float, as everywhere in the API) or a sequence of exact depths (str
-    such as ``"0.99999999999"``, ``Fraction``, ``int``, mpmath ``mpf``; each depth is that exact
-    value: ``1 - m`` is computed from it exactly, never from ``float(m)``).
+    array (each depth is the shortest decimal of its float, as everywhere in the API) or a
+    sequence of exact depths (str such as ``"0.99999999999"``, ``Fraction``, ``int``, mpmath
+    ``mpf``; each depth is that exact value: ``1 - m`` is computed from it exactly, never from
+    ``float(m)``).
 
     **Accuracy.**  Every finite entry is within a relative :data:`ERROR_BOUND` (1e-14) of the
     exact edge at the exact depth, and an entry is NaN exactly where the interval does not exist:

@@ -412,7 +412,10 @@ def _undamped(req: Request) -> Boundary:
     C = _AtPrecision(lambda: arb.pi() * n / 2)
     sgn = _sgn(n)
     if pf.bm < NEAR_ONE:
-        ys = sorted((_near_one_edge(n, eps, P, C, bits) for eps in (1, -1)), key=lambda r: float(r.ball.mid()))
+        ys = sorted(
+            (_near_one_edge(n, eps, P, C, bits) for eps in (1, -1)),
+            key=lambda r: float(r.ball.mid()),
+        )
         return _result(
             req,
             "certified",
