@@ -30,7 +30,7 @@ __all__ = ["FamilyEdgeSeries", "family_edge_series"]
 class FamilyEdgeSeries:
     """Both edges of order ``order`` of ``system`` through ``m**terms`` (sympy expressions in
     ``m``): ``in_T0`` (``T/T0``), ``in_Tn`` (``T`` in units of ``2 pi/w``, so exact tuning is
-    ``n/2``) and ``theta``; the same interface as :class:`analytic.expansions.EdgeSeries`."""
+    ``n/2``) and ``theta``; the same interface as :class:`analytic.series_result.EdgeSeries`."""
 
     order: int
     terms: int

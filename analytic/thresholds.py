@@ -204,7 +204,7 @@ def _threshold_raw(n, damping: str, prec: int) -> tuple[Series, Series]:
 
 
 def _check_terms(terms):
-    from .expansions import _check_terms as check
+    from .series_result import _check_terms as check
 
     return check(terms)
 
@@ -217,7 +217,7 @@ def threshold_series(order, terms: int = 4, *, damping: str = "exact") -> Thresh
     """
     from paramres.inputs import as_damping
 
-    from .expansions import _check_order
+    from .series_result import _check_order
 
     order = _check_order(order)
     terms = _check_terms(terms)
@@ -341,13 +341,13 @@ def _lift(base: LaurentRing, ring: LaurentRing):
 
 def near_threshold_edges(order, terms: int, *, Q=None, damping: str = "exact", units: str = "T0"):
     """Both edges above the threshold in the distinguished scaling, as an
-    :class:`analytic.expansions.EdgeSeries`.
+    :class:`analytic.series_result.EdgeSeries`.
 
     The series are in powers of ``m`` at fixed ``nu = (m_min0/m)^p``, with ``m_min0`` the leading
     threshold (``n pi/(6Q)`` odd, ``sqrt(2/(3Q))`` even); the returned expressions have ``nu``
     written out, so they are functions of ``m`` and ``Q`` (``Q`` left symbolic if ``Q is None``).
     """
-    from .expansions import EdgeSeries, _check_order
+    from .series_result import EdgeSeries, _check_order
 
     n = _check_order(order)
     terms = _check_terms(terms)
