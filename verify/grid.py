@@ -5,7 +5,10 @@ equations without friction, the normal form (or the trace form) with it -- for e
 depth in one set of array operations, and returns ``T/T0`` as a float64 array of shape
 ``(len(orders), 2, len(m))`` (``[:, 0]`` lower edges, ``[:, 1]`` upper edges, NaN where the interval
 does not exist).  It is the fast path for plots and tables; :func:`verify.solve.boundary` is the
-certified one, and ``tests/test_grid.py`` checks the two agree to 1e-14 (relative).
+certified one.  Every finite entry is within a relative :data:`ERROR_BOUND` (1e-14) of the exact
+edge, at every depth ``0 < m < 1`` (see :func:`boundary_grid` for where the double computation hands
+points to the certified route); ``tests/test_grid.py`` and ``tests/test_grid_hard.py`` check it
+against the certified edges on log-spaced samples towards both ends of the depth range.
 
 The solvers here are also the float stage of the certified path (starting values and brackets).
 
@@ -18,7 +21,14 @@ Method (all orders and depths at once):
   (``D <= D0`` and ``D0 < 0`` outside them); the maximiser of ``D`` is the root of ``D'`` (Newton
   safeguarded by bisection); the edges are the zeros of ``D`` left and right of it;
 * exact model with a critically or over-damped half: the same on the trace form in
-  ``zeta = gamma T/2``, inside the window of the order (see :mod:`verify.solve`).
+  ``zeta = gamma T/2``, inside the window of the order (see :mod:`verify.solve`);
+* near ``m = 1`` (``1 - beta < NEAR_ONE``): Newton steps on the forms for ``m -> 1``
+  (:func:`verify.derived.near_one_forms`); the order-1 lower edge, whose ``x = omega_av T/2``
+  goes to 0 with ``1 - m``, in ``x`` itself (:func:`verify.derived.order1_forms`); ``1 - m``
+  is always computed from the exact depth;
+* with friction every entry carries an error estimate (the rounding of the indicator over its
+  slope at the edge); next to a threshold or a closing gap, where the edges are a near-double
+  root, the few entries that cannot meet the bound go to the certified route.
 """
 
 from __future__ import annotations
