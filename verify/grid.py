@@ -395,7 +395,7 @@ def boundary_grid(orders, m, *, Q=None, damping="exact") -> np.ndarray:
     ``[i, 1, j]`` the upper edge of order ``orders[i]`` at depth ``m[j]``; NaN where the interval
     does not exist.  ``orders`` keeps the caller's order (duplicates allowed).  ``m`` is a float
     array (each depth is the exact binary value of its float) or a sequence of exact depths (str
-    such as ``"0.99999999999"``, ``Fraction``, ``int``, mpmath ``mpf``; each depth is that exact
+    such as ``"0.99999999999"``, ``Fraction``, mpmath ``mpf``; each depth is that exact
     value: ``1 - m`` is computed from it exactly, never from ``float(m)``).
 
     **Accuracy.**  Every finite entry is within a relative :data:`ERROR_BOUND` (1e-14) of the
@@ -656,20 +656,21 @@ def _normal_doubt(n, P, res, lo, hi):
     where the edges are a near-double root)."""
     parity = _parity(int(n.flat[0]))
     c = n * _HALF_PI
-    std = (c, P.r2, P.u, P.beta, P.g)
-    nearf = near_one_forms()[2]
-    nargs = (c, P.u, P.bm, P.g)
-    polished = np.broadcast_to(P.bm < NEAR_ONE, lo.shape)
-    form = indicator(parity)
+    top, lo, hi = np.broadcast_arrays(res["top"], lo, hi)
+    c, r2, u, beta, g, bm = np.broadcast_arrays(c, P.r2, P.u, P.beta, P.g, P.bm, lo)[:-1]
+    form, nearf = indicator(parity), near_one_forms()[2]
     with np.errstate(invalid="ignore", over="ignore"):
-        top = res["top"]
-        undecided = np.abs(res["dtop"]) <= _noise(form, top, std, c + top)
-        edges = [
-            np.where(
-                polished,
-                _root_doubt(nearf, theta, nargs, c + theta),
-                _root_doubt(form, theta, std, c + theta),
-            )
-            for theta in (lo, hi)
-        ]
+        undecided = np.abs(res["dtop"]) <= _noise(form, top, (c, r2, u, beta, g), c + top)
+        edges = []
+        for theta in (lo, hi):
+            bad = np.zeros(theta.shape, bool)
+            for on, f, names in (
+                (bm >= NEAR_ONE, form, (c, r2, u, beta, g)),
+                (bm < NEAR_ONE, nearf, (c, u, bm, g)),
+            ):
+                sel = on & np.isfinite(theta)
+                if sel.any():
+                    t, args = theta[sel], tuple(a[sel] for a in names)
+                    bad[sel] = _root_doubt(f, t, args, args[0] + t)
+            edges.append(bad)
     return undecided, edges[0], edges[1]
