@@ -547,7 +547,7 @@ def _order1_lower(P, cols, x_hi, eps=None, *, doubt=False):
 #: absolute error of ``theta`` is a relative error of ``x`` amplified by ``1/x``)
 ORDER1_X = 1.0
 
-#: below this ``1 - beta`` (``m > 0.995``) the grid polishes with the forms for ``m -> 1``
+#: below this ``1 - beta`` (``m > 0.975``) the grid polishes with the forms for ``m -> 1``
 NEAR_ONE = 0.2
 
 
