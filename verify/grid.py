@@ -511,7 +511,7 @@ def _is_exactish(m) -> bool:
     return False
 
 
-def _order1_lower(P, cols, x_hi, eps=None, *, doubt=False):
+def _order1_lower(P, cols, x_hi, eps=None, *, x_theta=None, doubt=False):
     """The order-1 edge whose ``x = pi/2 + theta`` goes to 0 as ``m -> 1`` (``T -> 0``), solved
     in ``x`` itself on the forms of :func:`verify.derived.order1_forms` for the columns ``cols``:
     there ``theta`` is within rounding of ``-pi/2`` and carries no digit of ``x``.
@@ -519,9 +519,11 @@ def _order1_lower(P, cols, x_hi, eps=None, *, doubt=False):
     ``eps = 1``: the undamped edge equation ``E(x)``, with ``E(0) = v > 0`` and one simple root in
     ``(0, x_hi)``, ``x_hi = pi`` (the window theorem); ``eps = None``: the friction indicator
     ``D(x)``, with ``D(0) = -u < 0`` and ``x_hi = pi/2 + top`` (``D(top) > 0``; ``D <= D0 < 0``
-    left of the undamped root, so its one zero in ``(0, x_hi)`` is the lower edge).  Safeguarded
-    Newton on that bracket, started where the Taylor polynomial ``F(0) + F''(0) x^2/2`` of the form
-    vanishes (both forms are even in ``x``; the start is right to a relative ``O(x^2)``).
+    left of the undamped root, so its one zero in ``(0, x_hi)`` is the lower edge).  Newton,
+    started where the Taylor polynomial ``F(0) + F''(0) x^2/2`` of the form vanishes (both forms
+    are even in ``x``; the start is right to a relative ``O(x^2)``); where it leaves the bracket,
+    safeguarded Newton on the bracket.  ``x_theta``: ``pi/2 + theta`` from the solver in
+    ``theta`` (absolute error ~1e-16), the start where it is not tiny.
     ``doubt=True`` also returns the mask of roots whose error :func:`_root_doubt` cannot bound."""
     edge, ind = order1_forms()
     bm = P.bm[cols]
@@ -536,16 +538,37 @@ def _order1_lower(P, cols, x_hi, eps=None, *, doubt=False):
     x_hi = np.asarray(x_hi, float) * np.ones(bm.shape)
     with np.errstate(invalid="ignore", divide="ignore"):
         x0 = np.sqrt(-2 * np.asarray(f0, float) / np.asarray(f2, float))
-    x0 = np.where(np.isfinite(x0) & (x0 > 0) & (x0 < x_hi), x0, 0.5 * x_hi)
-    x = _bisect_newton(lambda x: f01(x, *args), 0 * x_hi, x_hi, x0, eps is None)
+    if x_theta is not None:  # right to an absolute 1e-16: the better start unless x is tiny
+        x0 = np.where(np.asarray(x_theta) > 1e-4, x_theta, x0)
+    x = np.where(np.isfinite(x0) & (x0 > 0) & (x0 < x_hi), x0, 0.5 * x_hi)
+    # Newton from there (the points not yet converged only); a point that leaves the bracket or
+    # does not converge is solved again by the safeguarded iteration
+    idx = np.arange(x.size)
+    for _ in range(12):
+        f, d = f01(x[idx], *(a[idx] for a in args))
+        with np.errstate(invalid="ignore", divide="ignore"):
+            step = np.asarray(f, float) / np.asarray(d, float)
+        x[idx] -= step
+        idx = idx[~(np.abs(step) <= 8e-16 * np.abs(x[idx]))]
+        if not idx.size:
+            break
+    bad = ~(np.isfinite(x) & (x > 0) & (x < x_hi))
+    bad[idx] = True
+    if bad.any():
+        sub = tuple(a[bad] for a in args)
+        x[bad] = _bisect_newton(
+            lambda z: f01(z, *sub), 0 * x_hi[bad], x_hi[bad], 0.5 * x_hi[bad], eps is None
+        )
     if doubt:
         return x, _root_doubt(form, x, args, x)
     return x
 
 
-#: the order-1 lower edge is solved in ``x`` (:func:`_order1_lower`) where ``x`` is below this (an
-#: absolute error of ``theta`` is a relative error of ``x`` amplified by ``1/x``)
-ORDER1_X = 1.0
+#: the order-1 lower edge is solved in ``x`` (:func:`_order1_lower`) where ``x`` is below this,
+#: without and with friction (an absolute error of ``theta`` is a relative error of ``x`` amplified
+#: by ``1/x``; with friction the indicator's error estimate asks for the wider range)
+ORDER1_X = 0.5
+ORDER1_X_DAMPED = 1.0
 
 #: below this ``1 - beta`` (``m > 0.975``) the grid polishes with the forms for ``m -> 1``
 NEAR_ONE = 0.2
@@ -594,7 +617,8 @@ def _fill_normal(out, orders, ms, P, damped: bool) -> np.ndarray:
         for i in np.nonzero(orders_arr == 1)[0]:  # the eps = +1 root is the one with x -> 0
             cols = np.nonzero((_HALF_PI + t1[i] < ORDER1_X) | (P.bm < NEAR_ONE))[0]
             if cols.size:
-                T1[i, cols] = _order1_lower(P, cols, math.pi, 1) / (math.pi * P.w[cols])
+                x = _order1_lower(P, cols, math.pi, 1, x_theta=_HALF_PI + t1[i, cols])
+                T1[i, cols] = x / (math.pi * P.w[cols])
         out[:, 0, :] = np.minimum(T1, T2)
         out[:, 1, :] = np.maximum(T1, T2)
         return doubt
@@ -614,10 +638,16 @@ def _fill_normal(out, orders, ms, P, damped: bool) -> np.ndarray:
         for k, i in enumerate(rows):
             if orders_arr[i] != 1:
                 continue
-            near = (_HALF_PI + lo[k] < ORDER1_X) | (P.bm < NEAR_ONE)
+            near = (_HALF_PI + lo[k] < ORDER1_X_DAMPED) | (P.bm < NEAR_ONE)
             cols = np.nonzero(np.isfinite(lo[k]) & near)[0]
             if cols.size:
-                x, unsure = _order1_lower(P, cols, _HALF_PI + res["top"][k, cols], doubt=True)
+                x, unsure = _order1_lower(
+                    P,
+                    cols,
+                    _HALF_PI + res["top"][k, cols],
+                    x_theta=_HALF_PI + lo[k, cols],
+                    doubt=True,
+                )
                 out[i, 0, cols] = x / (math.pi * P.w[cols])
                 lo_doubt[k, cols] = unsure
         doubt[rows] = top_doubt | lo_doubt | hi_doubt
