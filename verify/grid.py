@@ -5,7 +5,10 @@ equations without friction, the normal form (or the trace form) with it -- for e
 depth in one set of array operations, and returns ``T/T0`` as a float64 array of shape
 ``(len(orders), 2, len(m))`` (``[:, 0]`` lower edges, ``[:, 1]`` upper edges, NaN where the interval
 does not exist).  It is the fast path for plots and tables; :func:`verify.solve.boundary` is the
-certified one, and ``tests/test_grid.py`` checks the two agree to 1e-14 (relative).
+certified one.  Every finite entry is within a relative :data:`ERROR_BOUND` (1e-14) of the exact
+edge, at every depth ``0 < m < 1`` (see :func:`boundary_grid` for where the double computation hands
+points to the certified route); ``tests/test_grid.py`` and ``tests/test_grid_hard.py`` check it
+against the certified edges on log-spaced samples towards both ends of the depth range.
 
 The solvers here are also the float stage of the certified path (starting values and brackets).
 
@@ -18,7 +21,14 @@ Method (all orders and depths at once):
   (``D <= D0`` and ``D0 < 0`` outside them); the maximiser of ``D`` is the root of ``D'`` (Newton
   safeguarded by bisection); the edges are the zeros of ``D`` left and right of it;
 * exact model with a critically or over-damped half: the same on the trace form in
-  ``zeta = gamma T/2``, inside the window of the order (see :mod:`verify.solve`).
+  ``zeta = gamma T/2``, inside the window of the order (see :mod:`verify.solve`);
+* near ``m = 1`` (``1 - beta < NEAR_ONE``): Newton steps on the forms for ``m -> 1``
+  (:func:`verify.derived.near_one_forms`); the order-1 lower edge, whose ``x = omega_av T/2``
+  goes to 0 with ``1 - m``, in ``x`` itself (:func:`verify.derived.order1_forms`); ``1 - m``
+  is always computed from the exact depth;
+* with friction every entry carries an error estimate (the rounding of the indicator over its
+  slope at the edge); next to a threshold or a closing gap, where the edges are a near-double
+  root, the few entries that cannot meet the bound go to the certified route.
 """
 
 from __future__ import annotations
@@ -540,7 +550,7 @@ def _is_exactish(m) -> bool:
     return False
 
 
-def _order1_lower(P, cols, x_hi, eps=None, *, doubt=False):
+def _order1_lower(P, cols, x_hi, eps=None, *, x_theta=None, doubt=False):
     """The order-1 edge whose ``x = pi/2 + theta`` goes to 0 as ``m -> 1`` (``T -> 0``), solved
     in ``x`` itself on the forms of :func:`verify.derived.order1_forms` for the columns ``cols``:
     there ``theta`` is within rounding of ``-pi/2`` and carries no digit of ``x``.
@@ -548,9 +558,11 @@ def _order1_lower(P, cols, x_hi, eps=None, *, doubt=False):
     ``eps = 1``: the undamped edge equation ``E(x)``, with ``E(0) = v > 0`` and one simple root in
     ``(0, x_hi)``, ``x_hi = pi`` (the window theorem); ``eps = None``: the friction indicator
     ``D(x)``, with ``D(0) = -u < 0`` and ``x_hi = pi/2 + top`` (``D(top) > 0``; ``D <= D0 < 0``
-    left of the undamped root, so its one zero in ``(0, x_hi)`` is the lower edge).  Safeguarded
-    Newton on that bracket, started where the Taylor polynomial ``F(0) + F''(0) x^2/2`` of the form
-    vanishes (both forms are even in ``x``; the start is right to a relative ``O(x^2)``).
+    left of the undamped root, so its one zero in ``(0, x_hi)`` is the lower edge).  Newton,
+    started where the Taylor polynomial ``F(0) + F''(0) x^2/2`` of the form vanishes (both forms
+    are even in ``x``; the start is right to a relative ``O(x^2)``); where it leaves the bracket,
+    safeguarded Newton on the bracket.  ``x_theta``: ``pi/2 + theta`` from the solver in
+    ``theta`` (absolute error ~1e-16), the start where it is not tiny.
     ``doubt=True`` also returns the mask of roots whose error :func:`_root_doubt` cannot bound."""
     edge, ind = order1_forms()
     bm = P.bm[cols]
@@ -565,18 +577,39 @@ def _order1_lower(P, cols, x_hi, eps=None, *, doubt=False):
     x_hi = np.asarray(x_hi, float) * np.ones(bm.shape)
     with np.errstate(invalid="ignore", divide="ignore"):
         x0 = np.sqrt(-2 * np.asarray(f0, float) / np.asarray(f2, float))
-    x0 = np.where(np.isfinite(x0) & (x0 > 0) & (x0 < x_hi), x0, 0.5 * x_hi)
-    x = _bisect_newton(lambda x: f01(x, *args), 0 * x_hi, x_hi, x0, eps is None)
+    if x_theta is not None:  # right to an absolute 1e-16: the better start unless x is tiny
+        x0 = np.where(np.asarray(x_theta) > 1e-4, x_theta, x0)
+    x = np.where(np.isfinite(x0) & (x0 > 0) & (x0 < x_hi), x0, 0.5 * x_hi)
+    # Newton from there (the points not yet converged only); a point that leaves the bracket or
+    # does not converge is solved again by the safeguarded iteration
+    idx = np.arange(x.size)
+    for _ in range(12):
+        f, d = f01(x[idx], *(a[idx] for a in args))
+        with np.errstate(invalid="ignore", divide="ignore"):
+            step = np.asarray(f, float) / np.asarray(d, float)
+        x[idx] -= step
+        idx = idx[~(np.abs(step) <= 8e-16 * np.abs(x[idx]))]
+        if not idx.size:
+            break
+    bad = ~(np.isfinite(x) & (x > 0) & (x < x_hi))
+    bad[idx] = True
+    if bad.any():
+        sub = tuple(a[bad] for a in args)
+        x[bad] = _bisect_newton(
+            lambda z: f01(z, *sub), 0 * x_hi[bad], x_hi[bad], 0.5 * x_hi[bad], eps is None
+        )
     if doubt:
         return x, _root_doubt(form, x, args, x)
     return x
 
 
-#: the order-1 lower edge is solved in ``x`` (:func:`_order1_lower`) where ``x`` is below this (an
-#: absolute error of ``theta`` is a relative error of ``x`` amplified by ``1/x``)
-ORDER1_X = 1.0
+#: the order-1 lower edge is solved in ``x`` (:func:`_order1_lower`) where ``x`` is below this,
+#: without and with friction (an absolute error of ``theta`` is a relative error of ``x`` amplified
+#: by ``1/x``; with friction the indicator's error estimate asks for the wider range)
+ORDER1_X = 0.5
+ORDER1_X_DAMPED = 1.0
 
-#: below this ``1 - beta`` (``m > 0.995``) the grid polishes with the forms for ``m -> 1``
+#: below this ``1 - beta`` (``m > 0.975``) the grid polishes with the forms for ``m -> 1``
 NEAR_ONE = 0.2
 
 
@@ -623,7 +656,8 @@ def _fill_normal(out, orders, ms, P, damped: bool) -> np.ndarray:
         for i in np.nonzero(orders_arr == 1)[0]:  # the eps = +1 root is the one with x -> 0
             cols = np.nonzero((_HALF_PI + t1[i] < ORDER1_X) | (P.bm < NEAR_ONE))[0]
             if cols.size:
-                T1[i, cols] = _order1_lower(P, cols, math.pi, 1) / (math.pi * P.w[cols])
+                x = _order1_lower(P, cols, math.pi, 1, x_theta=_HALF_PI + t1[i, cols])
+                T1[i, cols] = x / (math.pi * P.w[cols])
         out[:, 0, :] = np.minimum(T1, T2)
         out[:, 1, :] = np.maximum(T1, T2)
         return doubt
@@ -643,10 +677,16 @@ def _fill_normal(out, orders, ms, P, damped: bool) -> np.ndarray:
         for k, i in enumerate(rows):
             if orders_arr[i] != 1:
                 continue
-            near = (_HALF_PI + lo[k] < ORDER1_X) | (P.bm < NEAR_ONE)
+            near = (_HALF_PI + lo[k] < ORDER1_X_DAMPED) | (P.bm < NEAR_ONE)
             cols = np.nonzero(np.isfinite(lo[k]) & near)[0]
             if cols.size:
-                x, unsure = _order1_lower(P, cols, _HALF_PI + res["top"][k, cols], doubt=True)
+                x, unsure = _order1_lower(
+                    P,
+                    cols,
+                    _HALF_PI + res["top"][k, cols],
+                    x_theta=_HALF_PI + lo[k, cols],
+                    doubt=True,
+                )
                 out[i, 0, cols] = x / (math.pi * P.w[cols])
                 lo_doubt[k, cols] = unsure
         doubt[rows] = top_doubt | lo_doubt | hi_doubt
@@ -685,20 +725,21 @@ def _normal_doubt(n, P, res, lo, hi):
     where the edges are a near-double root)."""
     parity = _parity(int(n.flat[0]))
     c = n * _HALF_PI
-    std = (c, P.r2, P.u, P.beta, P.g)
-    nearf = near_one_forms()[2]
-    nargs = (c, P.u, P.bm, P.g)
-    polished = np.broadcast_to(P.bm < NEAR_ONE, lo.shape)
-    form = indicator(parity)
+    top, lo, hi = np.broadcast_arrays(res["top"], lo, hi)
+    c, r2, u, beta, g, bm = np.broadcast_arrays(c, P.r2, P.u, P.beta, P.g, P.bm, lo)[:-1]
+    form, nearf = indicator(parity), near_one_forms()[2]
     with np.errstate(invalid="ignore", over="ignore"):
-        top = res["top"]
-        undecided = np.abs(res["dtop"]) <= _noise(form, top, std, c + top)
-        edges = [
-            np.where(
-                polished,
-                _root_doubt(nearf, theta, nargs, c + theta),
-                _root_doubt(form, theta, std, c + theta),
-            )
-            for theta in (lo, hi)
-        ]
+        undecided = np.abs(res["dtop"]) <= _noise(form, top, (c, r2, u, beta, g), c + top)
+        edges = []
+        for theta in (lo, hi):
+            bad = np.zeros(theta.shape, bool)
+            for on, f, names in (
+                (bm >= NEAR_ONE, form, (c, r2, u, beta, g)),
+                (bm < NEAR_ONE, nearf, (c, u, bm, g)),
+            ):
+                sel = on & np.isfinite(theta)
+                if sel.any():
+                    t, args = theta[sel], tuple(a[sel] for a in names)
+                    bad[sel] = _root_doubt(f, t, args, args[0] + t)
+            edges.append(bad)
     return undecided, edges[0], edges[1]
