@@ -33,6 +33,7 @@ Method (all orders and depths at once):
 
 from __future__ import annotations
 
+import decimal
 import math
 from dataclasses import fields
 from fractions import Fraction
@@ -358,6 +359,11 @@ OM_MIN = 2.0**-53
 M_MIN = 2.0**-1022
 
 
+#: below this ``1 - m`` a float depth's ``1 - m`` is taken from its shortest decimal (above it the
+#: binary and decimal ``1 - m`` differ by less than a relative 1e-15)
+DECIMAL_OM = 0.11
+
+
 class _Depths:
     """The depths of a grid: ``m`` and ``om = 1 - m`` as float64 arrays, ``om`` computed from the
     exact depth (``1 - float(m)`` loses every digit of ``1 - m`` that ``float(m)`` rounded off,
@@ -381,10 +387,17 @@ class _Depths:
             # decimal, corrected where the decimal and the binary value differ enough to matter
             # (1 - m_binary is exact for m >= 1/2 by Sterbenz; relative 2^-53 below)
             self.om = 1 - self.m
-            near = np.nonzero(self.om < 0.25)[0]
-            for j in near:
-                x = float(self.m[j])
-                self.om[j] = float(1 - Fraction(repr(x)))
+            near = np.nonzero(self.om < DECIMAL_OM)[0]
+            if near.size:
+                # om = (1 - x) - (decimal(x) - x): 1 - x is exact here (Sterbenz), the correction
+                # exact in decimal arithmetic, then rounded once
+                with decimal.localcontext() as dc:
+                    dc.prec = 60
+                    for j in near:
+                        x = float(self.m[j])
+                        self.om[j] = float(
+                            (decimal.Decimal(1) - decimal.Decimal(repr(x))).normalize()
+                        )
         self.size = self.m.size
         self.double = (self.om >= OM_MIN) & (self.m >= M_MIN)
 
