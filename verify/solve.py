@@ -58,6 +58,7 @@ from flint import arb, ctx
 
 from .certify import (
     CertificationError,
+    Jet,
     Root,
     ball,
     bits_for_digits,
@@ -592,6 +593,8 @@ class _Hump:
     #: the variable is measured relative to the smallest of them
     shifts: tuple = (0.0,)
     variable: str = "theta"  # or "y" = theta + pi/2 (near m = 1)
+    #: for a range of depths (:func:`hump_box`): the hump at its middle depth
+    point: object = None
 
 
 def _prove_shape(h: _Hump, lo_root, hi_root) -> bool:
@@ -644,14 +647,16 @@ def _prove_shape(h: _Hump, lo_root, hi_root) -> bool:
     return False
 
 
-def _prove_negative(h: _Hump, bits: int = 64) -> bool:
+def _prove_negative(
+    h: _Hump, bits: int = 64, max_bits: int | None = None, budget: int = 400
+) -> bool:
     """``D < 0`` on all of ``[a, b]`` (no interval).
 
     First by bisection at low precision; near a threshold, where the maximum of ``D`` is a tiny
     negative number, by Taylor's bound around the maximiser ``t``: on a ball ``X`` where
     ``D'' < 0``, ``D <= D(t) + D'(t)^2 / (2 |sup D''(X)|)``, and by bisection outside ``X``.
     """
-    if prove_sign(h.D, h.dD, h.a, h.b, -1, prec=64, budget=400):
+    if prove_sign(h.D, h.dD, h.a, h.b, -1, prec=64, budget=budget):
         return True
     start = h.top if math.isfinite(h.top) else 0.5 * (h.a + h.b)
     try:
@@ -662,6 +667,7 @@ def _prove_negative(h: _Hump, bits: int = 64) -> bool:
             bits=max(bits, 64),
             floor=h.floor or 1e-300,
             bracket=(h.a, h.b),
+            max_bits=max_bits or 4 * max(bits, 64) + 336,
         ).ball.mid()
     except CertificationError:
         return False
@@ -680,8 +686,12 @@ def _prove_negative(h: _Hump, bits: int = 64) -> bool:
                     if d2 < 0:
                         bound = Dt + D1t * D1t / (2 * abs(d2.upper()))
                         if bound < 0:
-                            if (lo <= h.a or prove_sign(h.D, h.dD, h.a, lo, -1, prec=64)) and (
-                                hi >= h.b or prove_sign(h.D, h.dD, hi, h.b, -1, prec=64)
+                            if (
+                                lo <= h.a
+                                or prove_sign(h.D, h.dD, h.a, lo, -1, prec=64, budget=10 * budget)
+                            ) and (
+                                hi >= h.b
+                                or prove_sign(h.D, h.dD, hi, h.b, -1, prec=64, budget=10 * budget)
                             ):
                                 return True
                             break
@@ -749,22 +759,66 @@ def _solve_hump(req: Request, h: _Hump, bits: int):
     return True, lo_root, hi_root, _prove_shape(h, lo_root, hi_root)
 
 
-def hump_normal(n: int, m: Fraction, Q: Fraction, damping: str, bits: int):
+def depth_ball(m_box: tuple[Fraction, Fraction]) -> arb:
+    """The ball (at the working precision, rounded outward) that holds every depth of the closed
+    range ``m_box = (lo, hi)`` of exact rationals."""
+    lo, hi = m_box
+    a = arb(lo.numerator) / lo.denominator
+    b = arb(hi.numerator) / hi.denominator
+    return a.union(b)
+
+
+def _params_at(m, Q, damping, m_box, make):
+    """Parameters as balls: at the exact depth ``m``, or for every depth of ``m_box``."""
+    if m_box is None:
+        return make(m, Q, damping, _ARB) if damping is not None else make(m, Q, _ARB)
+    M = depth_ball(m_box)
+    Qb = arb(Q.numerator) / Q.denominator
+    return make(M, Qb, damping, _ARB) if damping is not None else make(M, Qb, _ARB)
+
+
+def hump_normal(
+    n: int,
+    m: Fraction,
+    Q: Fraction,
+    damping: str,
+    bits: int,
+    m_box=None,
+    float_stage=None,
+    jet: bool = False,
+):
     """The friction problem in the normal form, for order ``n`` at exact ``m``, ``Q``: the
-    :class:`_Hump` (arb functions, proven bracket, float stage) and the parameters at precision."""
+    :class:`_Hump` (arb functions, proven bracket, float stage) and the parameters at precision.
+
+    With ``m_box = (lo, hi)`` (exact rationals around ``m``) the arb functions and the bracket hold
+    for every depth of that range at once (the parameters are balls that contain them all); the
+    float stage is that of ``m`` (``float_stage``: computed already, a dict as
+    :func:`verify.grid.damped_normal` returns for one depth, plus ``"bm"``)."""
     from analytic.stitching import Parity
 
     from .grid import damped_normal
 
     parity = Parity.of(n)
-    # float parameters from the exact rationals (right also next to critical damping)
-    pm = normal_params(m, Q, damping, _MATH)
-    Pn = NormalParams(*(np.array([float(getattr(pm, f.name))]) for f in fields(NormalParams)))
-    fl = damped_normal(np.array([[n]]), Pn)
-    fl = {k: float(np.asarray(v).ravel()[0]) for k, v in fl.items()}
+    if float_stage is None:
+        # float parameters from the exact rationals (right also next to critical damping)
+        pm = normal_params(m, Q, damping, _MATH)
+        Pn = NormalParams(*(np.array([float(getattr(pm, f.name))]) for f in fields(NormalParams)))
+        fl = damped_normal(np.array([[n]]), Pn)
+        fl = {k: float(np.asarray(v).ravel()[0]) for k, v in fl.items()}
+        bm = pm.bm
+    else:
+        fl, bm = float_stage, float_stage["bm"]
     form = indicator(parity)
     D0, D1, D2 = (form.compiled("arb", k) for k in (0, 1, 2))
-    P = _AtPrecision(lambda: normal_params(m, Q, damping, _ARB))
+    if jet:  # parameters as jets in m over the range (for the mean-value form, hump_box)
+
+        def jets():
+            Qb = arb(Q.numerator) / Q.denominator
+            return normal_params(Jet(depth_ball(m_box), 1), Jet(Qb), damping, _ARB)
+
+        P = _AtPrecision(jets)
+    else:
+        P = _AtPrecision(lambda: _params_at(m, Q, damping, m_box, normal_params))
     C = _AtPrecision(lambda: arb.pi() * n / 2)
 
     def args():
@@ -777,15 +831,16 @@ def hump_normal(n: int, m: Fraction, Q: Fraction, damping: str, bits: int):
     span = max(fl["b"] - fl["a"], 1e-300)
     a = max(fl["a"] - max(span * 1e-6, abs(fl["a"]) * 1e-12, 1e-300), -math.pi / 2)
     b = min(fl["b"] + max(span * 1e-6, abs(fl["b"]) * 1e-12, 1e-300), math.pi / 2)
-    with ctx.workprec(128):
-        p = P()
-        outside = all(E0(ball(a), C(), sgn, e, p.r, p.beta) < 0 for e in (1, -1)) and all(
-            E0(ball(b), C(), sgn, e, p.r, p.beta) > 0 for e in (1, -1)
-        )
-    if not outside:  # pragma: no cover - the float bracket is always this good
-        a, b = -math.pi / 2, math.pi / 2
-    if pm.bm < NEAR_ONE:
-        return _hump_near_one(n, P, fl, b, C, E0), P
+    if not jet:
+        with ctx.workprec(128):
+            p = P()
+            outside = all(E0(ball(a), C(), sgn, e, p.r, p.beta) < 0 for e in (1, -1)) and all(
+                E0(ball(b), C(), sgn, e, p.r, p.beta) > 0 for e in (1, -1)
+            )
+        if not outside:  # pragma: no cover - the float bracket is always this good
+            a, b = -math.pi / 2, math.pi / 2
+    if bm < NEAR_ONE:
+        return _hump_near_one(n, P, fl, b, C, E0, check=not jet), P
     h = _Hump(
         D=lambda t: D0(t, *args()),
         dD=lambda t: D1(t, *args()),
@@ -802,7 +857,60 @@ def hump_normal(n: int, m: Fraction, Q: Fraction, damping: str, bits: int):
     return h, P
 
 
-def _hump_near_one(n, P, fl, b, C, E0) -> _Hump:
+def hump_box(n: int, lo: Fraction, hi: Fraction, Q: Fraction, damping: str, float_stage=None):
+    """The normal-form friction problem for every depth of ``[lo, hi]`` at once: ``D``, ``D'``,
+    ``D''`` (in ``theta``, or ``y`` near ``m = 1``) enclosed by the mean-value form in ``m``,
+    ``f(M) in f(mid) + f_m(M) (M - mid)``, with ``f_m`` from jets (:class:`verify.certify.Jet`)
+    over the ball ``M`` of the range -- far tighter than evaluating with ``M`` itself, where the
+    parameters' dependence on ``m`` is counted many times.  The bracket is the whole window
+    (rounded outward).  The float stage is that of the middle."""
+    mid = (lo + hi) / 2
+    if float_stage is None:
+        from .grid import damped_normal
+
+        pm = normal_params(mid, Q, damping, _MATH)
+        Pn = NormalParams(*(np.array([float(getattr(pm, f.name))]) for f in fields(NormalParams)))
+        fl = damped_normal(np.array([[n]]), Pn)
+        float_stage = {k: float(np.asarray(v).ravel()[0]) for k, v in fl.items()}
+        float_stage["bm"] = float(pm.bm)
+    hm, _ = hump_normal(n, mid, Q, damping, 64, float_stage=float_stage)
+    hj, _ = hump_normal(n, mid, Q, damping, 64, m_box=(lo, hi), float_stage=float_stage, jet=True)
+
+    def dm():
+        return depth_ball((lo, hi)) - (arb(mid.numerator) / mid.denominator)
+
+    dM = _AtPrecision(dm)
+
+    def mv(f0, f1):
+        def g(t):
+            v = f1(t)
+            slope = v.d if isinstance(v, Jet) else 0
+            return f0(t) + slope * dM()
+
+        return g
+
+    if hm.variable == "y":
+        a, b = 0.0, math.nextafter(math.pi, 4.0)
+    else:
+        a, b = math.nextafter(-math.pi / 2, -2.0), math.nextafter(math.pi / 2, 2.0)
+    return _Hump(
+        D=mv(hm.D, hj.D),
+        dD=mv(hm.dD, hj.dD),
+        d2D=mv(hm.d2D, hj.d2D),
+        a=a,
+        b=b,
+        top=hm.top,
+        dtop=hm.dtop,
+        lo=hm.lo,
+        hi=hm.hi,
+        floor=hm.floor,
+        shifts=hm.shifts,
+        variable=hm.variable,
+        point=hm,
+    )
+
+
+def _hump_near_one(n, P, fl, b, C, E0, check: bool = True) -> _Hump:
     """Friction near ``m = 1`` (``1 - beta < NEAR_ONE``): the hump in ``y = theta + pi/2``, the
     distance from the window's left end, where the lower edge goes as ``m -> 1``.  ``D`` is the
     form whose terms are of the size of ``D``: :func:`verify.derived.order1_forms` in ``x = y``
@@ -832,12 +940,13 @@ def _hump_near_one(n, P, fl, b, C, E0) -> _Hump:
 
     Y0, Y1, Y2 = (form.compiled("arb", k) for k in (0, 1, 2))
     by = b + half
-    with ctx.workprec(128):
-        p = P()
-        thb = ball(by) - arb.pi() / 2
-        sgn = _sgn(n)
-        if not all(E0(thb, C(), sgn, e, p.r, p.beta) > 0 for e in (1, -1)):  # pragma: no cover
-            by = math.pi
+    if check:
+        with ctx.workprec(128):
+            p = P()
+            thb = ball(by) - arb.pi() / 2
+            sgn = _sgn(n)
+            if not all(E0(thb, C(), sgn, e, p.r, p.beta) > 0 for e in (1, -1)):  # pragma: no cover
+                by = math.pi
 
     def shifted(v):
         return v + half if math.isfinite(v) and v + half > 0 else math.nan
@@ -891,10 +1000,11 @@ def _normal_damped(req: Request) -> Boundary:
     )
 
 
-def hump_trace(n: int, m: Fraction, Q: Fraction, regimes: tuple[str, str]):
+def hump_trace(n: int, m: Fraction, Q: Fraction, regimes: tuple[str, str], m_box=None):
     """The friction problem in the trace form (exact model, a half critically or over-damped):
     the :class:`_Hump` in ``zeta`` on the proven window of order ``n``, and the parameters; or
-    ``(None, reason)`` if the order has no window."""
+    ``(None, reason)`` if the order has no window.  ``m_box`` as for :func:`hump_normal` (the
+    regimes must be those of every depth in it)."""
     from .grid import damped_trace, trace_window_ends
 
     Tf = trace_params(m, Q, _MATH)
@@ -908,7 +1018,7 @@ def hump_trace(n: int, m: Fraction, Q: Fraction, regimes: tuple[str, str]):
         return None, why
     form = trace_indicator(*regimes)
     D0, D1, D2 = (form.compiled("arb", k) for k in (0, 1, 2))
-    P = _AtPrecision(lambda: trace_params(m, Q, _ARB))
+    P = _AtPrecision(lambda: _params_at(m, Q, None, m_box, trace_params))
     sigma = -1 if n % 2 else 1
 
     def args():
@@ -916,8 +1026,9 @@ def hump_trace(n: int, m: Fraction, Q: Fraction, regimes: tuple[str, str]):
         return (sigma, p.kappa, p.nu1, p.nu2)
 
     za, zb = window
-    za = za * (1 - 1e-9)
-    zb = zb * (1 + 1e-9)
+    widen = 1e-9 if m_box is None else 1e-3
+    za = za * (1 - widen)
+    zb = zb * (1 + widen)
     if not _prove_window(n, regimes, P, za, zb):  # pragma: no cover - guard
         raise CertificationError(f"could not prove the window of order {n}: {za}, {zb}")
     fl = damped_trace(n, regimes, Tf, (za, zb))
