@@ -313,6 +313,13 @@ class Jet:
             return Jet(self.v * self.v, 2 * self.v * self.d)
         return Jet(self.v**k, k * self.v ** (k - 1) * self.d)
 
+    def __abs__(self):
+        if self.v > 0:
+            return self
+        if self.v < 0:
+            return -self
+        raise ArithmeticError("|x| of a jet whose value may be zero")
+
     def sqrt(self):
         s = self.v.sqrt()
         return Jet(s, self.d / (2 * s))

@@ -37,7 +37,15 @@ from .derived import backend
 from .inputs import InputError, as_damping, as_digits, as_order, as_quality
 from .params import NEAR_CRITICAL, exact_fraction, form_for, normal_params, trace_params
 
-__all__ = ["Existence", "Threshold", "existence", "max_indicator", "closing_depths"]
+__all__ = [
+    "Existence",
+    "Threshold",
+    "existence",
+    "existence_scan",
+    "absence_reason",
+    "max_indicator",
+    "closing_depths",
+]
 
 
 @dataclass(frozen=True)
@@ -159,7 +167,14 @@ class Existence:
                 return f"above the last range, which ends at m = {self._text(before[-1][1])}"
             a, b = self._text(before[-1][1]), self._text(after[0][0])
             closing = _closing_in(self.order, self.Q, self.damping, _mpf(lo), _mpf(hi))
-            around = f" around the {closing} closing" if closing else ""
+            around = ""
+            if closing:
+                b_, a_ = (int(x) for x in closing.split(":"))
+                mc = Fraction(b_ * b_ - a_ * a_, b_ * b_ + a_ * a_)
+                around = (
+                    f" around the closing T1:T2 = {closing} (m = {mc.numerator}/{mc.denominator} "
+                    "without friction)"
+                )
             return f"in the gap {a} < m < {b}{around}, where friction swallows the interval"
         return "the depth is beyond the range the proof covers"
 
@@ -457,8 +472,9 @@ def existence_scan(order, Q, *, damping="exact", digits=15) -> Existence:
 # ---------------------------------------------------------------------------------------------
 # the proof: branch and bound over depth ranges
 
-#: the most depth ranges :func:`existence` decides before it reports the rest as undecided
-BUDGET = 6000
+#: the most depth ranges :func:`existence` decides, per bit of the resolution, before it
+#: reports the rest as undecided
+BUDGET_PER_BIT = 100
 
 
 def _form_of(m: Fraction, Q: Fraction, damping: str):
@@ -515,9 +531,10 @@ def _decide(
         else:
             h, why = hump_trace(n, mid, Q, regimes, m_box=(lo, hi))
             if h is None:
-                # both halves (critically or) over-damped: no rotation, only order 1 can exist
-                return -1 if regimes[1] != "under" else 0
-    except (CertificationError, ValueError, ZeroDivisionError, OverflowError):
+                # both halves (critically or) over-damped: no rotation, only order 1 can exist;
+                # else the phase does not reach the order's window before D < 0 for good
+                return -1 if _no_window_on_box(n, lo, hi, Q, regimes) else 0
+    except (CertificationError, ValueError, ZeroDivisionError, OverflowError, ArithmeticError):
         return 0
     top = h.top
     narrow = hi - lo < max(lo, Fraction(1, 2**1000)) / 2**30
@@ -526,7 +543,8 @@ def _decide(
         top = _polish_top(h.point or h, start, bits, h.a, h.b)
         if fl is not None:
             fl["polished"] = top
-    if (narrow or math.isfinite(h.top) and h.dtop > 0) and h.a <= top <= h.b:
+    in_window = kind == "normal" or _in_trace_window(n, lo, hi, Q, regimes, top)
+    if (narrow or math.isfinite(h.top) and h.dtop > 0) and h.a <= top <= h.b and in_window:
         for prec in (64, 128, 256) if narrow else (64, 128):
             with ctx.workprec(prec):
                 val = h.D(_exact_ball(top))
@@ -542,6 +560,57 @@ def _decide(
     except (ValueError, ZeroDivisionError, OverflowError):  # pragma: no cover - guard
         return 0
     return 0
+
+
+def _box_trace_params(lo, hi, Q):
+    from .solve import _AtPrecision, box_prec, depth_ball
+
+    def make():
+        Qb = arb(Q.numerator) / Q.denominator
+        return trace_params(depth_ball((lo, hi)), Qb, backend("arb"))
+
+    return _AtPrecision(make, box_prec((lo, hi)))
+
+
+def _in_trace_window(n, lo, hi, Q, regimes, z) -> bool:
+    """``|Phi(z) - n pi| < pi/2`` for every depth of the range (half 2 under-damped), so that a
+    point with ``D > 0`` there belongs to order ``n``; with both halves over-damped only order 1
+    has a window."""
+    from .solve import trace_phase
+
+    if regimes[1] != "under":
+        return n == 1
+    if not (isinstance(z, arb) or math.isfinite(z)):
+        return False
+    P = _box_trace_params(lo, hi, Q)
+    try:
+        with ctx.workprec(96):
+            ph = trace_phase(regimes, P, _exact_ball(z), (lo, hi), (lo + hi) / 2, Q)
+            pi = arb.pi()
+            return bool(abs(ph - n * pi) < pi / 2)
+    except (ValueError, ZeroDivisionError, ArithmeticError):
+        return False
+
+
+def _no_window_on_box(n, lo, hi, Q, regimes) -> bool:
+    from .grid import trace_window_ends  # noqa: F401  (the float tail bound below is its rule)
+    from .solve import prove_no_window
+
+    if regimes[1] != "under":
+        return n > 1
+    T = trace_params((lo + hi) / 2, Q, backend("math"))
+    a = 2 - float(T.nu1)
+    if not a > 0:
+        return False
+    z = max(2 / a, 1.0) * (1 + 1e-6)
+    while (2 + abs(float(T.kappa)) * z * z) * math.exp(-a * z) >= 0.5:
+        z *= 1.25
+    try:
+        return prove_no_window(
+            n, regimes, _box_trace_params(lo, hi, Q), z, (lo, hi), (lo + hi) / 2, Q
+        )
+    except (ValueError, ZeroDivisionError, ArithmeticError):
+        return False
 
 
 def _exact_ball(t):
@@ -710,13 +779,18 @@ def existence(order, Q, *, damping="exact", digits=15, budget=None) -> Existence
     model = as_damping(damping)
     d = as_digits(digits)
     Qx = exact_fraction(QQ)
-    segs, _count = _segments(n, Qx, model, d, BUDGET if budget is None else int(budget))
+    cap = BUDGET_PER_BIT * bits_for_digits(d + 3) if budget is None else int(budget)
+    segs, _count = _segments(n, Qx, model, d, cap)
     return _assemble(n, Qx, model, d, segs)
 
 
 def _assemble(n, Q, model, digits, segs) -> Existence:
     """Thresholds from the undecided ranges that separate the two signs within the resolution;
     every other undecided range is reported as such."""
+    # undecided slivers within the resolution of m = 1 belong to the unproven tail towards 1
+    near_one = 1 - Fraction(1, 10**digits)
+    while len(segs) > 1 and segs[-1][2] == 0 and segs[-1][0] >= near_one:
+        segs = segs[:-1]
     thresholds, undecided = [], []
     for j, (lo, hi, sign) in enumerate(segs):
         if sign != 0:
@@ -743,3 +817,11 @@ def _assemble(n, Q, model, digits, segs) -> Existence:
         undecided=tuple(undecided),
         segments=tuple(pieces),
     )
+
+
+def absence_reason(order, m, Q, *, damping="exact") -> str:
+    """Why the ``order``-th interval does not exist at depth ``m`` with friction ``Q``, from the
+    proven existence ranges: below the threshold, in a gap around a closing, above the last
+    range, or in a range that could not be decided (see :meth:`Existence.where`)."""
+    ex = existence(order, Q, damping=damping)
+    return ex.where(exact_fraction(m))

@@ -98,6 +98,10 @@ __all__ = [
     "hump_normal",
     "hump_trace",
     "float_edges",
+    "hump_box",
+    "depth_ball",
+    "trace_phase",
+    "prove_no_window",
 ]
 
 _ARB = backend("arb")
@@ -299,15 +303,16 @@ def boundary(
 class _AtPrecision:
     """Numbers recomputed for every working precision (``flint.ctx.prec``), cached."""
 
-    def __init__(self, make):
+    def __init__(self, make, min_prec: int = 0):
         self._make = make
         self._cache: dict[int, object] = {}
+        self._min = min_prec  # e.g. what a depth range needs to keep 1 - m
 
     def __call__(self):
         prec = ctx.prec
         val = self._cache.get(prec)
         if val is None:
-            with ctx.workprec(prec + 12):
+            with ctx.workprec(max(prec, self._min) + 12):
                 val = self._make()
             self._cache[prec] = val
         return val
@@ -760,12 +765,19 @@ def _solve_hump(req: Request, h: _Hump, bits: int):
 
 
 def depth_ball(m_box: tuple[Fraction, Fraction]) -> arb:
-    """The ball (at the working precision, rounded outward) that holds every depth of the closed
-    range ``m_box = (lo, hi)`` of exact rationals."""
+    """The ball (rounded outward; at the working precision, or more where ``1 - m`` needs it)
+    that holds every depth of the closed range ``m_box = (lo, hi)`` of exact rationals."""
     lo, hi = m_box
-    a = arb(lo.numerator) / lo.denominator
-    b = arb(hi.numerator) / hi.denominator
-    return a.union(b)
+    with ctx.workprec(max(ctx.prec, box_prec(m_box))):
+        a = arb(lo.numerator) / lo.denominator
+        b = arb(hi.numerator) / hi.denominator
+        return a.union(b)
+
+
+def box_prec(m_box) -> int:
+    """Bits that keep ``1 - m`` and the width of a depth range (dyadic ends)."""
+    lo, hi = m_box
+    return 32 + max(lo.denominator.bit_length(), hi.denominator.bit_length(), 32)
 
 
 def _params_at(m, Q, damping, m_box, make):
@@ -816,9 +828,12 @@ def hump_normal(
             Qb = arb(Q.numerator) / Q.denominator
             return normal_params(Jet(depth_ball(m_box), 1), Jet(Qb), damping, _ARB)
 
-        P = _AtPrecision(jets)
+        P = _AtPrecision(jets, box_prec(m_box))
     else:
-        P = _AtPrecision(lambda: _params_at(m, Q, damping, m_box, normal_params))
+        P = _AtPrecision(
+            lambda: _params_at(m, Q, damping, m_box, normal_params),
+            box_prec(m_box) if m_box else 0,
+        )
     C = _AtPrecision(lambda: arb.pi() * n / 2)
 
     def args():
@@ -879,7 +894,7 @@ def hump_box(n: int, lo: Fraction, hi: Fraction, Q: Fraction, damping: str, floa
     def dm():
         return depth_ball((lo, hi)) - (arb(mid.numerator) / mid.denominator)
 
-    dM = _AtPrecision(dm)
+    dM = _AtPrecision(dm, box_prec((lo, hi)))
 
     def mv(f0, f1):
         def g(t):
@@ -1018,24 +1033,63 @@ def hump_trace(n: int, m: Fraction, Q: Fraction, regimes: tuple[str, str], m_box
         return None, why
     form = trace_indicator(*regimes)
     D0, D1, D2 = (form.compiled("arb", k) for k in (0, 1, 2))
-    P = _AtPrecision(lambda: _params_at(m, Q, None, m_box, trace_params))
+    P = _AtPrecision(
+        lambda: _params_at(m, Q, None, m_box, trace_params), box_prec(m_box) if m_box else 0
+    )
     sigma = -1 if n % 2 else 1
 
     def args():
         p = P()
         return (sigma, p.kappa, p.nu1, p.nu2)
 
+    funcs = [lambda z, F=F: F(z, *args()) for F in (D0, D1, D2)]
+    if m_box is not None:  # the mean-value form in m (see hump_box), jets from the middle
+        Pm = _AtPrecision(lambda: trace_params(m, Q, _ARB))
+
+        def jets():
+            Qb = arb(Q.numerator) / Q.denominator
+            return trace_params(Jet(depth_ball(m_box), 1), Jet(Qb), _ARB)
+
+        Pj = _AtPrecision(jets, box_prec(m_box))
+        dM = _AtPrecision(
+            lambda: depth_ball(m_box) - arb(m.numerator) / m.denominator, box_prec(m_box)
+        )
+
+        def mv(F):
+            def g(z):
+                pm, pj = Pm(), Pj()
+                v = F(z, sigma, pj.kappa, pj.nu1, pj.nu2)
+                slope = v.d if isinstance(v, Jet) else 0
+                return F(z, sigma, pm.kappa, pm.nu1, pm.nu2) + slope * dM()
+
+            return g
+
+        funcs = [mv(F) for F in (D0, D1, D2)]
+
     za, zb = window
+    if m_box is not None:  # the union of the windows at the two ends of the range
+        for x in m_box:
+            Tx = trace_params(x, Q, _MATH)
+            wx = trace_window_ends(n, regimes, Tx)
+            if wx is None:  # the window ends at the tail bound there: reach past it
+                ax = 2 - float(Tx.nu1)
+                if regimes[1] != "under" or not ax > 0:
+                    return None, "no window at an end of the range"
+                zt = max(2 / ax, 1.0)
+                while (2 + abs(float(Tx.kappa)) * zt * zt) * math.exp(-ax * zt) >= 0.5:
+                    zt *= 1.25
+                wx = (za, zt)
+            za, zb = min(za, wx[0]), max(zb, wx[1])
     widen = 1e-9 if m_box is None else 1e-3
     za = za * (1 - widen)
     zb = zb * (1 + widen)
-    if not _prove_window(n, regimes, P, za, zb):  # pragma: no cover - guard
+    if not _prove_window(n, regimes, P, za, zb, m_box, m, Q):  # pragma: no cover - guard
         raise CertificationError(f"could not prove the window of order {n}: {za}, {zb}")
     fl = damped_trace(n, regimes, Tf, (za, zb))
     h = _Hump(
-        D=lambda z: D0(z, *args()),
-        dD=lambda z: D1(z, *args()),
-        d2D=lambda z: D2(z, *args()),
+        D=funcs[0],
+        dD=funcs[1],
+        d2D=funcs[2],
         a=za,
         b=zb,
         top=fl["top"],
@@ -1074,19 +1128,63 @@ def _trace_damped(req: Request, regimes) -> Boundary:
     )
 
 
-def _prove_window(n, regimes, P, za, zb) -> bool:
-    """The window ends enclose the order's window (and nothing of the same parity beyond it)."""
+def _atan2(y, x):
+    """``atan2`` of balls or of jets (:class:`verify.certify.Jet`)."""
+    if isinstance(y, Jet) or isinstance(x, Jet):
+        y, x = Jet._of(y), Jet._of(x)
+        return Jet(arb.atan2(y.v, x.v), (x.v * y.d - y.v * x.d) / (x.v * x.v + y.v * y.v))
+    return arb.atan2(y, x)
+
+
+def trace_phase(regimes, P, z, m_box=None, m=None, Q=None) -> arb:
+    """The phase ``Phi(zeta)`` of the trace form (half 2 under-damped), as a ball; with
+    ``m_box`` (and its middle ``m``, and ``Q``) for every depth of the range, by the mean-value
+    form in ``m`` (jets) instead of ``P``."""
+    r1 = regimes[0]
+    win = trace_window(r1).compiled("arb", 0), trace_window(r1).compiled("arb", 1)
+    z = ball(z) if not isinstance(z, arb) else z
+
+    def phase(p):
+        C1 = win[0](z, 1, p.kappa, p.nu1, p.nu2)
+        S1 = win[1](z, 1, p.kappa, p.nu1, p.nu2)
+        return p.nu2 * z + _atan2(p.kappa * S1, 2 * p.nu2 * C1)
+
+    if m_box is None:
+        return phase(P())
+    with ctx.workprec(max(ctx.prec, box_prec(m_box))):
+        Qb = arb(Q.numerator) / Q.denominator
+        mid = phase(trace_params(m, Q, _ARB))
+        jet = phase(trace_params(Jet(depth_ball(m_box), 1), Jet(Qb), _ARB))
+        slope = jet.d if isinstance(jet, Jet) else 0
+        return mid + slope * (depth_ball(m_box) - arb(m.numerator) / m.denominator)
+
+
+def prove_no_window(n: int, regimes, P, ztail: float, m_box=None, m=None, Q=None) -> bool:
+    """Order ``n`` has no interval (half 2 under-damped): beyond ``ztail`` ``D < 0`` (the tail
+    bound of :func:`verify.grid.trace_window_ends`), and below it the phase stays under ``n pi -
+    pi/2`` (``Phi`` increases), so the order's window does not begin."""
+    if regimes[1] != "under":
+        return n > 1
+    with ctx.workprec(96):
+        p = P()
+        z2 = ball(ztail)
+        a = 2 - p.nu1
+        tail = (2 + abs(p.kappa) * z2 * z2) * (-a * z2).exp()
+        pi = arb.pi()
+        ph = trace_phase(regimes, P, z2, m_box, m, Q)
+        return bool(tail < 1 and z2 * a > 2 and ph < n * pi - pi / 2)
+
+
+def _prove_window(n, regimes, P, za, zb, m_box=None, m=None, Q=None) -> bool:
+    """The window ends enclose the order's window (and nothing of the same parity beyond it);
+    with ``m_box`` for every depth of that range (the phase by the mean-value form)."""
     r1, r2 = regimes
     with ctx.workprec(96):
         p = P()
         if r2 == "under":
-            win = trace_window(r1).compiled("arb", 0), trace_window(r1).compiled("arb", 1)
 
             def phi(z):
-                z = ball(z)
-                C1 = win[0](z, 1, p.kappa, p.nu1, p.nu2)
-                S1 = win[1](z, 1, p.kappa, p.nu1, p.nu2)
-                return p.nu2 * z + arb.atan2(p.kappa * S1, 2 * p.nu2 * C1)
+                return trace_phase(regimes, P, ball(z), m_box, m, Q)
 
             pi = arb.pi()
             z2 = ball(zb)
