@@ -208,8 +208,14 @@ class Existence:
             lines.append(f"{head}: the interval exists for")
             for a, b in ranges:
                 lines.append(f"  {a} < m < {b}")
-        for a, b in self.undecided_texts():
+        und = self.undecided_texts()
+        for a, b in und[:4]:
             lines.append(f"  undecided: {a} < m < {b}")
+        if len(und) > 4:
+            lines.append(
+                f"  undecided: {len(und) - 4} more ranges within {und[4][0]} < m < {und[-1][1]} "
+                "(--json lists them)"
+            )
         return "\n".join(lines)
 
 
@@ -474,7 +480,7 @@ def existence_scan(order, Q, *, damping="exact", digits=15) -> Existence:
 
 #: the most depth ranges :func:`existence` decides, per bit of the resolution, before it
 #: reports the rest as undecided
-BUDGET_PER_BIT = 100
+BUDGET_PER_BIT = 50
 
 
 def _form_of(m: Fraction, Q: Fraction, damping: str):
@@ -530,6 +536,16 @@ def _decide(
             h = hump_box(n, lo, hi, Q, damping, float_stage=fl)
         else:
             h, why = hump_trace(n, mid, Q, regimes, m_box=(lo, hi))
+            if h is None and n == 1 and regimes[1] != "under":
+                # both halves over-damped, no sign change of P at the middle: D < 0 is to be
+                # proven on all of [0, zend] (beyond it the tail bound)
+                T = trace_params(mid, Q, backend("math"))
+                a = 2 - float(T.nu1) - float(T.nu2)
+                if a > 0:
+                    zend = max(2 / a, 1.0) * (1 + 1e-6)
+                    while abs(float(T.kappa)) * zend * zend * math.exp(-a * zend) >= 0.25:
+                        zend *= 1.5
+                    h, why = hump_trace(n, mid, Q, regimes, m_box=(lo, hi), window=(1e-9, zend))
             if h is None:
                 # both halves (critically or) over-damped: no rotation, only order 1 can exist;
                 # else the phase does not reach the order's window before D < 0 for good
@@ -709,6 +725,7 @@ def _segments(n: int, Q: Fraction, damping: str, digits: int, budget: int):
     done: list[tuple] = []
     count = 0
     inherited: dict = {}
+    tail_count = 0
     while pending:
         if count >= budget:
             done.extend((lo, hi, 0) for lo, hi in pending)
@@ -722,10 +739,12 @@ def _segments(n: int, Q: Fraction, damping: str, digits: int, budget: int):
         inherited = {}
         nxt = []
         for (lo, hi), fl in zip(pending, stages, strict=True):
-            if count >= budget:
-                done.append((lo, hi, 0))
+            tail = 1 - lo < Fraction(1, 1000)
+            if count >= budget or (tail and tail_count >= budget // 3):
+                done.append((lo, hi, 0))  # the tail towards m = 1 gets a third of the budget
                 continue
             count += 1
+            tail_count += tail
             sign = _decide(n, lo, hi, Q, damping, bits, fl)
             splittable = hi - lo > max(lo, Fraction(1, 2**1000)) / 2 ** (bits + 2)
             if sign == 0 and splittable:

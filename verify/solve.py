@@ -1015,7 +1015,9 @@ def _normal_damped(req: Request) -> Boundary:
     )
 
 
-def hump_trace(n: int, m: Fraction, Q: Fraction, regimes: tuple[str, str], m_box=None):
+def hump_trace(
+    n: int, m: Fraction, Q: Fraction, regimes: tuple[str, str], m_box=None, window=None
+):
     """The friction problem in the trace form (exact model, a half critically or over-damped):
     the :class:`_Hump` in ``zeta`` on the proven window of order ``n``, and the parameters; or
     ``(None, reason)`` if the order has no window.  ``m_box`` as for :func:`hump_normal` (the
@@ -1023,7 +1025,7 @@ def hump_trace(n: int, m: Fraction, Q: Fraction, regimes: tuple[str, str], m_box
     from .grid import damped_trace, trace_window_ends
 
     Tf = trace_params(m, Q, _MATH)
-    window = trace_window_ends(n, regimes, Tf)
+    window = window or trace_window_ends(n, regimes, Tf)
     if window is None:
         why = (
             "both halves are critically or over-damped: only order 1 can exist"
@@ -1071,9 +1073,11 @@ def hump_trace(n: int, m: Fraction, Q: Fraction, regimes: tuple[str, str], m_box
         for x in m_box:
             Tx = trace_params(x, Q, _MATH)
             wx = trace_window_ends(n, regimes, Tx)
+            if wx is None and regimes[1] != "under":
+                continue  # the given window covers it
             if wx is None:  # the window ends at the tail bound there: reach past it
                 ax = 2 - float(Tx.nu1)
-                if regimes[1] != "under" or not ax > 0:
+                if not ax > 0:
                     return None, "no window at an end of the range"
                 zt = max(2 / ax, 1.0)
                 while (2 + abs(float(Tx.kappa)) * zt * zt) * math.exp(-ax * zt) >= 0.5:
