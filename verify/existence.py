@@ -4,22 +4,26 @@ With friction the ``n``-th interval exists at depth ``m`` iff the instability in
 :mod:`verify.solve`) is positive somewhere in the order's window, i.e. iff ``g(m) = max D > 0``.
 ``g`` is negative for small ``m`` (the threshold: friction beats a weak modulation) and, for ``n >=
 3``, near every depth where the friction-free interval closes (there ``D0`` has a double zero, so
-``D = D0 - (1 - r^2) sinh^2 < 0``: friction swallows the interval).  The ends of the ranges are the
-depths where ``max D = 0``, i.e. where ``D`` has a double zero in ``theta``.
+``D = D0 - (1 - r^2) sinh^2 < 0``: friction swallows the interval); islands may appear elsewhere.
 
-:func:`existence` finds them in three stages:
+:func:`existence` **proves** the answer on the whole depth axis by branch and bound over closed
+depth ranges ``[lo, hi]`` (exact rationals).  On each range ``D`` is bounded in ball arithmetic
+for all its depths at once, by the mean-value form in ``m``: ``D(t; M) in D(t; mid) + D_m(t; M)
+(M - mid)``, with ``D_m`` from first-order jets (:class:`verify.certify.Jet`) of the parameters
+over the ball ``M`` (far tighter than evaluating with ``M`` itself).  A range is
 
-1. **scan**: ``g`` in double precision on a grid of depths (log-spaced towards both ends, plus
-   every closing depth of the order, where a gap is centred) -- vectorised;
-2. **refine**: each sign change is bracketed by bisection in floats, then located to the requested
-   digits by the secant method on ``g`` evaluated in ball arithmetic (``g(m) = D(theta*(m))``
-   with the maximiser ``theta*`` from Newton's method on ``D'``);
-3. **prove**: at two exact rational depths ``m* -+ delta`` a point with ``D > 0`` is exhibited on
-   the side where the interval exists, and ``D < 0`` on the whole window is proven on the other
-   (:func:`verify.solve._prove_negative`), so the threshold lies in ``[m* - delta, m* + delta]``.
+* *exists* (``+1``) when ``D > 0`` at one period ``T`` (the maximiser at the middle, polished in
+  ``arb`` near a threshold) for every depth of it, that ``T`` lying in the order's window;
+* *none* (``-1``) when ``D < 0`` on the whole window for every depth of it (Taylor's bound around
+  the maximiser where ``D'' < 0``, bisection elsewhere; in the trace form also a proof that the
+  order's window does not begin before ``D < 0`` for good);
+* else bisected, down to the resolution of the digits asked for.
 
-The scan cannot see a range narrower than its spacing away from the closings; every range that
-ends at a closing gap or at a threshold is found.
+An undecided range between *none* and *exists* that is narrower than that resolution is a
+threshold, its enclosure proven on both sides; any other undecided range (or one left past the
+budget) is reported as undecided, never guessed.  ``m -> 1`` is covered to ``1 - 2^-K`` within the
+resolution.  The former scan (:func:`existence_scan`, float ``g`` on a grid, thresholds proven at
+two points each) is kept for comparison; it could miss an island narrower than its spacing.
 """
 
 from __future__ import annotations
