@@ -4,40 +4,52 @@ With friction the ``n``-th interval exists at depth ``m`` iff the instability in
 :mod:`verify.solve`) is positive somewhere in the order's window, i.e. iff ``g(m) = max D > 0``.
 ``g`` is negative for small ``m`` (the threshold: friction beats a weak modulation) and, for ``n >=
 3``, near every depth where the friction-free interval closes (there ``D0`` has a double zero, so
-``D = D0 - (1 - r^2) sinh^2 < 0``: friction swallows the interval).  The ends of the ranges are the
-depths where ``max D = 0``, i.e. where ``D`` has a double zero in ``theta``.
+``D = D0 - (1 - r^2) sinh^2 < 0``: friction swallows the interval); islands may appear elsewhere.
 
-:func:`existence` finds them in three stages:
+:func:`existence` **proves** the answer on the whole depth axis by branch and bound over closed
+depth ranges ``[lo, hi]`` (exact rationals).  On each range ``D`` is bounded in ball arithmetic
+for all its depths at once, by the mean-value form in ``m``: ``D(t; M) in D(t; mid) + D_m(t; M)
+(M - mid)``, with ``D_m`` from first-order jets (:class:`verify.certify.Jet`) of the parameters
+over the ball ``M`` (far tighter than evaluating with ``M`` itself).  A range is
 
-1. **scan**: ``g`` in double precision on a grid of depths (log-spaced towards both ends, plus
-   every closing depth of the order, where a gap is centred) -- vectorised;
-2. **refine**: each sign change is bracketed by bisection in floats, then located to the requested
-   digits by the secant method on ``g`` evaluated in ball arithmetic (``g(m) = D(theta*(m))``
-   with the maximiser ``theta*`` from Newton's method on ``D'``);
-3. **prove**: at two exact rational depths ``m* -+ delta`` a point with ``D > 0`` is exhibited on
-   the side where the interval exists, and ``D < 0`` on the whole window is proven on the other
-   (:func:`verify.solve._prove_negative`), so the threshold lies in ``[m* - delta, m* + delta]``.
+* *exists* (``+1``) when ``D > 0`` at one period ``T`` (the maximiser at the middle, polished in
+  ``arb`` near a threshold) for every depth of it, that ``T`` lying in the order's window;
+* *none* (``-1``) when ``D < 0`` on the whole window for every depth of it (Taylor's bound around
+  the maximiser where ``D'' < 0``, bisection elsewhere; in the trace form also a proof that the
+  order's window does not begin before ``D < 0`` for good);
+* else bisected, down to the resolution of the digits asked for.
 
-The scan cannot see a range narrower than its spacing away from the closings; every range that
-ends at a closing gap or at a threshold is found.
+An undecided range between *none* and *exists* that is narrower than that resolution is a
+threshold, its enclosure proven on both sides; any other undecided range (or one left past the
+budget) is reported as undecided, never guessed.  ``m -> 1`` is covered to ``1 - 2^-K`` within the
+resolution.  The former scan (:func:`existence_scan`, float ``g`` on a grid, thresholds proven at
+two points each) is kept for comparison; it could miss an island narrower than its spacing.
 """
 
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, fields
 from fractions import Fraction
 
 import mpmath
 import numpy as np
 from flint import arb, ctx
 
-from .certify import CertificationError, bits_for_digits, certified_root, to_mpf
+from .certify import CertificationError, bits_for_digits, certified_root, prove_sign, to_mpf
 from .derived import backend
 from .inputs import InputError, as_damping, as_digits, as_order, as_quality
 from .params import NEAR_CRITICAL, exact_fraction, form_for, normal_params, trace_params
 
-__all__ = ["Existence", "Threshold", "existence", "max_indicator", "closing_depths"]
+__all__ = [
+    "Existence",
+    "Threshold",
+    "existence",
+    "existence_scan",
+    "absence_reason",
+    "max_indicator",
+    "closing_depths",
+]
 
 
 @dataclass(frozen=True)
@@ -61,7 +73,11 @@ class Threshold:
 @dataclass(frozen=True)
 class Existence:
     """The depth ranges ``(a, b)`` in ``(0, 1)`` where the ``order``-th interval exists (``b = 1``:
-    open towards ``m -> 1``), and the proven thresholds that bound them."""
+    open towards ``m -> 1``), the proven thresholds that bound them, and the depth ranges that
+    could not be decided (``undecided``, exact rationals ``(lo, hi)``; empty when the whole axis
+    is proven).  ``segments`` is the proof: closed depth ranges ``(lo, hi, sign)`` covering the
+    axis, ``+1`` exists at every depth, ``-1`` at none, ``0`` undecided (a threshold's enclosure
+    or an undecided range)."""
 
     order: int
     Q: Fraction
@@ -69,31 +85,102 @@ class Existence:
     digits: int
     thresholds: tuple[Threshold, ...]
     open_to_one: bool
+    undecided: tuple = ()
+    segments: tuple = ()
+
+    def _ranges(self) -> list[tuple]:
+        """``[(start, end), ...]`` of the ranges where the interval exists, each end a
+        :class:`Threshold`, an exact rational (the end of an undecided range) or ``1``."""
+        if not self.segments:  # thresholds only (the scan)
+            out, start = [], None
+            for t in self.thresholds:
+                if t.appears:
+                    start = t
+                else:
+                    out.append((start, t))
+                    start = None
+            if self.open_to_one:
+                out.append((start, 1))
+            return out
+        by_lo = {t.enclosure[0]: t for t in self.thresholds}
+        segs = self.segments
+        out = []
+        for j, (lo, hi, sign) in enumerate(segs):
+            if sign != 1:
+                continue
+            start = by_lo.get(segs[j - 1][0], lo) if j > 0 else lo
+            if j + 1 < len(segs):
+                end = by_lo.get(segs[j + 1][0], hi)
+            else:
+                end = 1
+            out.append((start, end))
+        return out
+
+    @staticmethod
+    def _value(e):
+        if isinstance(e, Threshold):
+            return e.value
+        return mpmath.mpf(1) if e == 1 else _mpf(e)
+
+    def _text(self, e) -> str:
+        if isinstance(e, Threshold):
+            return e.text()
+        if e == 1:
+            return "1"
+        return mpmath.nstr(_mpf(e), self.digits)
 
     @property
     def intervals(self) -> list[tuple]:
         """``[(a, b), ...]`` as mpmath numbers (``b = 1`` when open towards 1)."""
-        out, start = [], None
-        for t in self.thresholds:
-            if t.appears:
-                start = t.value
-            else:
-                out.append((start, t.value))
-                start = None
-        if self.open_to_one:
-            out.append((start, mpmath.mpf(1)))
-        return out
+        return [(self._value(a), self._value(b)) for a, b in self._ranges()]
 
     def interval_texts(self) -> list[list[str]]:
-        out, start = [], None
-        for t in self.thresholds:
-            if t.appears:
-                start = t.text()
-            else:
-                out.append([start, t.text()])
-        if self.open_to_one:
-            out.append([start, "1"])
-        return out
+        return [[self._text(a), self._text(b)] for a, b in self._ranges()]
+
+    def undecided_texts(self) -> list[list[str]]:
+        return [[mpmath.nstr(_mpf(lo), self.digits), mpmath.nstr(_mpf(hi), self.digits)]
+                for lo, hi in self.undecided]
+
+    def where(self, m: Fraction) -> str:
+        """Why the interval does or does not exist at the exact depth ``m``: ``"exists"``,
+        ``"below the threshold m = ..."``, ``"in the gap ... around the a:b closing ..."``,
+        ``"above ..."``, ``"undecided ..."`` (from the proof, :attr:`segments`)."""
+        for j, (lo, hi, sign) in enumerate(self.segments):
+            if not lo <= m <= hi:
+                continue
+            if sign == 1:
+                return "exists"
+            ranges = self._ranges()
+            if sign == 0 and (lo, hi) in self.undecided:
+                return (
+                    f"m lies in the range {self._text(lo)} < m < {self._text(hi)} where existence "
+                    "could not be decided"
+                )
+            if sign == 0:
+                return (
+                    f"m lies within the enclosure of the threshold near m = "
+                    f"{mpmath.nstr(_mpf((lo + hi) / 2), self.digits)}"
+                )
+            before = [r for r in ranges if self._value(r[1]) <= _mpf(m)]
+            after = [r for r in ranges if self._value(r[0]) >= _mpf(m)]
+            if not before and after:
+                return f"below the threshold m = {self._text(after[0][0])}"
+            if not before and not after:
+                return "the interval exists at no depth 0 < m < 1"
+            if not after:
+                return f"above the last range, which ends at m = {self._text(before[-1][1])}"
+            a, b = self._text(before[-1][1]), self._text(after[0][0])
+            closing = _closing_in(self.order, self.Q, self.damping, _mpf(lo), _mpf(hi))
+            around = ""
+            if closing:
+                b_, a_ = (int(x) for x in closing.split(":"))
+                mc = Fraction(b_ * b_ - a_ * a_, b_ * b_ + a_ * a_)
+                around = (
+                    f" around the closing T1:T2 = {closing} (m = {mc.numerator}/{mc.denominator} "
+                    "without friction)"
+                )
+            return f"in the gap {a} < m < {b}{around}, where friction swallows the interval"
+        return "the depth is beyond the range the proof covers"
 
     def as_json(self) -> dict:
         q = self.Q
@@ -111,16 +198,55 @@ class Existence:
                 }
                 for t in self.thresholds
             ],
+            "undecided": self.undecided_texts(),
         }
 
     def __str__(self) -> str:
         head = f"order {self.order}, Q = {self.as_json()['Q']} ({self.damping} model)"
-        if not self.thresholds and not self.open_to_one:
-            return f"{head}: the interval exists at no depth 0 < m < 1"
-        lines = [f"{head}: the interval exists for"]
-        for a, b in self.interval_texts():
-            lines.append(f"  {a} < m < {b}" if b != "1" else f"  {a} < m < 1")
+        lines = []
+        ranges = self.interval_texts()
+        if not ranges:
+            lines.append(f"{head}: the interval exists at no depth 0 < m < 1"
+                         + (" that could be decided" if self.undecided else ""))
+        else:
+            lines.append(f"{head}: the interval exists for")
+            for a, b in ranges:
+                lines.append(f"  {a} < m < {b}")
+        und = self.undecided_texts()
+        for a, b in und[:4]:
+            lines.append(f"  undecided: {a} < m < {b}")
+        if len(und) > 4:
+            lines.append(
+                f"  undecided: {len(und) - 4} more ranges within {und[4][0]} < m < {und[-1][1]} "
+                "(--json lists them)"
+            )
         return "\n".join(lines)
+
+
+def _closing_in(n: int, Q, damping: str, lo, hi) -> str:
+    """``"b:a"`` (``T1:T2``) of the closing of order ``n`` whose depth lies in ``[lo, hi]``."""
+    for a in range(1, n):
+        b = n - a
+        if a >= b:
+            continue
+        if Q is None or damping == "paper":
+            mc = Fraction(b * b - a * a, b * b + a * a)
+            if lo <= _mpf(mc) <= hi:
+                return f"{b}:{a}"
+    if damping == "exact":
+        for mc in closing_depths(n, Q, damping):
+            if lo <= mc <= hi:
+                for a in range(1, n):
+                    return _nearest_ratio(n, mc)
+    return ""
+
+
+def _nearest_ratio(n: int, mc: float) -> str:
+    best = min(
+        ((n - a, a) for a in range(1, n) if a < n - a),
+        key=lambda ba: abs((ba[0] ** 2 - ba[1] ** 2) / (ba[0] ** 2 + ba[1] ** 2) - mc),
+    )
+    return f"{best[0]}:{best[1]}"
 
 
 # ---------------------------------------------------------------------------------------------
@@ -146,8 +272,10 @@ def closing_depths(n: int, Q: Fraction | None, damping: str) -> list[float]:
             nu2 = math.sqrt((q2 - 1 + m) / (1 - m))
             return a * nu2 - b * nu1
 
-        lo, hi = 0.0, min(1.0, q2 - 1) if q2 < 2 else 1.0
-        if not (h(lo) < 0 < h(hi * (1 - 1e-15))):
+        # both damped frequencies are real only for 1 - 4Q^2 < m < 4Q^2 - 1 (none if Q <= 1/2:
+        # half 1 is then over-damped at every depth and does not rotate, so nothing closes)
+        lo, hi = max(0.0, 1 - q2), min(1.0, q2 - 1)
+        if not lo < hi or not (h(lo) < 0 < h(hi * (1 - 1e-15))):
             continue
         for _ in range(80):
             mid = 0.5 * (lo + hi)
@@ -318,9 +446,9 @@ def _mpf(x: Fraction) -> mpmath.mpf:
         return mpmath.mpf(x.numerator) / x.denominator
 
 
-def existence(order, Q, *, damping="exact", digits=15) -> Existence:
-    """The depth ranges ``0 < a < m < b <= 1`` where the ``order``-th interval of instability
-    exists with friction ``Q`` in the given damping model, each end proven to ``digits`` digits.
+def existence_scan(order, Q, *, damping="exact", digits=15) -> Existence:
+    """The former scan (kept for comparison in the benchmark): every threshold it finds is
+    proven, but an island narrower than the scan's spacing can be missed.
 
     Returns an :class:`Existence`: ``.intervals`` (pairs of mpmath numbers, ``b = 1`` when the
     range is open towards ``m -> 1``), ``.thresholds`` (with enclosures), ``.as_json()``.
@@ -349,3 +477,374 @@ def existence(order, Q, *, damping="exact", digits=15) -> Existence:
             else:
                 thresholds.append(_refine(n, Qx, model, ms[j + 1], ms[j], d))
     return Existence(n, Qx, model, d, tuple(thresholds), bool(pos[-1]))
+
+
+# ---------------------------------------------------------------------------------------------
+# the proof: branch and bound over depth ranges
+
+#: the most depth ranges :func:`existence` decides, per bit of the resolution, before it
+#: reports the rest as undecided
+BUDGET_PER_BIT = 50
+
+
+def _form_of(m: Fraction, Q: Fraction, damping: str):
+    return form_for(m, Q, damping)
+
+
+def _float_stages(n: int, boxes, Q: Fraction, damping: str) -> list:
+    """The float stage (maximiser, edges, bracket) at the middle of each range whose equations
+    are the normal form, in one vectorised call (``None`` for the others).  The float parameters
+    come from the exact middle (right also next to ``m = 1`` and to critical damping)."""
+    from .grid import damped_normal
+    from .params import NormalParams
+
+    mids = [(lo + hi) / 2 for lo, hi in boxes]
+    out: list = [None] * len(boxes)
+    idx, rows = [], []
+    for j, x in enumerate(mids):
+        if _form_of(x, Q, damping)[0] != "normal":
+            continue
+        idx.append(j)
+        rows.append(normal_params(x, Q, damping, backend("math")))
+    if not idx:
+        return out
+    names = [f.name for f in fields(NormalParams)]
+    P = NormalParams(*(np.array([float(getattr(r, k)) for r in rows]) for k in names))
+    with np.errstate(all="ignore"):
+        res = damped_normal(np.array([[n]]), P)
+    cols = {k: np.asarray(v, float).ravel() * np.ones(len(idx)) for k, v in res.items()}
+    for k, j in enumerate(idx):
+        fl = {key: float(val[k]) for key, val in cols.items()}
+        fl["bm"] = float(P.bm[k])
+        out[j] = fl
+    return out
+
+
+def _decide(
+    n: int, lo: Fraction, hi: Fraction, Q: Fraction, damping: str, bits: int, fl=None
+) -> int:
+    """``+1``: the interval exists at every depth of ``[lo, hi]`` (a point ``T`` with ``D > 0`` in
+    the order's window, the same for all of them); ``-1``: at none (``D < 0`` on the whole window
+    for all of them); ``0``: not decided on this range.  ``D`` is evaluated with the parameters as
+    balls that hold every depth of the range (:func:`verify.solve.depth_ball`); ``fl`` is the
+    float stage at the middle (:func:`_float_stages`), only a starting point."""
+    from .solve import hump_box, hump_trace
+
+    mid = (lo + hi) / 2
+    kinds = {_form_of(x, Q, damping) for x in (lo, mid, hi)}
+    if len(kinds) != 1:
+        return 0  # a change of equations inside: split there
+    kind, regimes = kinds.pop()
+    try:
+        if kind == "normal":
+            h = hump_box(n, lo, hi, Q, damping, float_stage=fl)
+        else:
+            h, why = hump_trace(n, mid, Q, regimes, m_box=(lo, hi))
+            if h is None and n == 1 and regimes[1] != "under":
+                # both halves over-damped, no sign change of P at the middle: D < 0 is to be
+                # proven on all of [0, zend] (beyond it the tail bound)
+                T = trace_params(mid, Q, backend("math"))
+                a = 2 - float(T.nu1) - float(T.nu2)
+                if a > 0:
+                    zend = max(2 / a, 1.0) * (1 + 1e-6)
+                    while abs(float(T.kappa)) * zend * zend * math.exp(-a * zend) >= 0.25:
+                        zend *= 1.5
+                    h, why = hump_trace(n, mid, Q, regimes, m_box=(lo, hi), window=(1e-9, zend))
+            if h is None:
+                # both halves (critically or) over-damped: no rotation, only order 1 can exist;
+                # else the phase does not reach the order's window before D < 0 for good
+                return -1 if _no_window_on_box(n, lo, hi, Q, regimes) else 0
+    except (CertificationError, ValueError, ZeroDivisionError, OverflowError, ArithmeticError):
+        return 0
+    top = h.top
+    narrow = hi - lo < max(lo, Fraction(1, 2**1000)) / 2**30
+    if narrow and math.isfinite(top):
+        start = fl.get("polished", top) if fl is not None else top
+        top = _polish_top(h.point or h, start, bits, h.a, h.b)
+        if fl is not None:
+            fl["polished"] = top
+    in_window = kind == "normal" or _in_trace_window(n, lo, hi, Q, regimes, top)
+    if (narrow or math.isfinite(h.top) and h.dtop > 0) and h.a <= top <= h.b and in_window:
+        for prec in (64, 128, 256) if narrow else (64, 128):
+            with ctx.workprec(prec):
+                val = h.D(_exact_ball(top))
+                if not val.is_finite():
+                    break
+                if val > 0:
+                    return 1
+                if val < 0 and not narrow:
+                    break
+    try:
+        if _negative_on_box(h, budget=60, top=top, narrow=narrow):
+            return -1
+    except (ValueError, ZeroDivisionError, OverflowError):  # pragma: no cover - guard
+        return 0
+    return 0
+
+
+def _box_trace_params(lo, hi, Q):
+    from .solve import _AtPrecision, box_prec, depth_ball
+
+    def make():
+        Qb = arb(Q.numerator) / Q.denominator
+        return trace_params(depth_ball((lo, hi)), Qb, backend("arb"))
+
+    return _AtPrecision(make, box_prec((lo, hi)))
+
+
+def _in_trace_window(n, lo, hi, Q, regimes, z) -> bool:
+    """``|Phi(z) - n pi| < pi/2`` for every depth of the range (half 2 under-damped), so that a
+    point with ``D > 0`` there belongs to order ``n``; with both halves over-damped only order 1
+    has a window."""
+    from .solve import trace_phase
+
+    if regimes[1] != "under":
+        return n == 1
+    if not (isinstance(z, arb) or math.isfinite(z)):
+        return False
+    P = _box_trace_params(lo, hi, Q)
+    try:
+        with ctx.workprec(96):
+            ph = trace_phase(regimes, P, _exact_ball(z), (lo, hi), (lo + hi) / 2, Q)
+            pi = arb.pi()
+            return bool(abs(ph - n * pi) < pi / 2)
+    except (ValueError, ZeroDivisionError, ArithmeticError):
+        return False
+
+
+def _no_window_on_box(n, lo, hi, Q, regimes) -> bool:
+    from .grid import trace_window_ends  # noqa: F401  (the float tail bound below is its rule)
+    from .solve import prove_no_window
+
+    if regimes[1] != "under":
+        return n > 1
+    T = trace_params((lo + hi) / 2, Q, backend("math"))
+    a = 2 - float(T.nu1)
+    if not a > 0:
+        return False
+    z = max(2 / a, 1.0) * (1 + 1e-6)
+    while (2 + abs(float(T.kappa)) * z * z) * math.exp(-a * z) >= 0.5:
+        z *= 1.25
+    try:
+        return prove_no_window(
+            n, regimes, _box_trace_params(lo, hi, Q), z, (lo, hi), (lo + hi) / 2, Q
+        )
+    except (ValueError, ZeroDivisionError, ArithmeticError):
+        return False
+
+
+def _exact_ball(t):
+    return t if isinstance(t, arb) else arb(t)
+
+
+def _polish_top(h, top, bits: int, a: float, b: float):
+    """The maximiser of ``D`` refined by Newton's method on ``D'`` (ball midpoints) to about
+    ``bits`` bits: near a threshold ``max D`` is tiny and the float maximiser is not good
+    enough (any point serves for the proofs; a better one makes them succeed)."""
+    t = _exact_ball(top)
+    with ctx.workprec(2 * bits + 40):
+        for _ in range(4):
+            d1, d2 = h.dD(t).mid(), h.d2D(t).mid()
+            if d2 == 0 or not d1.is_finite() or not d2.is_finite():
+                break
+            step = d1 / d2
+            t = (t - step).mid()
+            if abs(step) < abs(t) * arb(2) ** (-2 * bits) + arb(2) ** (-4 * bits):
+                break
+    if not a < t < b:
+        return top
+    return t
+
+
+def _negative_on_box(h, budget: int, top=None, narrow: bool = False) -> bool:
+    """``D < 0`` on the whole bracket ``[a, b]`` for every depth of the range (the parameters are
+    balls): by bisection (:func:`verify.certify.prove_sign`), else by Taylor's bound around the
+    float maximiser ``t`` (any point will do): on a ball ``X`` around ``t`` where ``D'' < 0``,
+    ``D <= D(t) + D'(t)^2 / (2 |sup D''(X)|)``, and bisection outside ``X``."""
+    top = h.top if top is None else top
+    t = top if (isinstance(top, arb) or math.isfinite(top)) and h.a < top < h.b else 0.5 * (
+        h.a + h.b
+    )
+    tf = float(t)
+    for prec in (64, 128, 256) if narrow else (64, 128):
+        with ctx.workprec(prec):
+            tb = _exact_ball(t)
+            Dt, D1t = h.D(tb), h.dD(tb)
+            if Dt > 0:
+                return False
+            if not Dt < 0:
+                continue
+            rho = (h.b - h.a) / 4
+            for _ in range(30):
+                lo, hi = max(tf - rho, h.a), min(tf + rho, h.b)
+                X = arb(ball_of(0.5 * (lo + hi)), 0.5 * (hi - lo) * (1 + 2.0**-40))
+                d2 = h.d2D(X)
+                if d2 < 0:
+                    bound = Dt + D1t * D1t / (2 * abs(d2.upper()))
+                    if bound < 0:
+                        return (
+                            lo <= h.a or prove_sign(h.D, h.dD, h.a, lo, -1, prec=prec, budget=budget)
+                        ) and (
+                            hi >= h.b or prove_sign(h.D, h.dD, hi, h.b, -1, prec=prec, budget=budget)
+                        )
+                rho /= 4
+    # no usable maximiser: bisection alone
+    return prove_sign(h.D, h.dD, h.a, h.b, -1, prec=64, budget=budget)
+
+
+def ball_of(x: float) -> arb:
+    """A float as an exact ball."""
+    return arb(x)
+
+
+def _breakpoints(n: int, Q: Fraction, damping: str, top: Fraction) -> list[Fraction]:
+    """Where the depth axis is first cut: geometric towards both ends, even in between, at every
+    closing (a gap is centred there) and where the equations change (critical damping)."""
+    pts = {Fraction(0), top}
+    pts.update(Fraction(1, 2**k) for k in range(4, 41))
+    pts.update(Fraction(k, 64) for k in range(4, 64))
+    k = 7
+    while Fraction(1) - Fraction(1, 2**k) < top:
+        pts.add(1 - Fraction(1, 2**k))
+        k += 1
+    for mc in closing_depths(n, Q, damping):
+        pts.add(Fraction(mc))
+    if damping == "exact":
+        q2 = 4 * Q * Q
+        eps2 = Fraction(NEAR_CRITICAL) ** 2
+        for x in (q2 - 1, 1 - q2, (q2 - 1 - eps2) / (1 + eps2)):
+            pts.add(x)
+    return sorted(x for x in pts if 0 <= x <= top)
+
+
+def _segments(n: int, Q: Fraction, damping: str, digits: int, budget: int):
+    """The depth axis ``[0, 1 - 2^-K]`` cut into closed ranges, each with its sign
+    (:func:`_decide`), adjacent ranges of one sign merged; ``K`` is such that ``2^-K`` is below
+    the resolution of ``digits`` digits at ``m = 1``.  Undecided ranges are bisected down to
+    that relative resolution, and left undecided past ``budget`` decisions."""
+    bits = bits_for_digits(digits + 3)
+    top = 1 - Fraction(1, 2 ** (bits + 2))
+    cuts = _breakpoints(n, Q, damping, top)
+    pending = [(cuts[j], cuts[j + 1]) for j in range(len(cuts) - 1)]
+    done: list[tuple] = []
+    count = 0
+    inherited: dict = {}
+    tail_count = 0
+    while pending:
+        if count >= budget:
+            done.extend((lo, hi, 0) for lo, hi in pending)
+            break
+        # a narrow range takes its parent's float stage (the maximiser is polished in arb)
+        fresh = [j for j, b in enumerate(pending) if b not in inherited]
+        stages_f = _float_stages(n, [pending[j] for j in fresh], Q, damping)
+        stages = [inherited.get(b) for b in pending]
+        for j, fl in zip(fresh, stages_f, strict=True):
+            stages[j] = fl
+        inherited = {}
+        nxt = []
+        for (lo, hi), fl in zip(pending, stages, strict=True):
+            tail = 1 - lo < Fraction(1, 1000)
+            if count >= budget or (tail and tail_count >= budget // 3):
+                done.append((lo, hi, 0))  # the tail towards m = 1 gets a third of the budget
+                continue
+            count += 1
+            tail_count += tail
+            sign = _decide(n, lo, hi, Q, damping, bits, fl)
+            splittable = hi - lo > max(lo, Fraction(1, 2**1000)) / 2 ** (bits + 2)
+            if sign == 0 and splittable:
+                mid = _round_fraction((lo + hi) / 2, lo, hi)
+                nxt.extend([(lo, mid), (mid, hi)])
+                if fl is not None and hi - lo < max(lo, Fraction(1, 2**1000)) / 2**24:
+                    inherited[(lo, mid)] = inherited[(mid, hi)] = fl
+            else:
+                done.append((lo, hi, sign))
+        pending = nxt
+    done.sort()
+    out: list[list] = []
+    for lo, hi, sign in done:
+        if out and out[-1][2] == sign and out[-1][1] == lo:
+            out[-1][1] = hi
+        else:
+            out.append([lo, hi, sign])
+    return [tuple(x) for x in out], count
+
+
+def _round_fraction(mid: Fraction, lo: Fraction, hi: Fraction) -> Fraction:
+    """A dyadic rational strictly between ``lo`` and ``hi`` near ``mid`` (keeps the numbers short)."""
+    width = hi - lo
+    k = max(0, -(width.numerator.bit_length() - width.denominator.bit_length()) + 3)
+    x = Fraction(round(mid * 2**k), 2**k)
+    return x if lo < x < hi else mid
+
+
+def existence(order, Q, *, damping="exact", digits=15, budget=None) -> Existence:
+    """The depth ranges ``0 < a < m < b <= 1`` where the ``order``-th interval of instability
+    exists with friction ``Q`` in the given damping model, proven on the whole depth axis.
+
+    Every range printed and every gap between ranges comes with a proof: the axis is covered by
+    closed depth ranges, on each of which the indicator is bounded in ball arithmetic with the
+    parameters as balls holding all its depths (branch and bound: a range that cannot be decided
+    is bisected).  On a range marked *exists* one period ``T`` is unstable at every depth; on one
+    marked *none* ``D < 0`` on the whole window at every depth, so no island, however narrow, is
+    missed.  Each end of a range is a threshold whose enclosure is below ``digits`` digits;
+    ``m -> 1`` is covered to ``1 - 2^-K`` within that resolution.  What cannot be decided within
+    ``budget`` range decisions (or at the resolution, e.g. next to critical damping, where the
+    equations change) is reported in ``.undecided``, never guessed.
+
+    Returns an :class:`Existence`: ``.intervals`` (pairs of mpmath numbers, ``b = 1`` when the
+    range is open towards ``m -> 1``), ``.thresholds`` (with enclosures), ``.undecided``,
+    ``.as_json()``.
+    """
+    n = as_order(order)
+    QQ = as_quality(Q)
+    if QQ is None:
+        raise InputError("existence needs friction: give a quality factor Q > 0")
+    model = as_damping(damping)
+    d = as_digits(digits)
+    Qx = exact_fraction(QQ)
+    cap = BUDGET_PER_BIT * bits_for_digits(d + 3) if budget is None else int(budget)
+    segs, _count = _segments(n, Qx, model, d, cap)
+    return _assemble(n, Qx, model, d, segs)
+
+
+def _assemble(n, Q, model, digits, segs) -> Existence:
+    """Thresholds from the undecided ranges that separate the two signs within the resolution;
+    every other undecided range is reported as such."""
+    # undecided slivers within the resolution of m = 1 belong to the unproven tail towards 1
+    near_one = 1 - Fraction(1, 10**digits)
+    while len(segs) > 1 and segs[-1][2] == 0 and segs[-1][0] >= near_one:
+        segs = segs[:-1]
+    thresholds, undecided = [], []
+    for j, (lo, hi, sign) in enumerate(segs):
+        if sign != 0:
+            continue
+        left = segs[j - 1][2] if j > 0 else None
+        right = segs[j + 1][2] if j + 1 < len(segs) else None
+        value = _mpf((lo + hi) / 2)
+        if left is not None and right is not None and left * right == -1:
+            th = Threshold(value, (lo, hi), right == 1, digits)
+            if th.text() != "0" and _enough(value, hi - lo, digits):
+                thresholds.append(th)
+                continue
+        undecided.append((lo, hi))
+    pieces = []
+    for lo, hi, sign in segs:
+        pieces.append((lo, hi, sign))
+    return Existence(
+        n,
+        Q,
+        model,
+        digits,
+        tuple(thresholds),
+        bool(segs and segs[-1][2] == 1),
+        undecided=tuple(undecided),
+        segments=tuple(pieces),
+    )
+
+
+def absence_reason(order, m, Q, *, damping="exact") -> str:
+    """Why the ``order``-th interval does not exist at depth ``m`` with friction ``Q``, from the
+    proven existence ranges: below the threshold, in a gap around a closing, above the last
+    range, or in a range that could not be decided (see :meth:`Existence.where`)."""
+    ex = existence(order, Q, damping=damping)
+    return ex.where(exact_fraction(m))

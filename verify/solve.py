@@ -51,6 +51,7 @@ import math
 from collections.abc import Callable
 from dataclasses import dataclass, field, fields
 from fractions import Fraction
+from functools import partial
 
 import mpmath
 import numpy as np
@@ -60,6 +61,7 @@ from analytic.system import PAPER, System
 
 from .certify import (
     CertificationError,
+    Jet,
     Root,
     ball,
     bits_for_digits,
@@ -100,6 +102,10 @@ __all__ = [
     "hump_normal",
     "hump_trace",
     "float_edges",
+    "hump_box",
+    "depth_ball",
+    "trace_phase",
+    "prove_no_window",
 ]
 
 _ARB = backend("arb")
@@ -333,15 +339,16 @@ def boundary(
 class _AtPrecision:
     """Numbers recomputed for every working precision (``flint.ctx.prec``), cached."""
 
-    def __init__(self, make):
+    def __init__(self, make, min_prec: int = 0):
         self._make = make
         self._cache: dict[int, object] = {}
+        self._min = min_prec  # e.g. what a depth range needs to keep 1 - m
 
     def __call__(self):
         prec = ctx.prec
         val = self._cache.get(prec)
         if val is None:
-            with ctx.workprec(prec + 12):
+            with ctx.workprec(max(prec, self._min) + 12):
                 val = self._make()
             self._cache[prec] = val
         return val
@@ -632,6 +639,8 @@ class _Hump:
     #: the variable is measured relative to the smallest of them
     shifts: tuple = (0.0,)
     variable: str = "theta"  # or "y" = theta + pi/2 (near m = 1)
+    #: for a range of depths (:func:`hump_box`): the hump at its middle depth
+    point: object = None
 
 
 def _prove_shape(h: _Hump, lo_root, hi_root) -> bool:
@@ -684,14 +693,16 @@ def _prove_shape(h: _Hump, lo_root, hi_root) -> bool:
     return False
 
 
-def _prove_negative(h: _Hump, bits: int = 64) -> bool:
+def _prove_negative(
+    h: _Hump, bits: int = 64, max_bits: int | None = None, budget: int = 400
+) -> bool:
     """``D < 0`` on all of ``[a, b]`` (no interval).
 
     First by bisection at low precision; near a threshold, where the maximum of ``D`` is a tiny
     negative number, by Taylor's bound around the maximiser ``t``: on a ball ``X`` where
     ``D'' < 0``, ``D <= D(t) + D'(t)^2 / (2 |sup D''(X)|)``, and by bisection outside ``X``.
     """
-    if prove_sign(h.D, h.dD, h.a, h.b, -1, prec=64, budget=400):
+    if prove_sign(h.D, h.dD, h.a, h.b, -1, prec=64, budget=budget):
         return True
     start = h.top if math.isfinite(h.top) else 0.5 * (h.a + h.b)
     try:
@@ -702,6 +713,7 @@ def _prove_negative(h: _Hump, bits: int = 64) -> bool:
             bits=max(bits, 64),
             floor=h.floor or 1e-300,
             bracket=(h.a, h.b),
+            max_bits=max_bits or 4 * max(bits, 64) + 336,
         ).ball.mid()
     except CertificationError:
         return False
@@ -720,8 +732,12 @@ def _prove_negative(h: _Hump, bits: int = 64) -> bool:
                     if d2 < 0:
                         bound = Dt + D1t * D1t / (2 * abs(d2.upper()))
                         if bound < 0:
-                            if (lo <= h.a or prove_sign(h.D, h.dD, h.a, lo, -1, prec=64)) and (
-                                hi >= h.b or prove_sign(h.D, h.dD, hi, h.b, -1, prec=64)
+                            if (
+                                lo <= h.a
+                                or prove_sign(h.D, h.dD, h.a, lo, -1, prec=64, budget=10 * budget)
+                            ) and (
+                                hi >= h.b
+                                or prove_sign(h.D, h.dD, hi, h.b, -1, prec=64, budget=10 * budget)
                             ):
                                 return True
                             break
@@ -789,22 +805,79 @@ def _solve_hump(req: Request, h: _Hump, bits: int):
     return True, lo_root, hi_root, _prove_shape(h, lo_root, hi_root)
 
 
-def hump_normal(n: int, m: Fraction, Q: Fraction, damping: str, bits: int, system=PAPER):
+def depth_ball(m_box: tuple[Fraction, Fraction]) -> arb:
+    """The ball (rounded outward; at the working precision, or more where ``1 - m`` needs it)
+    that holds every depth of the closed range ``m_box = (lo, hi)`` of exact rationals."""
+    lo, hi = m_box
+    with ctx.workprec(max(ctx.prec, box_prec(m_box))):
+        a = arb(lo.numerator) / lo.denominator
+        b = arb(hi.numerator) / hi.denominator
+        return a.union(b)
+
+
+def box_prec(m_box) -> int:
+    """Bits that keep ``1 - m`` and the width of a depth range (dyadic ends)."""
+    lo, hi = m_box
+    return 32 + max(lo.denominator.bit_length(), hi.denominator.bit_length(), 32)
+
+
+def _params_at(m, Q, damping, m_box, make):
+    """Parameters as balls: at the exact depth ``m``, or for every depth of ``m_box``."""
+    if m_box is None:
+        return make(m, Q, damping, _ARB) if damping is not None else make(m, Q, _ARB)
+    M = depth_ball(m_box)
+    Qb = arb(Q.numerator) / Q.denominator
+    return make(M, Qb, damping, _ARB) if damping is not None else make(M, Qb, _ARB)
+
+
+def hump_normal(
+    n: int,
+    m: Fraction,
+    Q: Fraction,
+    damping: str,
+    bits: int,
+    m_box=None,
+    float_stage=None,
+    jet: bool = False,
+    system=PAPER,
+):
     """The friction problem in the normal form, for order ``n`` at exact ``m``, ``Q``: the
-    :class:`_Hump` (arb functions, proven bracket, float stage) and the parameters at precision."""
+    :class:`_Hump` (arb functions, proven bracket, float stage) and the parameters at precision.
+
+    With ``m_box = (lo, hi)`` (exact rationals around ``m``) the arb functions and the bracket hold
+    for every depth of that range at once (the parameters are balls that contain them all); the
+    float stage is that of ``m`` (``float_stage``: computed already, a dict as
+    :func:`verify.grid.damped_normal` returns for one depth, plus ``"bm"``)."""
     from analytic.stitching import Parity
 
     from .grid import damped_normal
 
     parity = Parity.of(n)
-    # float parameters from the exact rationals (right also next to critical damping)
-    pm = normal_params(m, Q, damping, _MATH, system)
-    Pn = NormalParams(*(np.array([float(getattr(pm, f.name))]) for f in fields(NormalParams)))
-    fl = damped_normal(np.array([[n]]), Pn)
-    fl = {k: float(np.asarray(v).ravel()[0]) for k, v in fl.items()}
+    if float_stage is None:
+        # float parameters from the exact rationals (right also next to critical damping)
+        pm = normal_params(m, Q, damping, _MATH, system)
+        Pn = NormalParams(*(np.array([float(getattr(pm, f.name))]) for f in fields(NormalParams)))
+        fl = damped_normal(np.array([[n]]), Pn)
+        fl = {k: float(np.asarray(v).ravel()[0]) for k, v in fl.items()}
+        bm = pm.bm
+    else:
+        fl, bm = float_stage, float_stage["bm"]
     form = indicator(parity)
     D0, D1, D2 = (form.compiled("arb", k) for k in (0, 1, 2))
-    P = _AtPrecision(lambda: normal_params(m, Q, damping, _ARB, system))
+    if jet and not system.is_paper:  # pragma: no cover - existence is the paper's for now
+        raise InputError(f"proven existence is derived for the paper's system, not {system.label}")
+    if jet:  # parameters as jets in m over the range (for the mean-value form, hump_box)
+
+        def jets():
+            Qb = arb(Q.numerator) / Q.denominator
+            return normal_params(Jet(depth_ball(m_box), 1), Jet(Qb), damping, _ARB)
+
+        P = _AtPrecision(jets, box_prec(m_box))
+    else:
+        P = _AtPrecision(
+            lambda: _params_at(m, Q, damping, m_box, partial(normal_params, system=system)),
+            box_prec(m_box) if m_box else 0,
+        )
     C = _AtPrecision(lambda: arb.pi() * n / 2)
 
     def args():
@@ -817,15 +890,16 @@ def hump_normal(n: int, m: Fraction, Q: Fraction, damping: str, bits: int, syste
     span = max(fl["b"] - fl["a"], 1e-300)
     a = max(fl["a"] - max(span * 1e-6, abs(fl["a"]) * 1e-12, 1e-300), -math.pi / 2)
     b = min(fl["b"] + max(span * 1e-6, abs(fl["b"]) * 1e-12, 1e-300), math.pi / 2)
-    with ctx.workprec(128):
-        p = P()
-        outside = all(E0(ball(a), C(), sgn, e, p.r, p.beta) < 0 for e in (1, -1)) and all(
-            E0(ball(b), C(), sgn, e, p.r, p.beta) > 0 for e in (1, -1)
-        )
-    if not outside:  # pragma: no cover - the float bracket is always this good
-        a, b = -math.pi / 2, math.pi / 2
-    if pm.bm < NEAR_ONE:
-        return _hump_near_one(n, P, fl, b, C, E0), P
+    if not jet:
+        with ctx.workprec(128):
+            p = P()
+            outside = all(E0(ball(a), C(), sgn, e, p.r, p.beta) < 0 for e in (1, -1)) and all(
+                E0(ball(b), C(), sgn, e, p.r, p.beta) > 0 for e in (1, -1)
+            )
+        if not outside:  # pragma: no cover - the float bracket is always this good
+            a, b = -math.pi / 2, math.pi / 2
+    if bm < NEAR_ONE:
+        return _hump_near_one(n, P, fl, b, C, E0, check=not jet), P
     h = _Hump(
         D=lambda t: D0(t, *args()),
         dD=lambda t: D1(t, *args()),
@@ -842,7 +916,60 @@ def hump_normal(n: int, m: Fraction, Q: Fraction, damping: str, bits: int, syste
     return h, P
 
 
-def _hump_near_one(n, P, fl, b, C, E0) -> _Hump:
+def hump_box(n: int, lo: Fraction, hi: Fraction, Q: Fraction, damping: str, float_stage=None):
+    """The normal-form friction problem for every depth of ``[lo, hi]`` at once: ``D``, ``D'``,
+    ``D''`` (in ``theta``, or ``y`` near ``m = 1``) enclosed by the mean-value form in ``m``,
+    ``f(M) in f(mid) + f_m(M) (M - mid)``, with ``f_m`` from jets (:class:`verify.certify.Jet`)
+    over the ball ``M`` of the range -- far tighter than evaluating with ``M`` itself, where the
+    parameters' dependence on ``m`` is counted many times.  The bracket is the whole window
+    (rounded outward).  The float stage is that of the middle."""
+    mid = (lo + hi) / 2
+    if float_stage is None:
+        from .grid import damped_normal
+
+        pm = normal_params(mid, Q, damping, _MATH)
+        Pn = NormalParams(*(np.array([float(getattr(pm, f.name))]) for f in fields(NormalParams)))
+        fl = damped_normal(np.array([[n]]), Pn)
+        float_stage = {k: float(np.asarray(v).ravel()[0]) for k, v in fl.items()}
+        float_stage["bm"] = float(pm.bm)
+    hm, _ = hump_normal(n, mid, Q, damping, 64, float_stage=float_stage)
+    hj, _ = hump_normal(n, mid, Q, damping, 64, m_box=(lo, hi), float_stage=float_stage, jet=True)
+
+    def dm():
+        return depth_ball((lo, hi)) - (arb(mid.numerator) / mid.denominator)
+
+    dM = _AtPrecision(dm, box_prec((lo, hi)))
+
+    def mv(f0, f1):
+        def g(t):
+            v = f1(t)
+            slope = v.d if isinstance(v, Jet) else 0
+            return f0(t) + slope * dM()
+
+        return g
+
+    if hm.variable == "y":
+        a, b = 0.0, math.nextafter(math.pi, 4.0)
+    else:
+        a, b = math.nextafter(-math.pi / 2, -2.0), math.nextafter(math.pi / 2, 2.0)
+    return _Hump(
+        D=mv(hm.D, hj.D),
+        dD=mv(hm.dD, hj.dD),
+        d2D=mv(hm.d2D, hj.d2D),
+        a=a,
+        b=b,
+        top=hm.top,
+        dtop=hm.dtop,
+        lo=hm.lo,
+        hi=hm.hi,
+        floor=hm.floor,
+        shifts=hm.shifts,
+        variable=hm.variable,
+        point=hm,
+    )
+
+
+def _hump_near_one(n, P, fl, b, C, E0, check: bool = True) -> _Hump:
     """Friction near ``m = 1`` (``1 - beta < NEAR_ONE``): the hump in ``y = theta + pi/2``, the
     distance from the window's left end, where the lower edge goes as ``m -> 1``.  ``D`` is the
     form whose terms are of the size of ``D``: :func:`verify.derived.order1_forms` in ``x = y``
@@ -872,12 +999,13 @@ def _hump_near_one(n, P, fl, b, C, E0) -> _Hump:
 
     Y0, Y1, Y2 = (form.compiled("arb", k) for k in (0, 1, 2))
     by = b + half
-    with ctx.workprec(128):
-        p = P()
-        thb = ball(by) - arb.pi() / 2
-        sgn = _sgn(n)
-        if not all(E0(thb, C(), sgn, e, p.r, p.beta) > 0 for e in (1, -1)):  # pragma: no cover
-            by = math.pi
+    if check:
+        with ctx.workprec(128):
+            p = P()
+            thb = ball(by) - arb.pi() / 2
+            sgn = _sgn(n)
+            if not all(E0(thb, C(), sgn, e, p.r, p.beta) > 0 for e in (1, -1)):  # pragma: no cover
+                by = math.pi
 
     def shifted(v):
         return v + half if math.isfinite(v) and v + half > 0 else math.nan
@@ -900,7 +1028,7 @@ def _hump_near_one(n, P, fl, b, C, E0) -> _Hump:
 
 def _normal_damped(req: Request) -> Boundary:
     bits = bits_for_digits(req.digits + 2)
-    h, P = hump_normal(req.order, req.m, req.Q, req.damping, bits, req.system)
+    h, P = hump_normal(req.order, req.m, req.Q, req.damping, bits, system=req.system)
     regime = "normal form with friction"
     exists, lo_root, hi_root, shape = _solve_hump(req, h, bits)
     notes = (
@@ -931,14 +1059,23 @@ def _normal_damped(req: Request) -> Boundary:
     )
 
 
-def hump_trace(n: int, m: Fraction, Q: Fraction, regimes: tuple[str, str], system=PAPER):
+def hump_trace(
+    n: int,
+    m: Fraction,
+    Q: Fraction,
+    regimes: tuple[str, str],
+    m_box=None,
+    window=None,
+    system=PAPER,
+):
     """The friction problem in the trace form (exact model, a half critically or over-damped):
     the :class:`_Hump` in ``zeta`` on the proven window of order ``n``, and the parameters; or
-    ``(None, reason)`` if the order has no window."""
+    ``(None, reason)`` if the order has no window.  ``m_box`` as for :func:`hump_normal` (the
+    regimes must be those of every depth in it)."""
     from .grid import damped_trace, trace_window_ends
 
     Tf = trace_params(m, Q, _MATH, system)
-    window = trace_window_ends(n, regimes, Tf)
+    window = window or trace_window_ends(n, regimes, Tf)
     if window is None:
         why = (
             "both halves are critically or over-damped: only order 1 can exist"
@@ -948,23 +1085,66 @@ def hump_trace(n: int, m: Fraction, Q: Fraction, regimes: tuple[str, str], syste
         return None, why
     form = trace_indicator(*regimes)
     D0, D1, D2 = (form.compiled("arb", k) for k in (0, 1, 2))
-    P = _AtPrecision(lambda: trace_params(m, Q, _ARB, system))
+    P = _AtPrecision(
+        lambda: _params_at(m, Q, None, m_box, partial(trace_params, system=system)),
+        box_prec(m_box) if m_box else 0,
+    )
     sigma = -1 if n % 2 else 1
 
     def args():
         p = P()
         return (sigma, p.kappa, p.nu1, p.nu2)
 
+    funcs = [lambda z, F=F: F(z, *args()) for F in (D0, D1, D2)]
+    if m_box is not None:  # the mean-value form in m (see hump_box), jets from the middle
+        Pm = _AtPrecision(lambda: trace_params(m, Q, _ARB))
+
+        def jets():
+            Qb = arb(Q.numerator) / Q.denominator
+            return trace_params(Jet(depth_ball(m_box), 1), Jet(Qb), _ARB)
+
+        Pj = _AtPrecision(jets, box_prec(m_box))
+        dM = _AtPrecision(
+            lambda: depth_ball(m_box) - arb(m.numerator) / m.denominator, box_prec(m_box)
+        )
+
+        def mv(F):
+            def g(z):
+                pm, pj = Pm(), Pj()
+                v = F(z, sigma, pj.kappa, pj.nu1, pj.nu2)
+                slope = v.d if isinstance(v, Jet) else 0
+                return F(z, sigma, pm.kappa, pm.nu1, pm.nu2) + slope * dM()
+
+            return g
+
+        funcs = [mv(F) for F in (D0, D1, D2)]
+
     za, zb = window
-    za = za * (1 - 1e-9)
-    zb = zb * (1 + 1e-9)
-    if not _prove_window(n, regimes, P, za, zb):  # pragma: no cover - guard
+    if m_box is not None:  # the union of the windows at the two ends of the range
+        for x in m_box:
+            Tx = trace_params(x, Q, _MATH)
+            wx = trace_window_ends(n, regimes, Tx)
+            if wx is None and regimes[1] != "under":
+                continue  # the given window covers it
+            if wx is None:  # the window ends at the tail bound there: reach past it
+                ax = 2 - float(Tx.nu1)
+                if not ax > 0:
+                    return None, "no window at an end of the range"
+                zt = max(2 / ax, 1.0)
+                while (2 + abs(float(Tx.kappa)) * zt * zt) * math.exp(-ax * zt) >= 0.5:
+                    zt *= 1.25
+                wx = (za, zt)
+            za, zb = min(za, wx[0]), max(zb, wx[1])
+    widen = 1e-9 if m_box is None else 1e-3
+    za = za * (1 - widen)
+    zb = zb * (1 + widen)
+    if not _prove_window(n, regimes, P, za, zb, m_box, m, Q):  # pragma: no cover - guard
         raise CertificationError(f"could not prove the window of order {n}: {za}, {zb}")
     fl = damped_trace(n, regimes, Tf, (za, zb))
     h = _Hump(
-        D=lambda z: D0(z, *args()),
-        dD=lambda z: D1(z, *args()),
-        d2D=lambda z: D2(z, *args()),
+        D=funcs[0],
+        dD=funcs[1],
+        d2D=funcs[2],
         a=za,
         b=zb,
         top=fl["top"],
@@ -981,7 +1161,7 @@ def hump_trace(n: int, m: Fraction, Q: Fraction, regimes: tuple[str, str], syste
 def _trace_damped(req: Request, regimes) -> Boundary:
     bits = bits_for_digits(req.digits + 2)
     regime = f"trace form (half 1 {regimes[0]}, half 2 {regimes[1]})"
-    h, P = hump_trace(req.order, req.m, req.Q, regimes, req.system)
+    h, P = hump_trace(req.order, req.m, req.Q, regimes, system=req.system)
     if h is None:
         return _none(req, "certified", regime, (P,))
     exists, lo_root, hi_root, shape = _solve_hump(req, h, bits)
@@ -1003,19 +1183,63 @@ def _trace_damped(req: Request, regimes) -> Boundary:
     )
 
 
-def _prove_window(n, regimes, P, za, zb) -> bool:
-    """The window ends enclose the order's window (and nothing of the same parity beyond it)."""
+def _atan2(y, x):
+    """``atan2`` of balls or of jets (:class:`verify.certify.Jet`)."""
+    if isinstance(y, Jet) or isinstance(x, Jet):
+        y, x = Jet._of(y), Jet._of(x)
+        return Jet(arb.atan2(y.v, x.v), (x.v * y.d - y.v * x.d) / (x.v * x.v + y.v * y.v))
+    return arb.atan2(y, x)
+
+
+def trace_phase(regimes, P, z, m_box=None, m=None, Q=None) -> arb:
+    """The phase ``Phi(zeta)`` of the trace form (half 2 under-damped), as a ball; with
+    ``m_box`` (and its middle ``m``, and ``Q``) for every depth of the range, by the mean-value
+    form in ``m`` (jets) instead of ``P``."""
+    r1 = regimes[0]
+    win = trace_window(r1).compiled("arb", 0), trace_window(r1).compiled("arb", 1)
+    z = ball(z) if not isinstance(z, arb) else z
+
+    def phase(p):
+        C1 = win[0](z, 1, p.kappa, p.nu1, p.nu2)
+        S1 = win[1](z, 1, p.kappa, p.nu1, p.nu2)
+        return p.nu2 * z + _atan2(p.kappa * S1, 2 * p.nu2 * C1)
+
+    if m_box is None:
+        return phase(P())
+    with ctx.workprec(max(ctx.prec, box_prec(m_box))):
+        Qb = arb(Q.numerator) / Q.denominator
+        mid = phase(trace_params(m, Q, _ARB))
+        jet = phase(trace_params(Jet(depth_ball(m_box), 1), Jet(Qb), _ARB))
+        slope = jet.d if isinstance(jet, Jet) else 0
+        return mid + slope * (depth_ball(m_box) - arb(m.numerator) / m.denominator)
+
+
+def prove_no_window(n: int, regimes, P, ztail: float, m_box=None, m=None, Q=None) -> bool:
+    """Order ``n`` has no interval (half 2 under-damped): beyond ``ztail`` ``D < 0`` (the tail
+    bound of :func:`verify.grid.trace_window_ends`), and below it the phase stays under ``n pi -
+    pi/2`` (``Phi`` increases), so the order's window does not begin."""
+    if regimes[1] != "under":
+        return n > 1
+    with ctx.workprec(96):
+        p = P()
+        z2 = ball(ztail)
+        a = 2 - p.nu1
+        tail = (2 + abs(p.kappa) * z2 * z2) * (-a * z2).exp()
+        pi = arb.pi()
+        ph = trace_phase(regimes, P, z2, m_box, m, Q)
+        return bool(tail < 1 and z2 * a > 2 and ph < n * pi - pi / 2)
+
+
+def _prove_window(n, regimes, P, za, zb, m_box=None, m=None, Q=None) -> bool:
+    """The window ends enclose the order's window (and nothing of the same parity beyond it);
+    with ``m_box`` for every depth of that range (the phase by the mean-value form)."""
     r1, r2 = regimes
     with ctx.workprec(96):
         p = P()
         if r2 == "under":
-            win = trace_window(r1).compiled("arb", 0), trace_window(r1).compiled("arb", 1)
 
             def phi(z):
-                z = ball(z)
-                C1 = win[0](z, 1, p.kappa, p.nu1, p.nu2)
-                S1 = win[1](z, 1, p.kappa, p.nu1, p.nu2)
-                return p.nu2 * z + arb.atan2(p.kappa * S1, 2 * p.nu2 * C1)
+                return trace_phase(regimes, P, ball(z), m_box, m, Q)
 
             pi = arb.pi()
             z2 = ball(zb)

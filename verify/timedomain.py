@@ -468,6 +468,7 @@ def simulate(
     pendulum's (``sin phi``) and is offered for ``system="pendulum"`` only.
     """
     from . import boundary
+    from .existence import absence_reason
     from .floquet import floquet_multipliers, floquet_vector, monodromy_matrix
 
     sysv = as_system(system, duty)
@@ -514,7 +515,7 @@ def simulate(
             if interval is None:
                 raise InputError(
                     f"there is no interval of order {n} at m = {m}"
-                    + ("" if Q is None else f", Q = {Q} (below the threshold)")
+                    + ("" if Q is None else f", Q = {Q}: {absence_reason(n, m, Q, damping=model)}")
                 )
             tau = bnd.lower if edge == "lower" else bnd.upper
         else:

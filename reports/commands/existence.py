@@ -3,7 +3,9 @@
     paramres existence --order N --Q Q [--damping exact|paper] [--digits D] [--json]
 
 Prints the ranges ``a < m < b`` (``b = 1``: open towards ``m -> 1``) with proven ends: the threshold
-and the gaps where friction swallows the interval near a closing (see :mod:`verify.existence`).
+and the gaps where friction swallows the interval near a closing.  The whole depth axis is proven
+(see :func:`verify.existence.existence`): inside a range the interval exists at every depth, in a
+gap at none; what could not be decided is printed as ``undecided``.
 """
 
 from __future__ import annotations
@@ -25,7 +27,9 @@ def register(subparsers) -> None:
         description=(
             "With friction an interval of instability exists only above a threshold depth, and "
             "an interval of order N >= 3 also vanishes near every depth where it would close. "
-            "Prints the ranges of m in (0, 1) where it exists, each end proven to D digits."
+            "Prints the ranges of m in (0, 1) where it exists, each end proven to D digits; "
+            "every range and every gap is proven (interval arithmetic over depth ranges), and a "
+            "range that could not be decided is printed as undecided."
         ),
         formatter_class=argparse.RawDescriptionHelpFormatter,
     )
@@ -50,6 +54,7 @@ def run(args) -> int:
                 "intervals": data["intervals"],
                 "digits": data["digits"],
                 "thresholds": data["thresholds"],
+                "undecided": data["undecided"],
             }
         )
     else:
