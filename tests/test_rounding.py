@@ -48,3 +48,11 @@ def test_printed_error_formula():
     x = mpmath.mpf(1) / 3
     assert printed_error("0.3333", x, 0) == abs(Fraction("0.3333") - exact(x))
     assert printed_error(None, x, 0) is None and printed_error("1", x, None) is None
+
+
+def test_repr_shows_every_certified_digit():
+    b = boundary(3, "0.3", digits=50)
+    text = repr(b)
+    assert b.as_json()["lower"] in text and b.as_json()["upper"] in text
+    assert len(b.as_json()["lower"].replace(".", "").lstrip("0")) == 50
+    assert "<pre>" in b._repr_html_()

@@ -200,6 +200,20 @@ class Boundary:
             "notes": list(self.notes),
         }
 
+    def __repr__(self) -> str:
+        """Every certified digit (the dataclass repr showed mpmath's 15-17)."""
+        j = self.as_json()
+        return (
+            f"Boundary(order={self.order}, m={j['m']}, Q={j['Q']}, damping={j['damping']!r}, "
+            f"lower={j['lower']}, upper={j['upper']}, error_bound={j['error_bound']}, "
+            f"method={self.method!r})"
+        )
+
+    def _repr_html_(self) -> str:
+        import html
+
+        return f"<pre>{html.escape(str(self))}</pre>"
+
     def __str__(self) -> str:
         fr = (
             "no friction"
