@@ -143,7 +143,7 @@ def closing_depths(n: int, Q: Fraction | None, damping: str) -> list[float]:
 
         def h(m, a=a, b=b, q2=q2):
             nu1 = math.sqrt(max(q2 - 1 - m, 0.0) / (1 + m))
-            nu2 = math.sqrt((q2 - 1 + m) / (1 - m))
+            nu2 = math.sqrt(max(q2 - 1 + m, 0.0) / (1 - m))
             return a * nu2 - b * nu1
 
         lo, hi = 0.0, min(1.0, q2 - 1) if q2 < 2 else 1.0
