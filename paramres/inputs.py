@@ -122,8 +122,9 @@ def _show(value) -> str:
 
 
 def _mpf_fraction(x) -> Fraction:
-    man, exp = x.man_exp
-    return Fraction(man) * Fraction(2) ** exp
+    """The exact value of a finite mpmath number (``man_exp`` drops the sign: use the word)."""
+    sign, man, exp, _ = x._mpf_
+    return (-1 if sign else 1) * Fraction(man) * Fraction(2) ** exp
 
 
 def as_integer(value, *, name: str, low: int, high: int) -> int:

@@ -26,8 +26,9 @@ PROG = "paramres"
 
 class _Parser(argparse.ArgumentParser):
     def error(self, message: str):  # argparse calls this for malformed command lines
-        self.print_usage(sys.stderr)
-        self.exit(2, f"{PROG}: error: {message}\n")
+        # one line, like every other refusal; the usage is one --help away
+        message = " ".join(message.split())
+        self.exit(2, f"{PROG}: error: {message} (see '{self.prog} --help')\n")
 
 
 def build_parser() -> argparse.ArgumentParser:

@@ -289,7 +289,7 @@ def test_cli_table_tol(capsys):
         "upper",
         "delta_lower",
         "delta_upper",
-        "radius",
+        "error_bound",  # was "radius", the internal ball's, smaller than the printed digits' error
         "method",
     ]
     assert len(rows) == 7

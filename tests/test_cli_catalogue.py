@@ -17,7 +17,10 @@ def _run(*args):
 
 def test_catalogue_json(capsys):
     assert main(["catalogue", "--json"]) == 0
-    rows = json.loads(capsys.readouterr().out)
+    # one object, like every command's --json (it used to be a bare list)
+    doc = json.loads(capsys.readouterr().out)
+    rows = doc["results"]
+    assert doc["checked"] == len(rows) == doc["agree"] + doc["differ"]
     assert {"equation", "status", "printed", "derived", "how"} <= set(rows[0])
     assert any(r["status"] == "differs" for r in rows)
 

@@ -112,3 +112,26 @@ def test_floats_mean_their_shortest_decimal():
 
     assert as_depth(0.3) == Fraction(3, 10)  # as --m 0.3 on the command line
     assert as_quality(7.1) == Fraction(71, 10)
+
+
+def test_existence_with_both_halves_overdamped_at_small_depth(capsys):
+    # `existence --order 3 --Q 0.4` (exact model, 4Q^2 < 1: half 2 is over-damped below
+    # m = 1 - 4Q^2) used to end in "math domain error"; the reference is the certified boundary
+    # on either side of the first end it reports
+    from verify.existence import existence
+    from verify.solve import boundary
+
+    code, out, err = run(capsys, ["existence", "--order", "3", "--Q", "0.4"])
+    assert code == 0 and err == "" and "exists for" in out
+    ex = existence(3, "0.4")
+    (a, b), *_ = ex.intervals
+    # the proven range starts at a; an undecided sliver may separate it from the proven gap below
+    below = min([lo for lo, hi in ex.undecided if hi == a] or [a])
+    assert not boundary(3, below * (1 - mpmath_eps()), Q="0.4", digits=15).exists
+    assert boundary(3, a * (1 + mpmath_eps()), Q="0.4", digits=15).exists
+
+
+def mpmath_eps():
+    import mpmath
+
+    return mpmath.mpf("1e-6")

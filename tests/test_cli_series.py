@@ -79,7 +79,11 @@ def test_series_with_friction(capsys):
 def test_crossings_json(capsys):
     code, out, _ = run(capsys, "crossings", "--max-order", "6", "--json")
     assert code == 0
-    d = json.loads(out)
+    doc = json.loads(out)  # one object, like every command's --json (it used to be a bare list)
+    assert doc["max_order"] == 6
+    d = doc["closings"]
+    # correctly rounded: the bound is half a unit of the last printed digit
+    assert d[0]["T_error_bound"] == "5.0e-" + str(len(d[0]["T"].split(".")[1]) + 1)
     assert [(x["order"], x["ratio"], x["m"]) for x in d] == [
         (3, "2:1", "3/5"),
         (4, "3:1", "4/5"),

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import json
+import math
 import subprocess
 import sys
 from pathlib import Path
@@ -206,3 +207,44 @@ def test_figures_render(tmp_path):
     with pytest.raises(InputError):
         paper_figure(2)  # Fig. 2 is a diagram of intervals, not a time-domain scene
     assert sorted(p.name for p in tmp_path.iterdir()) == ["fig7.svg"]
+
+
+def test_nonlinear_run_detects_going_over_the_top(capsys):
+    # at m = 0.3, T = 0.5 (inside the first interval, far from its edges) the growth carries the
+    # pendulum past phi = pi; the run used to report a "peak amplitude" of hundreds of radians as
+    # if it were a swing
+    from reports.cli import main
+    from verify.timedomain import simulate
+
+    sim = simulate(1, "0.3", T="0.5", nonlinear=True, periods=60)
+    assert sim.rotates is True and sim.peak_amplitude > math.pi
+    assert "over the top" in str(sim) and sim.as_json()["rotates"] is True
+    small = simulate(1, "0.3", T="0.5", nonlinear=True, periods=2)
+    assert small.rotates is False and small.peak_amplitude < math.pi
+    assert simulate(1, "0.3", edge="lower").rotates is None  # linear model: no such notion
+    assert (
+        main(
+            [
+                "simulate",
+                "--order",
+                "1",
+                "--m",
+                "0.3",
+                "--T",
+                "0.5",
+                "--nonlinear",
+                "--periods",
+                "60",
+            ]
+        )
+        == 0
+    )
+    assert "went over the top" in capsys.readouterr().out
+
+
+def test_str_of_a_simulation_is_short_and_readable():
+    from verify.timedomain import simulate
+
+    text = str(simulate(1, "0.3", edge="lower"))
+    assert text.startswith("Simulation: order 1, m = 3/10") and len(text) < 400
+    assert "closure error after 2 T" in text

@@ -269,7 +269,7 @@ def closing_depths(n: int, Q: Fraction | None, damping: str) -> list[float]:
 
         def h(m, a=a, b=b, q2=q2):
             nu1 = math.sqrt(max(q2 - 1 - m, 0.0) / (1 + m))
-            nu2 = math.sqrt((q2 - 1 + m) / (1 - m))
+            nu2 = math.sqrt(max(q2 - 1 + m, 0.0) / (1 - m))
             return a * nu2 - b * nu1
 
         # both damped frequencies are real only for 1 - 4Q^2 < m < 4Q^2 - 1 (none if Q <= 1/2:

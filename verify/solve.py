@@ -184,8 +184,24 @@ class Boundary:
         rad = None if self.radii is None or k is None else self.radii[k]
         return proven_text(x, rad, self.digits)
 
+    def error_bound(self) -> str | None:
+        """A bound of ``|printed - exact|`` over the four printed numbers (rounding of the print
+        included; see :mod:`verify.rounding`), or ``None`` if not certified."""
+        from .rounding import bound_text, printed_error
+
+        if not (self.certified and self.exists and self.radius is not None):
+            return None
+        values = (self.lower, self.upper, self.delta_lower, self.delta_upper)
+        bounds = [
+            printed_error(self._fmt(x, k), x, self.radius if self.radii is None else self.radii[k])
+            for k, x in enumerate(values)
+        ]
+        return bound_text(max(b for b in bounds if b is not None))
+
     def as_json(self) -> dict:
-        """A JSON-ready dict; numbers as decimal strings with ``digits`` significant digits."""
+        """A JSON-ready dict; numbers as decimal strings with ``digits`` significant digits;
+        ``error_bound`` bounds ``|printed - exact|`` for each of them (rounding included),
+        ``radius`` is the internal enclosure's (smaller: before rounding)."""
         fmt = lambda x, k: None if x is None else self._fmt(x, k)  # noqa: E731
         return {
             "order": self.order,
@@ -202,9 +218,24 @@ class Boundary:
             "delta_lower": fmt(self.delta_lower, 2),
             "delta_upper": fmt(self.delta_upper, 3),
             "radius": None if self.radius is None else mpmath.nstr(self.radius, 3),
+            "error_bound": self.error_bound(),
             "certified": self.certified,
             "notes": list(self.notes),
         }
+
+    def __repr__(self) -> str:
+        """Every certified digit (the dataclass repr showed mpmath's 15-17)."""
+        j = self.as_json()
+        return (
+            f"Boundary(order={self.order}, m={j['m']}, Q={j['Q']}, damping={j['damping']!r}, "
+            f"lower={j['lower']}, upper={j['upper']}, error_bound={j['error_bound']}, "
+            f"method={self.method!r})"
+        )
+
+    def _repr_html_(self) -> str:
+        import html
+
+        return f"<pre>{html.escape(str(self))}</pre>"
 
     def __str__(self) -> str:
         fr = (
@@ -226,9 +257,10 @@ class Boundary:
                 f"  upper T/T0 = {self._fmt(self.upper, 1)}   "
                 f"({off} = {self._fmt(self.delta_upper, 3)})"
             )
+        bound = self.error_bound()
         proof = (
-            f"certified, error < {mpmath.nstr(self.radius, 2)}"
-            if self.certified and self.radius is not None
+            f"certified: |printed - exact| < {bound}"
+            if bound is not None
             else ("certified" if self.certified else "not certified")
         )
         tail = f"  [{self.method}; {self.regime}; {proof}]"

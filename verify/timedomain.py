@@ -301,6 +301,43 @@ class Simulation:
         return max(self.envelope) if self.envelope else float("nan")
 
     @property
+    def rotates(self) -> bool | None:
+        """Nonlinear runs: whether the pendulum went over the top (``|phi|`` passed ``pi``), after
+        which it rotates instead of swinging and the growth is no longer limited by the
+        amplitude-dependent period; ``None`` for the linear model."""
+        if not self.nonlinear:
+            return None
+        return bool(self.envelope) and max(self.envelope) > math.pi
+
+    def __str__(self) -> str:
+        def show(x, digits):
+            if x is None:
+                return "-"
+            with mpmath.workdps(max(digits, 15)):
+                return mpmath.nstr(mpmath.mpmathify(x), digits)
+
+        fr = "no friction" if self.Q is None else f"Q = {self.Q} ({self.damping} model)"
+        where = f"on the {self.edge} edge" if self.edge else "at a given period"
+        model = "nonlinear pendulum" if self.nonlinear else f"linear model, {self.digits} digits"
+        lines = [
+            f"Simulation: order {self.order}, m = {self.m}, {fr}, {self.periods} periods ({model})",
+            f"  T/T0 = {show(self.tau, min(self.digits, 20))} ({where})",
+        ]
+        if self.closure_error is not None:
+            lines.append(
+                f"  closure error after {self.closure_periods} T: {show(self.closure_error, 3)}"
+            )
+        lines.append(
+            f"  growth per period: measured {show(self.growth_per_period, 12)}, Floquet "
+            f"{show(self.floquet_growth, 12)}"
+        )
+        if self.nonlinear:
+            lines.append(f"  peak |phi| = {self.peak_amplitude:.6g} rad")
+            if self.rotates:
+                lines.append("  the pendulum went over the top (|phi| > pi): it rotates")
+        return "\n".join(lines)
+
+    @property
     def inside(self) -> bool | None:
         """Whether ``T`` lies strictly inside the interval of the order (``None``: none exists)."""
         if self.interval is None:
@@ -354,6 +391,7 @@ class Simulation:
         if self.nonlinear:
             out["rtol"], out["atol"] = self.rtol, self.atol
             out["peak_amplitude"] = self.peak_amplitude
+            out["rotates"] = self.rotates
             out["saturation_estimate"] = self.saturation_estimate
             out["envelope"] = list(self.envelope)
         return out

@@ -96,7 +96,6 @@ def plot_bytes(result, path) -> bytes:
 
 def run(args) -> int:
     from reports.output import check_writable
-    from verify.bench import run as bench_run
 
     # refuse a bad file name before the work
     if args.plot:
@@ -105,6 +104,8 @@ def run(args) -> int:
         check_plot_path(args.plot)
     if args.output:
         check_writable(args.output, "--output")
+
+    from verify.bench import run as bench_run
 
     def bar(items):
         return progress(items, total=len(items), label="bench")

@@ -36,7 +36,15 @@ def run(args) -> int:
 
     rows = [r for r in catalogue() if args.only is None or r.status == args.only]
     if args.json:
-        dump_json([r.as_json() for r in rows])
+        dump_json(
+            {
+                "only": args.only,
+                "checked": len(rows),
+                "agree": sum(r.status == "agrees" for r in rows),
+                "differ": sum(r.status == "differs" for r in rows),
+                "results": [r.as_json() for r in rows],
+            }
+        )
         return 0
     n_diff = sum(r.status == "differs" for r in rows)
     print(f"{len(rows)} results checked: {len(rows) - n_diff} agree, {n_diff} differ\n")

@@ -46,13 +46,32 @@ def run(args) -> int:
     if not result.proven:  # pragma: no cover - a failed step would be a bug in the engine
         raise RuntimeError("a step of the closing theorem did not check out")
     if args.json:
-        doc = result.as_json()
-        if not result.system.is_paper:
-            doc = {**result.system.as_json(), "closings": doc}
-        dump_json(doc)
+        dump_json(json_document(result))
     else:
         print(render_text(result))
     return 0
+
+
+def json_document(result) -> dict:
+    """The ``--json`` document: one object, exact depths as fractions, each period ``T`` (correctly
+    rounded) with ``T_error_bound``, half a unit of its last digit."""
+    from decimal import Decimal
+    from fractions import Fraction
+
+    from verify.rounding import bound_text
+
+    closings = []
+    for item in result.as_json():
+        exponent = Decimal(item["T"]).as_tuple().exponent
+        assert isinstance(exponent, int)
+        half_unit = Fraction(1, 2) * Fraction(10) ** exponent
+        closings.append({**item, "T_error_bound": bound_text(half_unit)})
+    return {
+        **result.system.as_json(),
+        "max_order": result.max_order,
+        "statement": result.statement,
+        "closings": closings,
+    }
 
 
 def render_text(result) -> str:

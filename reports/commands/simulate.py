@@ -35,7 +35,8 @@ def register(subparsers) -> None:
             "the growth per period measured on the trajectory is compared with the Floquet "
             "multiplier. The linear model is propagated exactly (closed-form segments) at "
             "--digits digits; --nonlinear integrates phi'' + 2 gamma phi' + omega^2 sin(phi) = 0 "
-            "between the jumps and shows how the amplitude-dependent period limits the growth."
+            "between the jumps: the amplitude-dependent period limits the growth, unless the "
+            "pendulum goes over the top, which the run detects and reports (it then rotates)."
         ),
         formatter_class=argparse.RawDescriptionHelpFormatter,
     )
@@ -157,7 +158,12 @@ def render_text(sim, plot=None) -> str:
     lines.append(f"  relative difference:         {_fmt(sim.growth_agreement, 3)}")
     if sim.nonlinear:
         lines.append(f"  peak amplitude over {sim.periods} periods: {sim.peak_amplitude:.6g} rad")
-        if sim.saturation_estimate is not None:
+        if sim.rotates:
+            lines.append(
+                "  the pendulum went over the top (|phi| passed pi): it rotates instead of "
+                "swinging, and the peak angle counts whole turns"
+            )
+        if sim.saturation_estimate is not None and not sim.rotates:
             lines.append(
                 f"  amplitude at which the lengthened free period carries the lower edge past T "
                 f"(estimate): {sim.saturation_estimate:.4g} rad"

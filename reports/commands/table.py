@@ -119,7 +119,7 @@ def _certified(task):
     order, m, Q, damping, digits, system = task
     b = boundary(order, m, Q=Q, damping=damping, digits=digits, system=system)
     j = b.as_json()
-    return (order, m, j["lower"], j["upper"], j["delta_lower"], j["delta_upper"], j["radius"])
+    return (order, m, j["lower"], j["upper"], j["delta_lower"], j["delta_upper"], j["error_bound"])
 
 
 def _tol_rows(orders, ms, Q, damping, tol, label):
@@ -131,14 +131,15 @@ def _tol_rows(orders, ms, Q, damping, tol, label):
     out = []
     for b in boundaries_tol(orders, ms, Q=Q, damping=damping, tol=tol, progress=prog):
         j = b.as_json()
-        cells = [j[k] for k in ("lower", "upper", "delta_lower", "delta_upper", "radius")]
+        cells = [j[k] for k in ("lower", "upper", "delta_lower", "delta_upper", "error_bound")]
         out.append((b.order, b.m, *cells, b.method))
     return out
 
 
 def rows(orders, ms, Q, damping, digits, jobs=1, label="table", tol=None, system=None):
-    """Table rows ``(order, m, lower, upper[, delta_lower, delta_upper, radius[, method]])`` as
-    text (``method`` with a tolerance ``tol``), for ``system`` (default: the paper's pendulum)."""
+    """Table rows ``(order, m, lower, upper[, delta_lower, delta_upper, error_bound[, method]])``
+    as text (``method`` with a tolerance ``tol``), for ``system`` (default: the paper's
+    pendulum)."""
     from analytic.system import PAPER
 
     system = PAPER if system is None else system
@@ -204,7 +205,8 @@ def run(args) -> int:
     data = rows(orders, ms, Q, damping, digits, jobs, tol=tol, system=sysv)
     certified = digits is not None or tol is not None
     header = ["order", "m", "lower", "upper"]
-    header += ["delta_lower", "delta_upper", "radius"] if certified else []
+    # error_bound: |printed - exact| for each number of the row, the rounding of the print included
+    header += ["delta_lower", "delta_upper", "error_bound"] if certified else []
     header += ["method"] if tol is not None else []
     if args.format == "json":
         doc = {

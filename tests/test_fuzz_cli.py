@@ -1,0 +1,329 @@
+"""Fuzzing the command line: hypothesis builds argument lists for every sub-command -- numbers of
+every magnitude, fractions, garbage, unicode, odd paths, option combinations -- and every run must
+end with exit status 0 and valid output (JSON that parses, CSV with its header, the files it
+names), or exit status 2 and exactly one line ``paramres: error: ...`` on stderr.  Never a
+traceback, never a hang: each call runs in-process under a time limit (SIGALRM).
+
+The options that set how much work a valid call does (digits, periods, orders, terms, table
+size) get their cheap valid values and every kind of invalid one, so that the examples stay
+fast; ``bench`` and ``report`` (tens of seconds per valid run, tested elsewhere) always get an
+output path that must be refused before any work.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import csv
+import io
+import json
+import os
+import signal
+import sys
+from pathlib import Path
+
+import pytest
+from hypothesis import HealthCheck, Phase, given, settings
+from hypothesis import strategies as st
+
+from reports.cli import build_parser, main
+
+pytestmark = pytest.mark.skipif(
+    not hasattr(signal, "setitimer"), reason="the time limit per call needs SIGALRM"
+)
+
+#: seconds one call may take before it counts as a hang (generous: the machine may be loaded)
+CALL_LIMIT = 30.0
+EXAMPLES = int(os.environ.get("PARAMRES_FUZZ_EXAMPLES", "500"))
+
+
+class Hang(Exception):
+    pass
+
+
+def _alarm(signum, frame):
+    raise Hang()
+
+
+# ------------------------------------------------------------------------------------------------
+# values
+
+digits_text = st.text(alphabet="0123456789", min_size=1, max_size=6)
+magnitude = st.builds(
+    lambda mant, exp: f"{mant}e{exp}",
+    st.sampled_from(["1", "3", "0.5", "-2", "9.99", "0"]),
+    st.one_of(st.integers(-20, 20), st.integers(-(10**10), 10**10)),
+)
+fraction = st.builds(lambda p, q: f"{p}/{q}", st.integers(-(10**6), 10**6), st.integers(0, 10**6))
+floats = st.floats(allow_nan=True, allow_infinity=True).map(repr)
+integers = st.integers(-(10**40), 10**40).map(str)
+odd_tokens = st.sampled_from(
+    [
+        "",
+        " ",
+        "-",
+        "--",
+        "nan",
+        "inf",
+        "-inf",
+        "none",
+        "1/0",
+        "0",
+        "-0",
+        "1",
+        "0x10",
+        "1_000",
+        "١٢",
+        "½",
+        "0.3.4",
+        "3/5/7",
+        "1e",
+        "e5",
+        ".",
+        "1" * 5000,
+        "0." + "0" * 1500 + "1",
+        "--json",
+        "-h",
+        "\u202e1",
+        "1\x00",
+        "３",
+        "∞",
+        "1e-1000",
+        "1e-1001",
+        "1e30",
+        "1e31",
+    ]
+)
+garbage = st.text(max_size=12)
+any_value = st.one_of(magnitude, fraction, floats, integers, odd_tokens, garbage, digits_text)
+
+
+def _cheap_valid(dest: str):
+    """Valid values of each option that keep a run short."""
+    return {
+        "order": st.sampled_from(["1", "2", "3", "4", "5", "6", "12", "odd", "even"]),
+        "m": st.one_of(
+            st.sampled_from(["0.3", "3/5", "5/13", "1e-12", "0.999", "1/2", "0.05", "1e-300"]),
+            st.fractions(min_value=0, max_value=1, max_denominator=1000).map(str),
+        ),
+        "Q": st.sampled_from(["0.4", "1/2", "3", "7", "100", "1e6", "none", "1e-6", "1e30"]),
+        "damping": st.sampled_from(["exact", "paper", "EXACT", " paper "]),
+        "digits": st.sampled_from(["5", "15", "30", "60"]),
+        "tol": st.sampled_from(["1e-8", "1e-13", "1e-30", "0.1", "1/1000"]),
+        "method": st.sampled_from(["certified", "fixedpoint", "grid", "series", "auto"]),
+        "orders": st.sampled_from(["1-6", "1,3", "2", "1-2"]),
+        "table_m": st.sampled_from(["0.05:0.95:0.05", "0.1:0.3:0.1", "1/3:2/3:1/6", "0.5:0.5:1"]),
+        "format": st.sampled_from(["csv", "json"]),
+        "jobs": st.sampled_from(["1", "2"]),
+        "edge": st.sampled_from(["lower", "upper"]),
+        "T": st.sampled_from(["0.5", "1.3", "2", "1/3", "7"]),
+        "periods": st.sampled_from(["1", "2", "8", "20"]),
+        "amplitude": st.sampled_from(["0.1", "1", "3", "1/100"]),
+        "terms": st.sampled_from(["1", "2", "4", "6"]),
+        "max_order": st.sampled_from(["1", "3", "6", "12"]),
+        "only": st.sampled_from(["agrees", "differs"]),
+        # existence proves every threshold and closing: its cheap cases
+        "existence_Q": st.sampled_from(["0.4", "1/2", "3", "7", "100"]),
+        "small_order": st.sampled_from(["1", "2", "3", "4"]),
+    }.get(dest)
+
+
+def _path(tmp: Path, suffixes):
+    names = st.one_of(
+        st.sampled_from(["out", "a b", "ünï", "x" * 300, ".hidden", "sub/dir/deep", "-", ""]),
+        st.text(alphabet=st.characters(blacklist_categories=("Cs",)), min_size=1, max_size=8),
+    )
+    return st.builds(
+        lambda name, suffix, where: where(tmp, name + suffix),
+        names,
+        st.sampled_from(suffixes),
+        st.sampled_from(
+            [
+                lambda t, n: str(t / n),
+                lambda t, n: "/proc/" + n,
+                lambda t, n: str(t / "afile" / n),
+                lambda t, n: str(t),
+            ]
+        ),
+    )
+
+
+def _bad_path(tmp: Path, suffix: str):
+    return st.sampled_from([f"/proc/x{suffix}", str(tmp / "afile" / f"x{suffix}"), "/proc/sub/x"])
+
+
+_SUBCOMMANDS = None
+
+
+def _subcommands():
+    global _SUBCOMMANDS
+    if _SUBCOMMANDS is None:
+        parser = build_parser()
+        sub = next(a for a in parser._actions if a.__class__.__name__ == "_SubParsersAction")
+        _SUBCOMMANDS = {
+            name: [a for a in sp._actions if a.option_strings and a.dest != "help"]
+            for name, sp in sub.choices.items()
+        }
+    return _SUBCOMMANDS
+
+
+@st.composite
+def argv_for(draw, tmp: Path):
+    commands = _subcommands()
+    name = draw(st.sampled_from(sorted(commands)))
+    argv = [name]
+    for action in commands[name]:
+        required = action.required
+        if not required and not draw(st.booleans()):
+            continue
+        if required and draw(st.integers(0, 30)) == 0:
+            continue  # a required option left out
+        flag = draw(st.sampled_from(action.option_strings))
+        if action.nargs == 0:
+            argv.append(flag)
+            continue
+        dest = action.dest
+        if dest in ("output", "plot", "out", "cache"):
+            suffixes = [".csv", ".json", ".png", ".pdf", ".svg", ".txt", ""]
+            if name in ("bench", "report") and dest in ("output", "plot", "out"):
+                value = draw(_bad_path(tmp, ".png" if dest == "plot" else ".json"))
+            else:
+                value = draw(_path(tmp, suffixes))
+        else:
+            key = {("table", "m"): "table_m", ("existence", "Q"): "existence_Q"}.get((name, dest))
+            key = key or {("existence", "order"): "small_order"}.get((name, dest), dest)
+            valid = _cheap_valid(key)
+            if action.choices:
+                valid = st.sampled_from(list(action.choices))
+            use_valid = valid is not None and draw(st.integers(0, 3)) > 0
+            value = draw(valid if use_valid else any_value)
+        if draw(st.integers(0, 10)) == 0:
+            argv.append(f"{flag}={value}")
+        else:
+            argv += [flag, value]
+    if name in ("bench", "report") and not any(a.startswith(("--out", "--plot")) for a in argv):
+        argv += ["--out" if name == "report" else "--plot", "/proc/x.png"]
+    if draw(st.integers(0, 15)) == 0:
+        argv.insert(draw(st.integers(1, len(argv))), draw(any_value))  # a stray token
+    return argv
+
+
+# ------------------------------------------------------------------------------------------------
+# one call, checked
+
+
+def call(argv: list[str]) -> tuple[int, str, str]:
+    out, err = io.StringIO(), io.StringIO()
+    old = signal.signal(signal.SIGALRM, _alarm)
+    signal.setitimer(signal.ITIMER_REAL, CALL_LIMIT)
+    try:
+        with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
+            try:
+                code = main(argv)
+            except SystemExit as exc:  # argparse: --help, or a malformed command line
+                code = exc.code if isinstance(exc.code, int) else (0 if exc.code is None else 2)
+    except Hang:
+        pytest.fail(f"no answer within {CALL_LIMIT} s: paramres {argv!r}")
+    finally:
+        signal.setitimer(signal.ITIMER_REAL, 0)
+        signal.signal(signal.SIGALRM, old)
+    return code, out.getvalue(), err.getvalue()
+
+
+def check(argv: list[str], code: int, out: str, err: str) -> None:
+    assert "Traceback" not in err, (argv, err)
+    if code == 2:
+        lines = err.splitlines()
+        assert len(lines) == 1 and lines[0].startswith("paramres: error: "), (argv, err)
+        return
+    assert code == 0, (argv, code, out, err)
+    if "-h" in argv or "--help" in argv:
+        return
+    writes = [argv[i + 1] for i, a in enumerate(argv[:-1]) if a in ("--output", "--plot")]
+    writes += [a.split("=", 1)[1] for a in argv if a.startswith(("--output=", "--plot="))]
+    for path in writes:
+        assert Path(path).is_file(), (argv, path)
+    if "--json" in argv:
+        json.loads(out)
+    elif argv[0] == "table" and not any(a.startswith("--output") for a in argv):
+        fmt = "json" if ("--format", "json") in zip(argv, argv[1:], strict=False) else None
+        if fmt == "json" or "--format=json" in argv:
+            json.loads(out)
+        else:
+            rows = list(csv.reader(io.StringIO(out)))
+            assert rows[0][:4] == ["order", "m", "lower", "upper"], (argv, out[:200])
+    elif not writes:
+        assert out.strip(), (argv, err)
+
+
+_TMP = None
+
+
+def _tmp() -> Path:
+    global _TMP
+    if _TMP is None:
+        import tempfile
+
+        _TMP = Path(tempfile.mkdtemp(prefix="paramres-fuzz-"))
+        (_TMP / "afile").write_text("a file, not a directory\n")
+    return _TMP
+
+
+@pytest.fixture(scope="module", autouse=True)
+def _warm():
+    """The catalogue is derived once per process (8-16 s cold, then a lookup): derive it here,
+    outside the time limit of a call."""
+    from analytic.catalogue import catalogue
+
+    catalogue()
+
+
+@settings(
+    max_examples=EXAMPLES,
+    deadline=None,
+    suppress_health_check=[HealthCheck.too_slow, HealthCheck.data_too_large],
+    derandomize=True,
+    phases=[Phase.explicit, Phase.reuse, Phase.generate, Phase.shrink],
+)
+@given(data=st.data())
+def test_every_command_line_gets_an_answer(data):
+    argv = data.draw(argv_for(_tmp()), label="argv")
+    code, out, err = call(argv)
+    check(argv, code, out, err)
+
+
+@pytest.mark.parametrize(
+    "argv",
+    [
+        ["boundary", "--order", "3", "--m", "0.3", "--json"],
+        ["table", "--orders", "1-2", "--m", "0.1:0.3:0.1"],
+        ["boundary", "--order", "1", "--m", "1e999999999"],
+        ["simulate", "--order", "1", "--m", "0.3", "--edge", "lower", "--plot", "/proc/x.png"],
+        ["--version"],
+    ],
+)
+def test_the_checker_itself(argv):
+    # the harness accepts a good run and a refusal, so the fuzz test can fail only on real faults
+    code, out, err = call(argv)
+    check(argv, code, out, err)
+    assert code in (0, 2)
+
+
+def test_the_checker_catches_a_traceback_and_a_hang(monkeypatch):
+    import reports.commands.boundary as boundary_command
+
+    def broken(args):
+        raise ZeroDivisionError("boom")
+
+    monkeypatch.setattr(boundary_command, "run", broken)
+    with pytest.raises(ZeroDivisionError):
+        call(["boundary", "--order", "1", "--m", "0.3"])
+    monkeypatch.setattr(sys.modules[__name__], "CALL_LIMIT", 0.2)
+
+    def slow(args):
+        import time
+
+        time.sleep(5)
+
+    monkeypatch.setattr(boundary_command, "run", slow)
+    with pytest.raises(pytest.fail.Exception):
+        call(["boundary", "--order", "1", "--m", "0.3"])

@@ -1,0 +1,59 @@
+"""Error bounds of the decimals the engine prints.
+
+A certified value comes as a ball: a midpoint ``x`` and a radius ``r`` with ``|x - exact| <= r``.
+What a user reads is a *rounded* decimal ``p`` of ``x``, so the honest bound of what is printed is
+``|p - exact| <= |p - x| + r`` -- the rounding of the print included.  :func:`printed_error`
+computes that bound exactly (rational arithmetic) and :func:`bound_text` writes a bound rounded
+*up* to two significant digits, so the printed bound is never smaller than the true one.
+
+>>> from fractions import Fraction
+>>> import mpmath
+>>> x = mpmath.mpf(1) / 3
+>>> bound_text(printed_error("0.3333", x, mpmath.mpf(2) ** -60))
+'3.4e-5'
+"""
+
+from __future__ import annotations
+
+from fractions import Fraction
+
+import mpmath
+
+__all__ = ["printed_error", "bound_text", "exact"]
+
+
+def exact(x) -> Fraction:
+    """The exact rational value of an mpmath number (or int, Fraction, decimal text)."""
+    if isinstance(x, mpmath.mpf):
+        sign, man, exp, _ = x._mpf_  # (man_exp drops the sign)
+        return (-1 if sign else 1) * Fraction(man) * Fraction(2) ** exp
+    return Fraction(x)
+
+
+def printed_error(text: str | None, x, radius) -> Fraction | None:
+    """A bound of ``|value(text) - exact|`` when ``|x - exact| <= radius``; ``None`` when there is
+    nothing printed or no radius (an uncertified value)."""
+    if text is None or radius is None or x is None:
+        return None
+    return abs(Fraction(text) - exact(x)) + exact(radius)
+
+
+def bound_text(bound: Fraction | None, digits: int = 2) -> str | None:
+    """``bound`` rounded up to ``digits`` significant digits, as ``"3.4e-5"`` (``"0"`` for 0)."""
+    if bound is None:
+        return None
+    if bound == 0:
+        return "0"
+    # the exponent e with 10**e <= bound < 10**(e+1), from the sizes of the integers, then fixed
+    e = len(str(bound.numerator)) - len(str(bound.denominator))
+    while Fraction(10) ** e > bound:
+        e -= 1
+    while Fraction(10) ** (e + 1) <= bound:
+        e += 1
+    scale = Fraction(10) ** (digits - 1 - e)
+    mant = -((-bound * scale.numerator) // scale.denominator)  # ceiling
+    if mant >= 10**digits:  # rounded up to the next power of ten
+        mant //= 10
+        e += 1
+    head = str(mant)
+    return f"{head[0]}.{head[1:]}e{e}" if digits > 1 else f"{head}e{e}"
