@@ -22,6 +22,8 @@ from dataclasses import dataclass, field
 import sympy
 from sympy.printing.latex import LatexPrinter
 
+from .i18n import current, tr
+
 __all__ = [
     "Latex",
     "Config",
@@ -118,7 +120,7 @@ class Config:
         ("xcolor", ""),
         ("microtype", "expansion=false"),
         ("caption", "font=small,labelfont=bf"),
-        ("hyperref", "hidelinks,pdfcreator={paramres},pdfproducer={paramres}"),
+        ("hyperref", "hidelinks,hypertexnames=false,pdfcreator={paramres},pdfproducer={paramres}"),
     )
     preamble: tuple[str, ...] = (
         # \fitmath{...}: display math scaled down to the line only if TeX finds it too wide
@@ -126,6 +128,10 @@ class Config:
         r"\newcommand{\fitmath}[1]{\sbox\prfitbox{$\displaystyle #1$}%",
         r"\ifdim\wd\prfitbox>\dimexpr\linewidth-4em\relax"
         r"\resizebox{\dimexpr\linewidth-4em\relax}{!}{\usebox\prfitbox}%",
+        r"\else\usebox\prfitbox\fi}",
+        # \fitcell{...}: the same for a formula in a table cell, scaled to the column if needed
+        r"\newcommand{\fitcell}[1]{\sbox\prfitbox{$\displaystyle #1$}%",
+        r"\ifdim\wd\prfitbox>\linewidth\resizebox{\linewidth}{!}{\usebox\prfitbox}%",
         r"\else\usebox\prfitbox\fi}",
         r"\numberwithin{equation}{section}",
         r"\setlength{\LTcapwidth}{\textwidth}",
@@ -193,6 +199,8 @@ _UNICODE = {
     "\u2074": r"$^4$",
     "\u00b0": r"$^\circ$",
     "\u00a7": r"\S{}",
+    "\u00ab": r"\guillemotleft{}",
+    "\u00bb": r"\guillemotright{}",
     "\u00b7": r"$\cdot$",
     "\u03b1": r"$\alpha$",
     "\u03b2": r"$\beta$",
@@ -226,17 +234,33 @@ def text(s: str) -> Latex:
     >>> str(text("γ ≥ 0"))
     '$\\\\gamma$ $\\\\geq$ 0'
     """
+    return Latex(_escape(tr(s)))
+
+
+#: a double hyphen that starts a command-line option (``--order``): kept as two hyphens
+_OPTION = re.compile(r"--(?=[A-Za-z])")
+#: a straight quote that opens a quotation (after a space or bracket, or at the start)
+_OPENING = re.compile(r"(?:(?<=^)|(?<=[\s(\[]))'(?=\S)")
+
+
+def _escape(s: str) -> str:
+    """The characters of ``s`` as LaTeX text (see :func:`text`), without translation."""
+    s = _OPENING.sub("\u2018", _OPTION.sub("\x00", s))
     out = []
     for ch in s:
-        if ch in _SPECIAL:
+        if ch == "\x00":
+            out.append("-{}-{}")
+        elif ch in _SPECIAL:
             out.append(_SPECIAL[ch])
         elif ord(ch) < 128:
             out.append(ch)
         elif ch in _UNICODE:
             out.append(_UNICODE[ch])
+        elif "\u0400" <= ch <= "\u04ff" and current() == "ru":  # the Russian report
+            out.append(ch)
         else:
             out.append(f"[U+{ord(ch):04X}]")
-    return Latex("".join(out))
+    return "".join(out)
 
 
 _GREEK = (
@@ -340,16 +364,24 @@ def prose(s: str) -> Latex:
     >>> str(prose("T = a T1 = a sqrt(2/(a^2 + b^2)) T0, 1 <= a"))
     'T = a $T_{1}$ = a $\\\\sqrt{2/(a^{2} + b^{2})}$ $T_{0}$, 1 $\\\\le$ a'
     """
+    s = tr(s)
+    if "$" in s:  # a translation may carry its formulas in LaTeX already
+        return mixed(s)
+    return _prose_only(s)
+
+
+def _prose_only(s: str) -> Latex:
+    """:func:`prose` without translation."""
     s = re.sub(r"(?<=\S)\*(?=\S)", "\u00b7", s.replace("**", "^"))
     out: list[str] = []
     pos = 0
     for mt in _TOKEN.finditer(s):
         if mt.start() < pos:
             continue
-        out.append(text(s[pos : mt.start()]).raw)
+        out.append(_escape(s[pos : mt.start()]))
         piece, pos = _token_math(s, mt)
         out.append("$" + piece.strip() + "$")
-    out.append(text(s[pos:]).raw)
+    out.append(_escape(s[pos:]))
     return Latex("".join(out))
 
 
@@ -362,6 +394,7 @@ def mixed(s: str, config: Config = DEFAULT) -> Latex:
     >>> str(mixed("printed $q^2$ where omega_1 gives $q$"))
     'printed $q^2$ where $\\\\omega_{1}$ gives $q$'
     """
+    s = tr(s)
     parts = s.split("$")
     if len(parts) % 2 == 0:  # unpaired: treat the last "$" as text
         tail = parts.pop()
@@ -369,7 +402,7 @@ def mixed(s: str, config: Config = DEFAULT) -> Latex:
     out = []
     for k, part in enumerate(parts):
         if k % 2 == 0:
-            out.append(prose(part).raw)
+            out.append(_prose_only(part).raw)
         elif visible_width(part) > config.fit_width:
             out.append(r"\[" + fit(Latex(part), config).raw + r"\]")
         else:
@@ -383,8 +416,9 @@ def ref(kind: str, label: str) -> Latex:
 
 
 def raw(s: str) -> Latex:
-    """LaTeX source written by the caller (markup, never a result)."""
-    return Latex(s)
+    """LaTeX source written by the caller (markup, never a result); prose in it is translated
+    when the report is built in another language (:func:`reports.i18n.tr`)."""
+    return Latex(tr(s))
 
 
 # --------------------------------------------------------------------------------------- math
@@ -773,9 +807,15 @@ def document(
     banner: str | None = None,
     abstract: Latex | str | None = None,
     config: Config = DEFAULT,
+    packages: Sequence[tuple[str, str]] = (),
+    preamble: Sequence[Latex | str] = (),
+    contents: Sequence[Latex] = (Latex(r"\tableofcontents"),),
+    back: Sequence[Latex] = (),
 ) -> Latex:
-    """A complete document: optional ``% banner`` line, preamble from ``config``, title block,
-    abstract, table of contents, then the body blocks separated by blank lines."""
+    """A complete document: optional ``% banner`` line, ``packages`` (loaded first, e.g. the font
+    encoding and language), the packages and preamble of ``config``, then ``preamble`` (LaTeX
+    source), the title block, the abstract, ``contents`` (table of contents, lists), the body
+    blocks separated by blank lines, and the ``back`` matter (bibliography)."""
     head = []
     if banner:
         head.append("% " + banner)
@@ -784,16 +824,18 @@ def document(
             "documentclass", raw(config.documentclass), optional=raw(",".join(config.class_options))
         ).raw
     )
-    for name, opts in config.packages:
-        head.append(command("usepackage", raw(name), optional=raw(opts) if opts else None).raw)
+    for name, opts in (*packages, *config.packages):
+        head.append(Latex("\\usepackage" + (f"[{opts}]" if opts else "") + "{" + name + "}").raw)
     head.extend(config.preamble)
+    head.extend(_source(x) if isinstance(x, Latex) else x for x in preamble)
     head.append(command("title", title).raw)
     head.append(command("author", author).raw)
     head.append(command("date", date).raw)
     blocks = [r"\maketitle"]
     if abstract is not None:
         blocks.append(environment("abstract", abstract).raw)
-    blocks.append(r"\tableofcontents")
+    blocks.extend(b.raw for b in contents)
     blocks.extend(b.raw for b in body)
+    blocks.extend(b.raw for b in back)
     content = "\n\n".join(blocks)
     return Latex("\n".join(head) + "\n\n" + environment("document", Latex(content)).raw + "\n")

@@ -17,10 +17,12 @@ from analytic.cache import Cache
 
 from ..latex import DEFAULT, Config, Latex
 
-__all__ = ["Part", "Context", "SECTIONS", "load"]
+__all__ = ["Part", "Context", "SECTIONS", "load", "shared"]
 
 #: section modules, in the order they appear
 SECTIONS = (
+    "introduction",
+    "summary",
     "model",
     "stitching",
     "catalogue",
@@ -29,6 +31,8 @@ SECTIONS = (
     "diagrams",
     "accuracy",
     "performance",
+    "certification",
+    "conclusions",
 )
 
 
@@ -48,6 +52,16 @@ class Context:
     config: Config = DEFAULT
     cache: Cache = field(default_factory=lambda: Cache(None))
     log: Callable[[str], None] = field(default=lambda msg: print(msg, file=sys.stderr, flush=True))
+    #: results computed once per build and shared between sections (see :func:`shared`)
+    memo: dict = field(default_factory=dict)
+
+
+def shared(ctx: Context, name: str, make: Callable[[], object]):
+    """``make()`` computed once per build (and through the cache across builds), for results that
+    more than one section shows, e.g. the summary up front and the section with the details."""
+    if name not in ctx.memo:
+        ctx.memo[name] = ctx.cache.get(name, make)
+    return ctx.memo[name]
 
 
 def load(name: str):

@@ -6,7 +6,7 @@ from __future__ import annotations
 import re
 
 from ..latex import Config, Latex, fit, mixed, paragraph, raw, table, text
-from . import Context, Part
+from . import Context, Part, shared
 
 TITLE = "The paper's numbered results, printed against derived"
 LABEL = "sec:catalogue"
@@ -16,7 +16,7 @@ def rows(ctx: Context) -> tuple:
     """The catalogue's rows, through the cache (the derivations behind them are the slow part)."""
     from analytic.catalogue import catalogue
 
-    return ctx.cache.get("catalogue-rows", lambda: tuple(catalogue()))
+    return shared(ctx, "catalogue-rows", lambda: tuple(catalogue()))
 
 
 def anchor(label: str) -> str:
@@ -25,10 +25,27 @@ def anchor(label: str) -> str:
 
 
 def eq_text(label: str) -> Latex:
-    """How an equation label is printed in the table: ``(13)``, ``(15$'$)``, ``\\S 6``."""
-    if label.startswith("§"):
-        return raw(r"\S" + text(label[1:]).raw)
-    return raw("(" + text(label).raw + ")")
+    """How an equation label is printed: ``(13)``, ``(2)--(3)``, ``\\S 6``, and for an entry that
+    is about something next to an equation, what it is: ``(15), n = 3`` (the same equation for
+    another order), ``(15), initial condition``, ``(39), reference`` (a cross-reference in the text
+    around it), ``(19), centre``."""
+    from ..i18n import say
+
+    m = re.fullmatch(r"(§?)(\d+)(?:-(\d+))?(?:-(n\d+|ref|shift))?", label)
+    ic = re.fullmatch(r"IC-(\d+)", label)
+    if ic:
+        return raw("(" + ic.group(1) + "), " + say("initial condition", "начальное условие"))
+    if not m:
+        return raw("(" + text(label).raw + ")")
+    sec, first, last, what = m.groups()
+    core = (r"\S" + first) if sec else ("(" + first + ")" + (f"--({last})" if last else ""))
+    if what and what.startswith("n"):
+        core += f", $n = {what[1:]}$"
+    elif what == "ref":
+        core += ", " + say("reference", "ссылка")
+    elif what == "shift":
+        core += ", " + say("centre", "центр")
+    return raw(core)
 
 
 def display(src: str, config: Config) -> Latex:
