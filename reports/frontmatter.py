@@ -162,18 +162,18 @@ def abstract(f: dict, config) -> Latex:
     :func:`reports.sections.summary.findings`)."""
     import sympy as sp
 
-    from .latex import math
+    from .latex import slashed
 
     n_rows, n_diff = len(f["rows"]), len(f["differs"])
     th = f["thresholds"]
     mmin = sp.Symbol(r"m_{\min}")
-    odd = math(sp.Eq(mmin, th["odd"][0]), config).raw
-    even = math(sp.Eq(mmin, th["even"][0]), config).raw
+    odd = slashed(sp.Eq(mmin, th["odd"][0]), config).raw
+    even = slashed(sp.Eq(mmin, th["even"][0]), config).raw
     cl = f["closings"]
     from .sections.summary import closing_depth
 
     depth = closing_depth(cl)
-    m_eq = sp.latex(depth.lhs) + " = " + math(depth.rhs, config, order="rev-lex").raw
+    m_eq = sp.latex(depth.lhs) + " = " + slashed(depth.rhs, config, order="rev-lex").raw
     numbers = []
     for r in f["differs"]:
         n = re.match(r"\D*(\d+)", r.equation)

@@ -57,9 +57,16 @@ def say(en: str, ru: str) -> str:
 def tr(s: str) -> str:
     """``s`` in the language being built: itself in English; in Russian its translation when one
     is known (the whole string, or a template of :data:`reports.i18n_ru.PATTERNS`), else itself."""
-    if _LANG.get() == "en" or not s or s.isspace():
+    if not s or s.isspace():
         return s
-    from .i18n_ru import PHRASES, PATTERNS
+    from .phrasebook import lookup
+
+    hit = lookup(s, _LANG.get())
+    if hit is not None:
+        return hit
+    if _LANG.get() == "en":
+        return s
+    from .i18n_ru import PATTERNS, PHRASES
 
     hit = PHRASES.get(s)
     if hit is not None:

@@ -34,7 +34,10 @@ __all__ = [
     "raw",
     "ref",
     "math",
+    "notation",
     "inline",
+    "slashed",
+    "short_caption",
     "number",
     "command",
     "environment",
@@ -45,6 +48,7 @@ __all__ = [
     "fit",
     "math_lines",
     "pack",
+    "break_source",
     "series_terms",
     "table",
     "figure",
@@ -385,6 +389,11 @@ def _prose_only(s: str) -> Latex:
     return Latex("".join(out))
 
 
+#: a formula with a fraction wider than this (characters, :func:`visible_width`) is displayed, not
+#: set in the line, where it would push the lines apart
+INLINE_FRACTION_WIDTH = 24
+
+
 def mixed(s: str, config: Config = DEFAULT) -> Latex:
     """Text with in-line formulas already in LaTeX between ``$`` signs (as the engine's
     explanations are written): the formulas pass through, the text between them goes through
@@ -403,8 +412,15 @@ def mixed(s: str, config: Config = DEFAULT) -> Latex:
     for k, part in enumerate(parts):
         if k % 2 == 0:
             out.append(_prose_only(part).raw)
-        elif visible_width(part) > config.fit_width:
-            out.append(r"\[" + fit(Latex(part), config).raw + r"\]")
+        elif visible_width(part) > config.fit_width or (
+            r"\frac" in part and visible_width(part) > INLINE_FRACTION_WIDTH
+        ):
+            lines = break_source(part, config.max_width)
+            if len(lines) == 1:
+                out.append(r"\[" + fit(lines[0], config).raw + r"\]")
+            else:
+                body = " \\\\\n".join(fit(x, config).raw for x in lines)
+                out.append("\n\\begin{multline*}\n" + body + "\n\\end{multline*}\n")
         else:
             out.append("$" + part + "$")
     return Latex("".join(out))
@@ -429,7 +445,41 @@ def math(expr, config: Config = DEFAULT, **settings) -> Latex:
     LaTeX, printed with ``config.printer`` updated by ``settings`` (e.g. ``order="lex"``)."""
     if isinstance(expr, Latex):
         return expr
-    return Latex(sympy.latex(expr, **{**dict(config.printer), **settings}))
+    return Latex(notation(sympy.latex(expr, **{**dict(config.printer), **settings})))
+
+
+#: sympy orders ``1 + m`` as ``m + 1``; the paper and this report write ``l_0(1 + m)``
+_ONE_PLUS_M = re.compile(r"(\\left\(|\\sqrt\{|\{|\()m \+ 1(?=\\right\)|\}|\))")
+
+
+def notation(src: str) -> str:
+    """The report's notation in sympy's LaTeX: ``1 + m`` (as in ``l_0(1 + m)``), not ``m + 1``.
+
+    >>> notation(r"\\left(m + 1\\right)^{2} \\sqrt{m + 1}")
+    '\\\\left(1 + m\\\\right)^{2} \\\\sqrt{1 + m}'
+    """
+    return _ONE_PLUS_M.sub(lambda mt: mt.group(1) + "1 + m", src)
+
+
+def slashed(expr, config: Config = DEFAULT, **settings) -> Latex:
+    """A formula for running text: fractions written with a slash, ``\\pi n/(6 Q)``, so that a
+    line keeps its height (an equation is done side by side)."""
+    if isinstance(expr, sympy.Equality):
+        return Latex(
+            slashed(expr.lhs, config, **settings).raw
+            + " = "
+            + slashed(expr.rhs, config, **settings).raw
+        )
+    num, den = sympy.fraction(sympy.sympify(expr))
+    if den == 1:
+        return math(expr, config, **settings)
+
+    def part(x, strict: bool) -> str:
+        src = math(x, config, **settings).raw
+        needs = isinstance(x, sympy.Add) or (strict and isinstance(x, sympy.Mul))
+        return r"\left(" + src + r"\right)" if needs else src
+
+    return Latex(part(num, False) + "/" + part(den, True))
 
 
 def inline(body: Latex) -> Latex:
@@ -584,6 +634,56 @@ def pack(pieces: Sequence[Latex], width: int) -> list[Latex]:
     return lines
 
 
+def break_source(src: str, width: int) -> list[Latex]:
+    """A formula given as LaTeX source, broken into lines no wider than ``width`` (as far as it
+    can be): the break points are the ``+`` and ``-`` of a top-level sum, outside every brace and
+    ``\\left...\\right`` group, and the first line keeps everything up to the first ``=``.
+
+    >>> [str(x) for x in break_source(r"x = a + \\frac{b + c}{2} - d", 6)]
+    ['x = a', '+ \\\\frac{b + c}{2}', '- d']
+    """
+    if visible_width(src) <= width:
+        return [Latex(src)]
+    pieces: list[str] = []
+    depth = 0
+    start = 0
+    seen_eq = "=" not in src
+    i = 0
+    while i < len(src):
+        if src.startswith(r"\left", i) and not src[i + 5 : i + 6].isalpha():
+            depth += 1
+            i += 5
+            continue
+        if src.startswith(r"\right", i) and not src[i + 6 : i + 7].isalpha():
+            depth -= 1
+            i += 6
+            continue
+        ch = src[i]
+        if ch == "\\":
+            i += 2
+            continue
+        if ch == "{":
+            depth += 1
+        elif ch == "}":
+            depth -= 1
+        elif depth == 0 and ch == "=":
+            seen_eq = True
+        elif (
+            depth == 0
+            and seen_eq
+            and ch in "+-"
+            and i > 0
+            and src[i - 1] == " "
+            and src[:i].strip()
+            and not src[:i].rstrip().endswith(("=", "(", ","))
+        ):
+            pieces.append(src[start:i].strip())
+            start = i
+        i += 1
+    pieces.append(src[start:].strip())
+    return pack([Latex(p) for p in pieces if p], width)
+
+
 def series_terms(
     expr, var, config: Config = DEFAULT, *, big_o: int | None = None, shown_as=None
 ) -> list[Latex]:
@@ -672,7 +772,7 @@ def paragraph(*parts: Latex | str) -> Latex:
             continue
         if (
             out
-            and not out.endswith(("(", " ", "\n"))
+            and not out.endswith(("(", " ", "\n", "~"))
             and not src.startswith((".", ",", ";", ":", ")", "'", "!", "?", "-"))
         ):
             out += " "
@@ -748,7 +848,7 @@ def table(
     columns = columns or ("l" + "r" * (ncol - 1))
     head = " & ".join(_source(h) for h in header) + r" \\"
     body = "\n".join(" & ".join(_source(c) for c in r) + r" \\" for r in rows)
-    cap = command("caption", caption).raw if caption is not None else ""
+    cap = _caption(caption) if caption is not None else ""
     lab = command("label", raw(label)).raw if label else ""
     switches = [f"\\{size}"] if size else []
     if colsep:
@@ -773,6 +873,37 @@ def table(
     return environment("table", Latex(inner), optional="htbp")
 
 
+def short_caption(src: str, limit: int = 90) -> str | None:
+    """The first sentence of a caption (LaTeX source) for the lists of figures and tables, or
+    ``None`` when the caption is short enough to be listed whole."""
+    if len(src) <= limit:
+        return None
+    depth = 0
+    in_math = False
+    for i, ch in enumerate(src):
+        if ch == "$" and (i == 0 or src[i - 1] != "\\"):
+            in_math = not in_math
+        elif ch == "{":
+            depth += 1
+        elif ch == "}":
+            depth -= 1
+        elif (
+            ch == "."
+            and not in_math
+            and depth == 0
+            and src[i + 1 : i + 2] == " "
+            and not src[max(0, i - 4) : i].endswith(("Fig", "eq", "eqs", "Eq", "e.g", "i.e"))
+        ):
+            return src[: i + 1]
+    return None
+
+
+def _caption(caption: Latex | str) -> str:
+    src = _source(caption)
+    short = short_caption(src)
+    return r"\caption" + ("" if short is None else "[{" + short + "}]") + "{" + src + "}"
+
+
 def figure(
     path: str, caption: Latex | str, *, label: str | None = None, width: str = r"\textwidth"
 ) -> Latex:
@@ -780,7 +911,7 @@ def figure(
     body = (
         "\\centering\n" + command("includegraphics", raw(path), optional=raw(f"width={width}")).raw
     )
-    body += "\n" + command("caption", caption).raw
+    body += "\n" + _caption(caption)
     if label:
         body += command("label", raw(label)).raw
     return environment("figure", Latex(body), optional="htbp")

@@ -21,7 +21,16 @@ from ..latex import (
     text,
 )
 
-__all__ = ["verdict", "link", "chain", "tag_of", "note"]
+__all__ = ["verdict", "check", "link", "chain", "tag_of", "note", "CHECKS_STATED_ONCE"]
+
+#: said once at the head of a section of derivations, instead of after every step
+CHECKS_STATED_ONCE = (
+    "Every step below is checked by the engine. Unless its note says otherwise, the check is "
+    "symbolic: the difference of the two sides reduces to zero exactly (after the trigonometric "
+    "functions are written as exponentials, an identity of rational functions). Where sympy "
+    "cannot reduce it, the note says so and gives the numeric check used instead: random points "
+    "at 40 digits and the largest relative residual."
+)
 
 
 def verdict(v, config: Config) -> Latex:
@@ -36,11 +45,20 @@ def verdict(v, config: Config) -> Latex:
                 inline(math(factor, config)),
                 "(proved symbolically)",
             )
-        return Latex("proved symbolically (the difference reduces to zero)")
+        return Latex("")
     return paragraph(
-        f"checked numerically at {v.points} random points with {v.dps} digits, largest relative "
+        f"numeric, at {v.points} random points with {v.dps} digits, largest relative "
         f"residual {v.worst:.1e} (sympy did not reduce it to zero)"
     )
+
+
+def check(v, config: Config) -> Latex:
+    """``Check: ...`` for a step whose check is not the plain symbolic one (stated once, see
+    :data:`CHECKS_STATED_ONCE`); nothing for the plain one."""
+    said = verdict(v, config)
+    if said.empty:
+        return Latex("")
+    return paragraph(raw(r"\emph{Check:}"), said, ".")
 
 
 def note(*parts) -> Latex:
@@ -74,9 +92,7 @@ def link(
         + note(
             raw(r"\emph{" + text(title or lnk.name).raw + ".}"),
             prose(lnk.why + "."),
-            "Check:",
-            verdict(lnk.verdict, config),
-            ".",
+            check(lnk.verdict, config),
         ).raw
     )
 
@@ -119,7 +135,7 @@ def chain(
             out.append(equation_lines([body], tag=tag))
         reasons = []
         for s in grp:
-            reasons.append(paragraph(prose(s.why + "."), "Check:", verdict(s.verdict, config), "."))
+            reasons.append(paragraph(prose(s.why + "."), check(s.verdict, config)))
         out.append(note(*reasons))
     return Latex("\n\n".join(x.raw for x in out))
 

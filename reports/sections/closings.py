@@ -10,7 +10,7 @@ import sympy as sp
 
 from ..latex import Latex, inline, math, paragraph, prose, raw, table
 from . import Context, Part
-from ._render import note, verdict
+from ._render import check, note
 
 TITLE = "Closings of the intervals"
 LABEL = "sec:closings"
@@ -87,8 +87,11 @@ def build(ctx: Context) -> Part:
                 raw(f"\\item[{k}.]"),
                 prose(step.claim[0].upper() + step.claim[1:] + "."),
                 *((raw(r"\\"), shown) if shown is not None and len(shown.raw) < 260 else ()),
-                raw(r"\\"),
-                note("Check:", verdict(step.verdict, cfg), "."),
+                *(
+                    (raw(r"\\"), note(check(step.verdict, cfg)))
+                    if not check(step.verdict, cfg).empty
+                    else ()
+                ),
             )
         )
     out.append(

@@ -13,7 +13,18 @@ import sympy as sp
 from analytic.model import S
 
 from ..i18n import say
-from ..latex import Latex, inline, math, paragraph, raw, table, text
+from ..latex import (
+    Latex,
+    break_source,
+    inline,
+    math,
+    notation,
+    paragraph,
+    prose,
+    raw,
+    slashed,
+    table,
+)
 from . import Context, Part, shared
 from .catalogue import anchor, eq_text
 from .catalogue import rows as catalogue_rows
@@ -23,6 +34,11 @@ LABEL = "sec:summary"
 
 #: orders whose closings are listed in the summary (the paper's Fig. 2 shows orders 1 to 6)
 LISTED_ORDERS = 6
+#: the width (in characters, see :func:`reports.latex.visible_width`) of a formula line in the
+#: errata table before it is broken
+CELL_WIDTH = 28
+#: the most lines one formula may take in the errata table
+CELL_LINES = 2
 #: closings are counted up to this order (as in the closings section)
 MAX_ORDER = 12
 
@@ -64,12 +80,20 @@ def findings(ctx: Context) -> dict:
 
 
 def _items(src: str) -> list[str]:
-    return [x.strip() for x in re.split(r",\\quad\s*", src) if x.strip()]
+    return [notation(x.strip()) for x in re.split(r",\\quad\s*", src) if x.strip()]
 
 
 def _cell(src: str) -> Latex:
-    """Formulas in a table cell: one per line, each scaled down to the column if too wide."""
-    lines = [r"\fitcell{" + x + "}" for x in _items(src)]
+    """Formulas in a table cell: one per line, each scaled down to the column if too wide; a
+    formula that would take more than :data:`CELL_LINES` lines is left to the full entry."""
+    lines = []
+    for x in _items(src):
+        broken = break_source(x, CELL_WIDTH)
+        if len(broken) > CELL_LINES:
+            if not lines or lines[-1] != r"\dots":
+                lines.append(r"\dots")
+            continue
+        lines.extend(r"\fitcell{" + line.raw + "}" for line in broken)
     return raw(
         r"\begin{minipage}[t]{\linewidth}\raggedright "
         + r"\\[2pt] ".join(lines)
@@ -83,7 +107,7 @@ def errata_table(f: dict) -> Latex:
         rows.append(
             [
                 raw(r"\hyperref[cat:" + anchor(r.equation) + "]{" + eq_text(r.equation).raw + "}"),
-                text(r.title or ""),
+                prose(r.title or ""),
                 _cell(r.printed),
                 _cell(r.derived) if r.derived else raw(""),
             ]
@@ -96,8 +120,8 @@ def errata_table(f: dict) -> Latex:
             say("derived (correct)", "выведено (верно)"),
         ],
         rows,
-        columns=r">{\raggedright}p{0.09\linewidth}>{\raggedright}p{0.17\linewidth}"
-        r"p{0.33\linewidth}p{0.33\linewidth}",
+        columns=r">{\raggedright}p{0.08\linewidth}>{\raggedright}p{0.16\linewidth}"
+        r"p{0.32\linewidth}p{0.32\linewidth}",
         caption=raw(
             say(
                 "Errata: the paper's results whose printed form differs from the derivation, "
@@ -218,7 +242,7 @@ def build(ctx: Context) -> Part:
         listed.append(
             inline(raw(ratio.replace(":", "\\!:\\!")))
             + " ("
-            + inline(raw("m = " + sp.latex(sp.Rational(mval.numerator, mval.denominator))))
+            + inline(raw(f"m = {mval.numerator}/{mval.denominator}"))
             + ", "
             + (t("order", "порядок") if len(orders) == 1 else t("orders", "порядки"))
             + " "
@@ -270,11 +294,11 @@ def build(ctx: Context) -> Part:
                 "For $n = 1, 2, 3$ these are the paper's",
                 "При $n = 1, 2, 3$ это пороги статьи",
             ),
-            inline(math(sp.Eq(mmin, th[1][0]), cfg)),
+            inline(slashed(sp.Eq(mmin, th[1][0]), cfg)),
             ",",
-            inline(math(sp.Eq(mmin, th[2][0]), cfg)),
+            inline(slashed(sp.Eq(mmin, th[2][0]), cfg)),
             t("and", "и"),
-            inline(math(sp.Eq(mmin, th[3][0]), cfg)),
+            inline(slashed(sp.Eq(mmin, th[3][0]), cfg)),
             t(
                 "(eqs. 38, 43 and Section 6); for every other order they are new (Section~",
                 "(ур. 38, 43 и разд. 6); для остальных порядков они новые (раздел~",
