@@ -350,7 +350,7 @@ def _threshold_row(label: str, n: int, title: str) -> Row:
             f" So the threshold read off the printed condition is right through relative order "
             f"m^{k - 1} and wrong at m^{k} (1/Q^{k // p_}): with 1/Q_min = $\\lambda(m)$ m^{p_}, the "
             f"m^{k} coefficient "
-            f"of lam is ${sp.latex(a)}$ from the printed condition but ${sp.latex(b)}$ at the tangency "
+            f"of $\\lambda$ is ${sp.latex(a)}$ from the printed condition but ${sp.latex(b)}$ at the tangency "
             f"(relative difference ${sp.latex(rel)}$ m^{k}); the leading term, eq. "
             f"({'38' if label == '37' else '43'}), is right. The correct condition is the tangency "
             f"(paper model)."

@@ -23,7 +23,7 @@ from analytic.cache import Cache, cache_dir_override
 
 from . import frontmatter
 from .bibliography import bibliography
-from .build import BuildResult, find_engine, write_output
+from .build import BuildResult, find_engine, supports, write_output
 from .frontmatter import provenance
 from .i18n import language
 from .latex import DEFAULT, Config, Latex, document, section
@@ -144,8 +144,11 @@ def build_report(
     report (see :mod:`analytic.cache`); ``None`` computes everything afresh (a cold build)."""
     log = log or (lambda msg: print(msg, file=sys.stderr, flush=True))
     engine = find_engine() if compile is not False else None
+    if engine is not None and not supports(lang):
+        log(f"report: the installed TeX cannot typeset language {lang!r}; writing the source only")
+        engine = None
     if compile is True and engine is None:
-        raise RuntimeError("no TeX engine (latexmk or pdflatex) found")
+        raise RuntimeError(f"no TeX engine (latexmk or pdflatex) for language {lang!r} found")
     with cache_dir_override(cache_dir) as base:
         report_cache = None if base is None else base / "report"
         ctx = Context(

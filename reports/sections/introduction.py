@@ -46,7 +46,8 @@ def build(ctx: Context) -> Part:
             r"homogeneous system has a non-trivial solution, and so finds the edges of the first "
             r"three intervals as series in $m$ (its eqs.~18, 19, 27), their closings at some "
             r"depths (its Section~5), and the thresholds of excitation with friction (its "
-            r"Section~6 and appendix, eqs.~28--45), illustrated by its Figs.~2 and~8.",
+            r"Section~6 and appendix, eqs.~28--45), illustrated by its Figs.~2 and~8 and by "
+            r"the author's simulation program~\cite{butikov-applet}.",
             r"Между скачками маятник совершает свободные колебания; при скачке угол непрерывен, "
             r"а момент импульса сохраняется. Вблизи $T = nT_{av}/2$ ($n = 1, 2, 3, \dots$) "
             r"лежит $n$-й \emph{интервал параметрической неустойчивости} $T_-(m) < T < T_+(m)$, "
@@ -55,7 +56,8 @@ def build(ctx: Context) -> Part:
             r"ищет условие нетривиального решения получающейся однородной системы и так находит "
             r"границы первых трёх интервалов в виде рядов по $m$ (ур.~18, 19, 27), их смыкания "
             r"при некоторых глубинах модуляции (разд.~5) и пороги возбуждения с трением "
-            r"(разд.~6 и приложение, ур.~28--45), иллюстрируя их рис.~2 и~8.",
+            r"(разд.~6 и приложение, ур.~28--45), иллюстрируя их рис.~2 и~8 и "
+            r"программой моделирования автора~\cite{butikov-applet}.",
         ),
         t(
             r"This report is produced by \texttt{paramres}, a program that derives every one of "
