@@ -628,18 +628,19 @@ def _sec5() -> Row:
         )
     )
     how = (
-        "Closing theorem (derived: both edge factors vanish together iff omega_1 T/2 = a pi and "
-        "omega_2 T/2 = b pi with 1 <= a < b, a + b = n; then T1:T2 = b:a, m = (b^2-a^2)/(b^2+a^2), "
-        "T = a T1, M = (-1)^n I; no other closings, by the window theorem). The three ratios the "
-        "text names are special cases: "
+        r"Closing theorem (derived: both edge factors vanish together if and only if "
+        r"$\omega_1 T/2 = a\pi$ and $\omega_2 T/2 = b\pi$ with $1 \le a < b$, $a + b = n$; then "
+        r"$T_1:T_2 = b:a$, $m = (b^2-a^2)/(b^2+a^2)$, $T = aT_1$, $M = (-1)^n I$; no other "
+        r"closings, by the window theorem). The three ratios the text names are special cases: "
         + ", ".join(
-            f"{k} at n = {', '.join(str(x.order) for x in v)} (m = {v[0].m})"
+            f"{k} at $n = {', '.join(str(x.order) for x in v)}$ ($m = {v[0].m}$)"
             for k, v in found.items()
         )
-        + ". The 2:1 closing is the one the text explains (a = 1, b = 2: half an oscillation of T1 "
-        "and a full one of T2 per cycle, M = -I, so every motion repeats after two cycles). For "
-        f"n <= 6 the theorem gives {len(c)} closings: {listing}. Not named in the text: "
-        + ", ".join(f"{x.ratio} (n = {x.order}, m = {x.m} = {float(x.m):.3f})" for x in others)
+        + r". The 2:1 closing is the one the text explains ($a = 1$, $b = 2$: half an oscillation "
+        r"of $T_1$ and a full one of $T_2$ per cycle, $M = -I$, so every motion repeats after two "
+        f"cycles). For $n \\le 6$ the theorem gives {len(c)} closings: {listing}. Not named in the "
+        "text: "
+        + ", ".join(f"{x.ratio} ($n = {x.order}$, $m = {x.m} = {float(x.m):.3f}$)" for x in others)
         + "; they lie at depths near 0.9, where Fig. 2 may not reach. No closings for n = 1, 2 "
         "(the text's 'n > 2' agrees)."
     )

@@ -70,8 +70,8 @@ PHRASES: dict[str, str] = {
     "no friction": "без трения",
     "paper model": "модель статьи",
     "exact model": "точная модель",
-    "paper": "статья",
-    "exact": "точная",
+    "paper": "модель статьи",
+    "exact": "точная модель",
     "residual in the equation": "невязка в уравнении",
     "coupling of the jumps (eq. 14)": "связь скачков (ур. 14)",
     "decay per period": "затухание за период",
@@ -175,9 +175,132 @@ PHRASES: dict[str, str] = {
     "when the bob moves up and by the inverse when it moves down.": (
         "при подъёме груза и на обратную величину при его опускании."
     ),
+    # stitching
+    "Every step below is checked by the engine. Unless its note says otherwise, the check is "
+    "symbolic: the difference of the two sides reduces to zero exactly (after the trigonometric "
+    "functions are written as exponentials, an identity of rational functions). Where sympy "
+    "cannot reduce it, the note says so and gives the numeric check used instead: random points "
+    "at 40 digits and the largest relative residual.": (
+        "Каждый шаг ниже проверен программой. Если в примечании не сказано иное, проверка "
+        "символьная: разность двух частей в точности сводится к нулю (после записи "
+        "тригонометрических функций через экспоненты --- тождество рациональных функций). Где "
+        "sympy не справляется, это указано вместе с численной проверкой: случайные точки с 40 "
+        "знаками и наибольшая относительная невязка."
+    ),
+    "Both halves symmetric about their midpoints: a cos on the bob-down half, a sin on the bob-up "
+    "half (odd orders; the paper's lower edge of the first interval):": (
+        "Оба полупериода симметричны относительно своих середин: cos на полупериоде с опущенным "
+        "грузом, sin --- с поднятым (нечётные порядки; нижняя граница первого интервала в статье):"
+    ),
+    "Both halves symmetric about their midpoints: a sin on the bob-down half, a cos on the bob-up "
+    "half (odd orders; the paper's upper edge of the first interval):": (
+        "Оба полупериода симметричны относительно своих середин: sin на полупериоде с опущенным "
+        "грузом, cos --- с поднятым (нечётные порядки; верхняя граница первого интервала в "
+        "статье):"
+    ),
+    "Both halves symmetric about their midpoints: a cos on the bob-down half, a cos on the bob-up "
+    "half (even orders; the paper's edge of the second interval):": (
+        "Оба полупериода симметричны относительно своих середин: cos на обоих полупериодах "
+        "(чётные порядки; граница второго интервала в статье):"
+    ),
+    "Both halves symmetric about their midpoints: a sin on the bob-down half, a sin on the bob-up "
+    "half (even orders; the other edge of even intervals, which the paper does not write):": (
+        "Оба полупериода симметричны относительно своих середин: sin на обоих полупериодах "
+        "(чётные порядки; другая граница чётных интервалов, которую статья не выписывает):"
+    ),
+    "The single results, the stationary initial conditions on the edges, and the paper model with "
+    "friction (the paper's appendix), each step derived from the previous one:": (
+        "Отдельные результаты, стационарные начальные условия на границах и модель статьи с "
+        "трением (приложение статьи); каждый шаг выведен из предыдущего:"
+    ),
+    "The monodromy matrix has determinant": "Определитель матрицы монодромии равен",
+    "in every model:": "во всех моделях:",
+    "and for even orders": "и для чётных порядков",
+    "A stationary oscillation on an edge is made of two free segments, ": (
+        "Стационарное колебание на границе состоит из двух отрезков свободных колебаний: "
+    ),
+    "on": "на",
+    "and": "и",
+    # catalogue
+    "For each numbered result the engine transcribes the printed formula (the thing being "
+    "checked), derives the same result from the model, and decides whether the two agree: "
+    "symbolically where sympy can (an exact identity of rational functions after the "
+    "abbreviations are expanded), otherwise at random points with 40 digits. An entry whose "
+    "printed and derived forms are simply the same equation, decided symbolically, says nothing "
+    "more; every other entry says how it was decided. Where they differ, the entry shows the "
+    "smallest sub-expressions in which they part and the correct form.": (
+        "Для каждого пронумерованного результата программа переписывает напечатанную формулу "
+        "(предмет проверки), выводит тот же результат из модели и решает, совпадают ли они: "
+        "символьно, где это удаётся sympy (точное тождество рациональных функций после "
+        "раскрытия сокращений), иначе --- в случайных точках с 40 знаками. Если напечатанная и "
+        "выведенная формы --- просто одно и то же уравнение и это доказано символьно, больше "
+        "ничего не сказано; в остальных случаях указано, как принято решение. Где формы "
+        "расходятся, показаны наименьшие различающиеся подвыражения и верная форма."
+    ),
+    "Printed:": "В статье:",
+    "Derived:": "Выведено:",
+    # model section
+    r"Free-oscillation segments of each damping model, and what is left when the segment is put "
+    r"into the equation of motion (computed by the engine). The paper's segment misses the "
+    r"equation by $\gamma^2\varphi$: its frequency is the undamped one and its derivative is "
+    r"taken as if $e^{-\gamma t}$ were constant. The critically damped segment solves the "
+    r"equation exactly at $\gamma = \omega_1$, where its residual vanishes.": (
+        r"Отрезки свободных колебаний в каждой модели трения и невязка при подстановке отрезка "
+        r"в уравнение движения (вычислено программой). Отрезок статьи не удовлетворяет "
+        r"уравнению на $\gamma^2\varphi$: его частота --- частота без трения, а производная "
+        r"взята так, будто $e^{-\gamma t}$ постоянна. Отрезок критического затухания точно "
+        r"удовлетворяет уравнению при $\gamma = \omega_1$, где его невязка обращается в нуль."
+    ),
+    r"The factor between the determinant of the four stitching conditions and "
+    r"$\det(M-\sigma I)$, found as the ratio of the two (a symbolic identity: the ratio is free of "
+    r"the oscillating terms). The boundary condition \emph{is} the statement that "
+    r"$\sigma = (-1)^n$ is a Floquet multiplier.": (
+        r"Множитель между определителем четырёх условий сшивания и $\det(M-\sigma I)$, найденный "
+        r"как их отношение (символьное тождество: отношение не содержит осциллирующих членов). "
+        r"Условие границы \emph{и есть} утверждение, что $\sigma = (-1)^n$ --- мультипликатор "
+        r"Флоке."
+    ),
+    r"The per-edge equations in $\theta$ for $n = 1,\dots,6$, with "
+    r"$\beta = (\omega_2-\omega_1)/(\omega_2+\omega_1)$ and $r = (q-1)/(q+1)$.": (
+        r"Уравнения границ относительно $\theta$ для $n = 1,\dots,6$, где "
+        r"$\beta = (\omega_2-\omega_1)/(\omega_2+\omega_1)$ и $r = (q-1)/(q+1)$."
+    ),
+    r"Every closing of the intervals of order $n\le 12$: $\omega_1T/2 = a\pi$, "
+    r"$\omega_2T/2 = b\pi$, $m = (b^2-a^2)/(b^2+a^2)$, $T = ab\sqrt{2/(a^2+b^2)}\,T_0$.": (
+        r"Все смыкания интервалов порядка $n\le 12$: $\omega_1T/2 = a\pi$, $\omega_2T/2 = b\pi$, "
+        r"$m = (b^2-a^2)/(b^2+a^2)$, $T = ab\sqrt{2/(a^2+b^2)}\,T_0$."
+    ),
+    r"$|\det(M-\sigma I)|$, relative to the size of $M$, at the certified edges of "
+    r"Table~\ref{tab:certified}.": (
+        r"$|\det(M-\sigma I)|$ относительно величины $M$ на гарантированных границах "
+        r"таблицы~\ref{tab:certified}."
+    ),
+    r"The third interval at $Q = 7$ in detail (dark), inside the frictionless interval (light). "
+    r"Bars on the left: the proven existence ranges; dashed: the paper's 48\,\% and 66\,\%.": (
+        r"Третий интервал при $Q = 7$ (тёмный) внутри интервала без трения (светлый). Полосы "
+        r"слева: доказанные области существования; пунктир: 48\,\% и 66\,\% из статьи."
+    ),
+    "Certified edges, 35 significant digits.": "Гарантированные границы, 35 значащих цифр.",
+    "Without friction": "Без трения",
+    "Exact tuning": "Точная настройка",
+    "Average period": "Средний период",
+    "Naive resonance condition": "Простейшее условие резонанса",
 }
 
 PATTERNS: list[tuple[str, object]] = [
+    (
+        r"The paper's numbered results: (\d+) checked, (\d+) agree with the derivation, (\d+) "
+        r"differ \(misprints or wrong statements; the correct forms are given below\)\. Click an "
+        r"equation number for the entry\.",
+        r"Пронумерованные результаты статьи: проверено \1, с выводом совпадают \2, расходятся "
+        r"\3 (опечатки или неверные утверждения; верные формы приведены ниже). Номер уравнения "
+        r"--- ссылка на разбор.",
+    ),
+    (
+        r"Depth ranges in which the third interval exists at \$Q = (\d+)\$ \(proven ends\)\.",
+        r"Глубины модуляции, при которых третий интервал существует при $Q = \1$ (доказанные "
+        r"концы).",
+    ),
     (
         r"The paper's Fig\.~(\d+) redrawn: (.*)",
         r"Рис.~\1 статьи, перестроенный: \2",

@@ -134,6 +134,61 @@ TEXTS: dict[str, tuple[str, str]] = {
         "Условия антипериодичности, которые программа строит для нечётных порядков (угол и "
         "момент импульса при переходе через $t = T/2$).",
     ),
+    "Odd orders: the undamped normal form is the product of the two edge factors.": (
+        "Odd orders: without friction the normal form is the product of the two edge factors.",
+        "Нечётные порядки: без трения нормальная форма --- произведение двух множителей границ.",
+    ),
+    "Even orders: the undamped normal form is the product of the two edge factors.": (
+        "Even orders: without friction the normal form is the product of the two edge factors.",
+        "Чётные порядки: без трения нормальная форма --- произведение двух множителей границ.",
+    ),
+    "Odd orders: F_+ + F_- = 2 f(x) and F_- - F_+ = 2 r f(y), so both vanish iff f(x) = f(y) = 0 "
+    "(r > 0).": (
+        r"Odd orders: $F_+ + F_- = 2f(x)$ and $F_- - F_+ = 2rf(y)$, so both vanish if and only "
+        r"if $f(x) = f(y) = 0$ (as $r > 0$).",
+        r"Нечётные порядки: $F_+ + F_- = 2f(x)$ и $F_- - F_+ = 2rf(y)$, поэтому оба обращаются в "
+        r"нуль тогда и только тогда, когда $f(x) = f(y) = 0$ (так как $r > 0$).",
+    ),
+    "Even orders: F_+ + F_- = 2 f(x) and F_- - F_+ = 2 r f(y), so both vanish iff f(x) = f(y) = 0 "
+    "(r > 0).": (
+        r"Even orders: $F_+ + F_- = 2f(x)$ and $F_- - F_+ = 2rf(y)$, so both vanish if and only "
+        r"if $f(x) = f(y) = 0$ (as $r > 0$).",
+        r"Чётные порядки: $F_+ + F_- = 2f(x)$ и $F_- - F_+ = 2rf(y)$, поэтому оба обращаются в "
+        r"нуль тогда и только тогда, когда $f(x) = f(y) = 0$ (так как $r > 0$).",
+    ),
+    "Odd orders: f(x) = f(y) = 0 makes a1 = x - y and a2 = x + y integer multiples of pi with "
+    "a + b odd, n = a + b.": (
+        r"Odd orders: $f(x) = f(y) = 0$ makes $x - y$ and $x + y$ integer multiples $a\pi$, "
+        r"$b\pi$ of $\pi$ with $a + b = n$ odd.",
+        r"Нечётные порядки: при $f(x) = f(y) = 0$ величины $x - y$ и $x + y$ --- целые кратные "
+        r"$a\pi$, $b\pi$ числа $\pi$, причём $a + b = n$ нечётно.",
+    ),
+    "Even orders: f(x) = f(y) = 0 makes a1 = x - y and a2 = x + y integer multiples of pi with "
+    "a + b even, n = a + b.": (
+        r"Even orders: $f(x) = f(y) = 0$ makes $x - y$ and $x + y$ integer multiples $a\pi$, "
+        r"$b\pi$ of $\pi$ with $a + b = n$ even.",
+        r"Чётные порядки: при $f(x) = f(y) = 0$ величины $x - y$ и $x + y$ --- целые кратные "
+        r"$a\pi$, $b\pi$ числа $\pi$, причём $a + b = n$ чётно.",
+    ),
+    "Omega2/omega1 = sqrt((1+m)/(1-m)) = b/a gives m = (b^2 - a^2)/(b^2 + a^2).": (
+        r"$\omega_2/\omega_1 = \sqrt{(1+m)/(1-m)} = b/a$ gives $m = (b^2 - a^2)/(b^2 + a^2)$.",
+        r"Из $\omega_2/\omega_1 = \sqrt{(1+m)/(1-m)} = b/a$ следует "
+        r"$m = (b^2 - a^2)/(b^2 + a^2)$.",
+    ),
+    "T = a T1 = a sqrt(1+m) T0 = a b sqrt(2/(a^2+b^2)) T0 (and = b T2).": (
+        r"$T = aT_1 = a\sqrt{1+m}\,T_0 = ab\sqrt{2/(a^2+b^2)}\,T_0$ (and $= bT_2$).",
+        r"$T = aT_1 = a\sqrt{1+m}\,T_0 = ab\sqrt{2/(a^2+b^2)}\,T_0$ (и $= bT_2$).",
+    ),
+    "The same T is b T2 = b sqrt(1-m) T0.": (
+        r"The same $T$ is $bT_2 = b\sqrt{1-m}\,T_0$.",
+        r"То же $T$ равно $bT_2 = b\sqrt{1-m}\,T_0$.",
+    ),
+    "At omega1 T/2 = a pi, omega2 T/2 = b pi the monodromy is (-1)^(a+b) I = (-1)^n I.": (
+        r"At $\omega_1 T/2 = a\pi$, $\omega_2 T/2 = b\pi$ the monodromy matrix is "
+        r"$(-1)^{a+b} I = (-1)^n I$.",
+        r"При $\omega_1 T/2 = a\pi$, $\omega_2 T/2 = b\pi$ матрица монодромии равна "
+        r"$(-1)^{a+b} I = (-1)^n I$.",
+    ),
 }
 
 PATTERNS: list[tuple[re.Pattern, object]] = [

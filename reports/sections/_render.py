@@ -12,12 +12,12 @@ from ..latex import (
     equation,
     equation_lines,
     inline,
-    math,
     math_lines,
     paragraph,
     prose,
     raw,
     section,
+    slashed,
     text,
 )
 
@@ -42,7 +42,7 @@ def verdict(v, config: Config) -> Latex:
         if factor is not None and factor != 1:
             return paragraph(
                 "holds up to the non-vanishing factor",
-                inline(math(factor, config)),
+                inline(slashed(factor, config)),
                 "(proved symbolically)",
             )
         return Latex("")
@@ -74,6 +74,9 @@ def tag_of(label: str) -> str | None:
     m = re.fullmatch(r"(\d+)-upper", label)
     if m:
         return m.group(1) + "'"
+    m = re.fullmatch(r"IC-(\d+)", label)
+    if m:  # the stationary initial condition the paper states after its equation
+        return m.group(1) + r"\text{, i.c.}"
     return sp.latex(sp.Symbol(label)) if re.fullmatch(r"\d+", label) else label.replace("_", r"\_")
 
 

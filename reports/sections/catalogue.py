@@ -40,26 +40,28 @@ def anchor(label: str) -> str:
 
 def eq_text(label: str) -> Latex:
     """How an equation label is printed: ``(13)``, ``(2)--(3)``, ``\\S 6``, and for an entry that
-    is about something next to an equation, what it is: ``(15), n = 3`` (the same equation for
-    another order), ``(15), initial condition``, ``(39), reference`` (a cross-reference in the text
-    around it), ``(19), centre``."""
+    is about something next to an equation, what it is: ``(15, n = 3)`` (the same equation for
+    another order), ``(15, i.c.)`` (the stationary initial condition stated after it),
+    ``(39, reference)`` (a cross-reference in the text around it), ``(19, centre)``."""
     from ..i18n import say
 
     m = re.fullmatch(r"(§?)(\d+)(?:-(\d+))?(?:-(n\d+|ref|shift))?", label)
     ic = re.fullmatch(r"IC-(\d+)", label)
     if ic:
-        return raw("(" + ic.group(1) + "), " + say("initial condition", "начальное условие"))
+        return raw("(" + ic.group(1) + ", i.c.)")
     if not m:
         return raw("(" + text(label).raw + ")")
     sec, first, last, what = m.groups()
-    core = (r"\S" + first) if sec else ("(" + first + ")" + (f"--({last})" if last else ""))
+    extra = ""
     if what and what.startswith("n"):
-        core += f", $n = {what[1:]}$"
+        extra = f", $n = {what[1:]}$"
     elif what == "ref":
-        core += ", " + say("reference", "ссылка")
+        extra = ", " + say("reference", "ссылка")
     elif what == "shift":
-        core += ", " + say("centre", "центр")
-    return raw(core)
+        extra = ", " + say("centre", "центр")
+    if sec:
+        return raw(r"\S" + first + extra)
+    return raw("(" + first + extra + ")" + (f"--({last})" if last else ""))
 
 
 def display(src: str, config: Config) -> Latex:

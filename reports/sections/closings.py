@@ -11,6 +11,7 @@ import sympy as sp
 from ..latex import Latex, inline, math, paragraph, prose, raw, table
 from . import Context, Part
 from ._render import check, note
+from .summary import theorem
 
 TITLE = "Closings of the intervals"
 LABEL = "sec:closings"
@@ -59,10 +60,7 @@ def build(ctx: Context) -> Part:
     cfg = ctx.config
     cl, checks = _compute()
     out: list[Latex] = [
-        paragraph(
-            raw(r"\textbf{Theorem.}"),
-            prose(cl.statement),
-        ),
+        theorem(cl, ctx),
         paragraph(
             "The paper shows closings of the third, fourth and fifth intervals in its Fig. 2 and "
             "links "

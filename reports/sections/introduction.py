@@ -93,15 +93,18 @@ def build(ctx: Context) -> Part:
             r"methods and the time domain; Section~\ref{sec:certification} explains what "
             r"``proven'' means here. Equation numbers without a section prefix, such as (13), "
             r"are the paper's; a prime, as in (15$'$), marks the paper's equation for the other "
-            r"edge or a second appearance of the same number; numbers such as (2.3) are this "
-            r"report's. Figure numbers of the paper are always written ``the paper's Fig.~2''.",
+            r"edge or a second appearance of the same number, and ``i.c.'', as in (15, i.c.), the "
+            r"stationary initial condition the paper states after that equation; numbers such as "
+            r"(2.3) are this report's. Figure numbers of the paper are always written ``the paper's Fig.~2''.",
             r"В разделе~\ref{sec:summary} собраны результаты. Раздел~\ref{sec:model} задаёт "
             r"модель и обозначения; следующие разделы содержат вывод, разбор результатов статьи "
             r"по одному, ряды, смыкания, диаграммы, точность методов и моделирование; "
             r"в разделе~\ref{sec:certification} объяснено, что здесь значит <<доказано>>. "
             r"Номера уравнений без номера раздела, например (13), --- номера статьи; штрих, "
             r"как в (15$'$), отмечает уравнение статьи для другой границы или повторное "
-            r"появление того же номера; номера вида (2.3) --- номера этого отчёта. Номера "
+            r"появление того же номера, а <<i.c.>>, как в (15, i.c.), --- стационарное начальное "
+            r"условие, которое статья приводит после этого уравнения; номера вида (2.3) --- номера "
+            r"этого отчёта. Номера "
             r"рисунков статьи всегда указаны как <<рис.~2 статьи>>.",
         ),
     ]
