@@ -217,7 +217,8 @@ def _eq19() -> Row:
         sp.Rational(3, 2) * (1 + MP * m / pi),
         sp.Rational(3, 2) * (1 + MP * m / pi - sp.Rational(3, 8) * m**2),
         "Third interval at small depth",
-        "For n = 3 the eq.-(13) factor ($\\varepsilon = +1$, the shape of eqs. 8-9) gives the upper edge and "
+        "For n = 3 the eq.-(13) factor ($\\varepsilon = +1$, the shape of eqs. 8-9) gives the "
+        "upper edge and "
         "the factor of opposite sign (eqs. 16-17) the lower one: for odd n the eq.-(13) factor is "
         "the "
         "lower edge when n = 1, 5, 9, ... and the upper edge when n = 3, 7, 11, ... (c_n = -sin(n "
@@ -336,7 +337,8 @@ def _threshold_row(label: str, n: int, title: str) -> Row:
         "engine's radicand R(theta = 0) = 0 (its threshold series "
         f"{'agrees' if same_as_radicand else 'does not agree'} with that of R(0) = 0 through "
         f"m^{terms}). But the threshold is where the interval shrinks to a point: a "
-        "double root, N = 0 and $dN/d\\theta$ = 0 together (the radicand and (q+1)^2 f(x)^2 touch), "
+        "double root, N = 0 and $dN/d\\theta$ = 0 together (the radicand and (q+1)^2 f(x)^2 "
+        "touch), "
         "and "
         f"the double root does not sit at exact tuning: $\\theta_* = "
         f"{sp.latex(threshold_series(n, 4 if n % 2 else 6, damping='paper').theta)} + \\dots$."
@@ -348,9 +350,11 @@ def _threshold_row(label: str, n: int, title: str) -> Row:
         rel = sp.simplify((b - a) / lam_tangent.coeff(m, 0))
         how = text + (
             f" So the threshold read off the printed condition is right through relative order "
-            f"m^{k - 1} and wrong at m^{k} (1/Q^{k // p_}): with 1/Q_min = $\\lambda(m)$ m^{p_}, the "
+            f"m^{k - 1} and wrong at m^{k} (1/Q^{k // p_}): with 1/Q_min = $\\lambda(m)$ m^{p_}, "
+            f"the "
             f"m^{k} coefficient "
-            f"of $\\lambda$ is ${sp.latex(a)}$ from the printed condition but ${sp.latex(b)}$ at the tangency "
+            f"of $\\lambda$ is ${sp.latex(a)}$ from the printed condition but ${sp.latex(b)}$ at "
+            f"the tangency "
             f"(relative difference ${sp.latex(rel)}$ m^{k}); the leading term, eq. "
             f"({'38' if label == '37' else '43'}), is right. The correct condition is the tangency "
             f"(paper model)."
@@ -419,7 +423,8 @@ def _mmin_row(label: str, n: int, printed_Qmin: sp.Expr, printed_mmin: sp.Expr, 
         f"scaling 1/Q ~ m^{1 if n % 2 else 2} and compared with the printed leading term, "
         "coefficient "
         "by coefficient in 1/Q. " + "; ".join(texts) + f". The two damping models part at relative "
-        f"order m^{gap} = 1/Q^{gap // p_} in the threshold (1/Q_min = $\\lambda(m)$ m^{p_}; exact: damped "
+        f"order m^{gap} = 1/Q^{gap // p_} in the threshold (1/Q_min = $\\lambda(m)$ m^{p_}; exact: "
+        f"damped "
         "frequencies sqrt(omega_i^2 - gamma^2) and their r, beta, w)."
     )
     return Row(
@@ -468,7 +473,8 @@ def _sec6_n3() -> Row:
     )
     how = (
         "Threshold of the third interval (tangency, paper model): m_min = pi/(2Q) at leading order "
-        f"({'agrees' if ok1 else 'differs'}); in general m_min = n pi/(6Q) + O(1/Q^3) for every odd n. Edges: with "
+        f"({'agrees' if ok1 else 'differs'}); in general m_min = n pi/(6Q) + O(1/Q^3) for every "
+        f"odd n. Edges: with "
         "s = sqrt(1 - m_min^2/m^2) (so m s = sqrt(m^2 - m_min^2)), the derived T/T_av = 3/2 -+ "
         "(3/(2 pi)) m s + O(m^2), which is (19) with m -> sqrt(m^2 - m_min^2) "
         f"({'agrees' if ok2 else 'differs: ' + '; '.join(texts)}) through order m, coefficient by "
@@ -503,7 +509,8 @@ def _near_compare(n: int, printed_Tav: sp.Expr, order: int):
         if not ok:
             ok_all = False
             texts.append(
-                f"{name} edge: coefficient of m^{k} printed ${sp.latex(a)}$, derived ${sp.latex(b)}$"
+                f"{name} edge: coefficient of m^{k} printed ${sp.latex(a)}$, derived "
+                f"${sp.latex(b)}$"
             )
     return ok_all, texts, verdicts
 
@@ -541,11 +548,14 @@ def _eq40() -> Row:
             "sqrt(1 - m_min^2/m^2), compared coefficient by coefficient in m at fixed m_min/m). "
             "The correct form is T_-+ = (T_av/2)(1 -+ (3/pi) sqrt(m^2 - m_min^2)), i.e. Delta "
             "T/T_av = "
-            f"-+ (3/(2 pi)) sqrt(m^2 - m_min^2) ({'agrees' if ok_c else 'differs'}), which is what Section 6 states "
+            f"-+ (3/(2 pi)) sqrt(m^2 - m_min^2) ({'agrees' if ok_c else 'differs'}), which is what "
+            f"Section 6 states "
             "((18) with m -> sqrt(m^2 - m_min^2)). The printed form fails the text's own check: at "
-            f"m_min = 0 it gives (1/2)(1 -+ m/pi) T_av, not (18) ({'it agrees with (18)' if ok18 else 'it differs from (18)'}; "
+            f"m_min = 0 it gives (1/2)(1 -+ m/pi) T_av, not (18) "
+            f"({'it agrees with (18)' if ok18 else 'it differs from (18)'}; "
             "coefficient "
-            f"of m printed ${sp.latex(a18)}$, (18) ${sp.latex(b18)}$). In the derivation before (40) the "
+            f"of m printed ${sp.latex(a18)}$, (18) ${sp.latex(b18)}$). In the derivation before "
+            f"(40) the "
             "last "
             "radicand term q(p-1)^2/p ~ (pi/(2Q))^2 equals 9 m_min^2, not m_min^2, so the radicand "
             "is "
@@ -553,7 +563,8 @@ def _eq40() -> Row:
             "is "
             "meant. Beyond the printed order the friction shifts the centre: (T_+ + T_-)/(2 T_av) "
             "- 1/2 "
-            f"= ${sp.latex(next_term(paper_c, m, 1))}$ (paper model) = -1/(8 Q^2) at leading order, "
+            f"= ${sp.latex(next_term(paper_c, m, 1))}$ (paper model) = -1/(8 Q^2) at leading "
+            f"order, "
             f"${sp.latex(next_term(exact_c, m, 1))}$ (exact model) = -1/(16 Q^2)."
         )
     return Row(

@@ -17,8 +17,8 @@ ENTRIES: tuple[tuple[str, str, str], ...] = (
     (
         "butikov2",
         r"E.\,I.~Butikov, \emph{Pendulum with modulated length.~II. Regions of parametric "
-        r"excitation} (in Russian), Saint Petersburg State University. The paper this report derives and "
-        r"checks.",
+        r"excitation} (in Russian), Saint Petersburg State University. The paper this report "
+        r"derives and checks.",
         r"Е.\,И.~Бутиков, \emph{Маятник с модулируемой длиной.~II. Области параметрического "
         r"возбуждения}, Санкт-Петербургский государственный университет. Статья, которую этот "
         r"отчёт выводит и проверяет.",
@@ -55,10 +55,12 @@ ENTRIES: tuple[tuple[str, str, str], ...] = (
     ),
     (
         "meissner",
-        r"E.~Meissner, \emph{Ueber Sch{\"u}ttelerscheinungen in Systemen mit periodisch ver{\"a}nderlicher "
-        r"Elastizit{\"a}t}, Schweizerische Bauzeitung \textbf{72} (1918): the square-wave (Meissner) "
-        r"equation.",
-        r"E.~Meissner, \emph{Ueber Sch{\"u}ttelerscheinungen in Systemen mit periodisch ver{\"a}nderlicher "
+        r"E.~Meissner, "
+        r"\emph{Ueber Sch{\"u}ttelerscheinungen in Systemen mit periodisch ver{\"a}nderlicher "
+        r"Elastizit{\"a}t}, Schweizerische Bauzeitung \textbf{72} (1918): the square-wave "
+        r"(Meissner) equation.",
+        r"E.~Meissner, "
+        r"\emph{Ueber Sch{\"u}ttelerscheinungen in Systemen mit periodisch ver{\"a}nderlicher "
         r"Elastizit{\"a}t}, Schweizerische Bauzeitung \textbf{72} (1918): уравнение Мейснера "
         r"(прямоугольная модуляция жёсткости).",
     ),

@@ -49,7 +49,8 @@ TEXTS: dict[str, tuple[str, str]] = {
         "The determinant of the two conditions vanishes.",
         "Определитель двух условий равен нулю.",
     ),
-    "product to sum; divide by (1-m)^2 omega_2; q = (1+m)^2 omega_1 / ((1-m)^2 omega_2) (eq. 14).": (
+    "product to sum; divide by (1-m)^2 omega_2; "
+    "q = (1+m)^2 omega_1 / ((1-m)^2 omega_2) (eq. 14).": (
         r"Products written as sums, divided by $(1-m)^2\omega_2$, with "
         r"$q = \frac{(1+m)^2\omega_1}{(1-m)^2\omega_2}$ (eq. 14).",
         r"Произведения записаны как суммы, деление на $(1-m)^2\omega_2$, где "

@@ -88,6 +88,8 @@ def _assemble(ctx: Context, sections, lang: str, command: str | None) -> Assembl
         seconds = time.perf_counter() - start
         timings.append((name, seconds))
         ctx.log(f"report: [{k}/{len(sections)}] {module.TITLE}: {seconds:.1f} s")
+        if getattr(module, "NEW_PAGE", False):  # the floats of the sections before end here
+            body.append(Latex(r"\clearpage"))
         body.append(section(module.TITLE, module.LABEL))
         body.append(part.body)
         for fname, data in part.figures:
@@ -138,8 +140,9 @@ def build_report(
     command: str | None = None,
 ) -> BuildResult:
     """Assemble the report and write it to ``out_dir`` (source, figures and, if a TeX engine is
-    found or ``compile=True``, the PDF), in ``lang`` (``"en"`` or ``"ru"``; the Russian report
-    is ``paramres-report-ru.tex``/``.pdf``); ``command`` is printed under the title.  ``compile=None`` compiles when an engine is installed;
+    found or ``compile=True``, the PDF), in ``lang`` (``"en"`` or ``"ru"``; the Russian report is
+    ``paramres-report-ru.tex``/``.pdf``, compiled only where TeX has Cyrillic fonts); ``command``
+    is printed under the title.  ``compile=None`` compiles when an engine is installed;
     ``compile=True`` fails if none is.  ``cache_dir`` is the cache directory of the engine and the
     report (see :mod:`analytic.cache`); ``None`` computes everything afresh (a cold build)."""
     log = log or (lambda msg: print(msg, file=sys.stderr, flush=True))

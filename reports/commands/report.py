@@ -107,7 +107,8 @@ def run(args) -> int:
         )
     else:
         print(
-            f"wrote {result.directory / tex_name(args.lang)} and {len(result.files) - 1} figure file(s) "
+            f"wrote {result.directory / tex_name(args.lang)} and {len(result.files) - 1} figure "
+            f"file(s) "
             f"in {seconds:.1f} s"
         )
         if not args.no_pdf:

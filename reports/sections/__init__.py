@@ -1,7 +1,11 @@
 """The report's sections, one module each, in reading order.
 
 Every section module defines ``TITLE``, ``LABEL`` and ``build(ctx) -> Part``: the section's LaTeX
-body (without its heading) and the figures it draws, computed from the engine's objects.  A section
+body (without its heading) and the figures it draws, computed from the engine's objects.  Optional:
+``CACHED = False`` for a section that is cheap to build (it is not stored in the cache), and
+``NEW_PAGE = True`` for one that starts on a new page.  A new chapter is one more module here and
+one more name in :data:`SECTIONS`; prose in both languages is written with
+:func:`reports.i18n.say`.  A section
 whose engine parts are not present in this installation says so in the report instead of guessing
 (:func:`missing`).
 """

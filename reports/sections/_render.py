@@ -11,7 +11,9 @@ from ..latex import (
     Latex,
     equation,
     equation_lines,
+    fit,
     inline,
+    math,
     math_lines,
     paragraph,
     prose,
@@ -19,6 +21,7 @@ from ..latex import (
     section,
     slashed,
     text,
+    visible_width,
 )
 
 __all__ = ["verdict", "check", "link", "chain", "tag_of", "note", "CHECKS_STATED_ONCE"]
@@ -33,6 +36,10 @@ CHECKS_STATED_ONCE = (
 )
 
 
+#: a factor wider than this (characters, see :func:`reports.latex.visible_width`) is displayed
+INLINE_FACTOR_WIDTH = 24
+
+
 def verdict(v, config: Config) -> Latex:
     """How an identity was decided, for a reader: symbolic, up to which factor, or numeric."""
     if not v.holds:
@@ -40,9 +47,14 @@ def verdict(v, config: Config) -> Latex:
     if v.route == "symbolic":
         factor = getattr(v, "factor", None)
         if factor is not None and factor != 1:
+            shown = slashed(factor, config)
+            if visible_width(shown) > INLINE_FACTOR_WIDTH:  # too long for the line: displayed
+                shown = Latex(r"\[" + fit(math(factor, config), config).raw + r"\]")
+            else:
+                shown = inline(shown)
             return paragraph(
                 "holds up to the non-vanishing factor",
-                inline(slashed(factor, config)),
+                shown,
                 "(proved symbolically)",
             )
         return Latex("")

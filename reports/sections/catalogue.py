@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import re
 
+from ..i18n import say
 from ..latex import (
     Config,
     Latex,
@@ -18,7 +19,6 @@ from ..latex import (
     table,
     text,
 )
-from ..i18n import say
 from ..phrasebook import SAME_EQUATION
 from . import Context, Part, shared
 

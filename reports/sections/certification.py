@@ -9,6 +9,8 @@ from . import Context, Part
 TITLE = "How the numbers are certified"
 LABEL = "sec:certification"
 CACHED = False
+#: start on a new page, after the figures of the time domain
+NEW_PAGE = True
 
 
 def t(en: str, ru: str) -> Latex:
@@ -60,7 +62,8 @@ def build(ctx: Context) -> Part:
             r"\emph{What ``proven'' means here.} A number printed as certified carries only "
             r"digits that its enclosure supports: the exact root of the equation the engine "
             r"derived, for the exact rational inputs ($m$, $Q$) given, lies within half a unit "
-            r"of the last printed digit (plus the rounding of the print itself). This rests on: the symbolic derivation of "
+            r"of the last printed digit (plus the rounding of the print itself). This rests on: "
+            r"the symbolic derivation of "
             r"that equation from the model (SymPy~\cite{sympy}, each step checked as described "
             r"with the derivations, and cross-checked at random points against the independent "
             r"Floquet route); the correctness of Arb's ball arithmetic; and the correctness of "

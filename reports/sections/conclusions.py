@@ -38,13 +38,15 @@ def build(ctx: Context) -> Part:
             rf"Beyond the paper, the closings of the intervals follow one rule with no "
             rf"exceptions ({len(cl)} closings up to order {cl.max_order}); the thresholds with "
             rf"friction have closed forms for every odd and every even order; the two models of "
-            rf"friction agree at leading order and part beyond it (Section~\ref{{sec:expansions}}); and the "
+            rf"friction agree at leading order and part beyond it "
+            rf"(Section~\ref{{sec:expansions}}); and the "
             rf"third-order island at $Q = {f['island_Q']}$ is confirmed, with proven ends, close "
             rf"to the depths the paper reads off its figure.",
             rf"Помимо статьи: смыкания интервалов подчиняются одному правилу без исключений "
             rf"({len(cl)} смыканий до порядка {cl.max_order}); пороги с трением имеют замкнутый "
             rf"вид для всех нечётных и всех чётных порядков; две модели трения совпадают в главном "
-            rf"порядке и расходятся в следующих (раздел~\ref{{sec:expansions}}); <<остров>> третьего порядка "
+            rf"порядке и расходятся в следующих (раздел~\ref{{sec:expansions}}); <<остров>> "
+            rf"третьего порядка "
             rf"при $Q = {f['island_Q']}$ подтверждён, с доказанными концами, вблизи глубин, "
             rf"которые статья снимает с рисунка.",
         ),

@@ -95,7 +95,8 @@ def build(ctx: Context) -> Part:
             r"are the paper's; a prime, as in (15$'$), marks the paper's equation for the other "
             r"edge or a second appearance of the same number, and ``i.c.'', as in (15, i.c.), the "
             r"stationary initial condition the paper states after that equation; numbers such as "
-            r"(2.3) are this report's. Figure numbers of the paper are always written ``the paper's Fig.~2''.",
+            r"(2.3) are this report's. Figure numbers of the paper are always written ``the "
+            r"paper's Fig.~2''.",
             r"В разделе~\ref{sec:summary} собраны результаты. Раздел~\ref{sec:model} задаёт "
             r"модель и обозначения; следующие разделы содержат вывод, разбор результатов статьи "
             r"по одному, ряды, смыкания, диаграммы, точность методов и моделирование; "

@@ -17,8 +17,8 @@ from analytic.model import (
     segment,
 )
 
-from ..latex import Latex, equation, inline, math, paragraph, prose, raw, section, table, text
 from ..i18n import say
+from ..latex import Latex, equation, inline, math, paragraph, prose, raw, section, table, text
 from . import Context, Part
 
 TITLE = "The model and conventions"
