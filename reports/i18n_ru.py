@@ -285,9 +285,169 @@ PHRASES: dict[str, str] = {
     "Exact tuning": "Точная настройка",
     "Average period": "Средний период",
     "Naive resonance condition": "Простейшее условие резонанса",
+    # expansions
+    "Each edge is the root of one per-edge factor (": (
+        "Каждая граница --- корень одного множителя ("
+    ),
+    "The same computation with the order kept as a symbol": (
+        "То же вычисление с порядком в виде символа"
+    ),
+    "Width and centre for odd orders, leading terms:": (
+        "Ширина и центр для нечётных порядков, главные члены:"
+    ),
+    "Width and centre for even orders, leading terms:": (
+        "Ширина и центр для чётных порядков, главные члены:"
+    ),
+    "With friction an interval exists only above a threshold depth m_min(Q). At the threshold the "
+    "instability indicator has a double zero in theta (a tangency); in the distinguished scaling "
+    "1/Q = lambda m^p (p = 1 for odd orders, 2 for even) both conditions are solved as series and "
+    "reverted. Both damping models:": (
+        r"С трением интервал существует лишь при глубине модуляции выше пороговой "
+        r"$m_{\min}(Q)$. На пороге индикатор неустойчивости имеет двукратный нуль по $\theta$ "
+        r"(касание); в выделенном масштабе $1/Q = \lambda m^p$ ($p = 1$ для нечётных порядков, 2 "
+        r"для чётных) оба условия решаются в виде рядов, которые затем обращаются. Обе модели "
+        r"трения:"
+    ),
+    "Above the threshold the edges are series in m at fixed s = sqrt(1 - (m_min0/m)^(2p)), with "
+    "m_min0 the leading threshold; the paper's eqs. (40) and (45) are the first terms. Both "
+    "damping "
+    "models, in units of T_0:": (
+        r"Выше порога границы --- ряды по $m$ при фиксированном "
+        r"$s = \sqrt{1 - (m_{\min,0}/m)^{2p}}$, где $m_{\min,0}$ --- главный член порога; ур. (40) "
+        r"и (45) статьи --- первые члены. Обе модели трения, в единицах $T_0$:"
+    ),
+    # closings
+    "The paper shows closings of the third, fourth and fifth intervals in its Fig. 2 and links "
+    "them to": "Статья показывает смыкания третьего, четвёртого и пятого интервалов на рис. 2 и "
+    "связывает их с",
+    "(its Section 5); the theorem says these are instances of one rule and that there are no "
+    "others. The derivation, each step checked by the engine:": (
+        "(разд. 5); теорема утверждает, что это частные случаи одного правила и других нет. "
+        "Вывод, каждый шаг которого проверен программой:"
+    ),
+    r"Table~\ref{tab:closings} lists every closing of the orders $1,\dots,12$. The period is "
+    r"printed with 40 correctly rounded significant digits from an interval enclosure; the last "
+    r"column is the independent check: the monodromy matrix built from the free oscillations and "
+    r"the jumps (\texttt{verify.floquet}, 50 digits) at that depth and period, against "
+    r"$(-1)^n I$.": (
+        r"В таблице~\ref{tab:closings} перечислены все смыкания порядков $1,\dots,12$. Период "
+        r"напечатан с 40 правильно округлёнными значащими цифрами по интервальному включению; "
+        r"последний столбец --- независимая проверка: матрица монодромии, построенная из "
+        r"свободных колебаний и скачков (\texttt{verify.floquet}, 50 знаков) при этих глубине и "
+        r"периоде, в сравнении с $(-1)^n I$."
+    ),
+    # diagrams
+    "redraws the paper's Fig. 2: the first six intervals of instability in the plane of the "
+    "modulation period and the depth, without friction, from the certified-equation solver in "
+    "double precision (every edge is a root of one per-edge equation,": (
+        "воспроизводит рис. 2 статьи: первые шесть интервалов неустойчивости на плоскости "
+        "(период модуляции, глубина модуляции) без трения, по решениям уравнений границ в "
+        "двойной точности (каждая граница --- корень одного уравнения границы,"
+    ),
+    "redraws the paper's Fig. 8: the first three intervals without friction and for": (
+        "воспроизводит рис. 8 статьи: первые три интервала без трения и при"
+    ),
+    ", in the paper's damping model (left, which is what the paper computed) and in the exact "
+    "model (right). Friction raises a threshold below which an interval does not exist and "
+    "swallows the neighbourhood of every closing.": (
+        ", в модели трения статьи (слева; её и рассчитывала статья) и в точной модели (справа). "
+        "Трение создаёт порог, ниже которого интервала нет, и поглощает окрестность каждого "
+        "смыкания."
+    ),
+    # performance
+    "The paper's pictures of stationary oscillations, redrawn from simulations that follow the "
+    "pendulum through the jumps half period by half period (exact piecewise propagation of the "
+    "linear model, started on a certified edge from the stationary initial condition of ": (
+        "Рисунки статьи со стационарными колебаниями, перестроенные по моделированию, которое "
+        "ведёт маятник через скачки полупериод за полупериодом (точное кусочное решение "
+        "линейной модели, начатое на гарантированной границе со стационарного начального "
+        "условия из "
+    ),
+    "). The line above each run states its closure error after one (anti)period: the state "
+    "returns to where it started to the working precision, which is the time-domain check that "
+    "the edge and the initial condition are right.": (
+        "). Строка над каждым прогоном указывает ошибку замыкания через один (анти)период: "
+        "состояние возвращается к исходному с рабочей точностью, что и есть проверка во времени "
+        "правильности границы и начального условия."
+    ),
+    # the catalogue's titles
+    "Equations of motion in each half": "Уравнения движения на каждом полупериоде",
+    "Angular-momentum jump": "Скачок момента импульса",
+    "Closings of intervals": "Смыкания интервалов",
+    "Third interval with friction": "Третий интервал с трением",
+    "Average frequency and period at small depth": (
+        "Средние частота и период при малой глубине модуляции"
+    ),
+    "Segments on the lower edge of the first interval": (
+        "Отрезки на нижней границе первого интервала"
+    ),
+    "Angle continuity at t = 0": "Непрерывность угла при $t = 0$",
+    "Momentum jump at t = 0": "Скачок момента импульса при $t = 0$",
+    "Determinant of (10)-(11)": "Определитель (10)--(11)",
+    "Product-to-sum form of (12)": "(12) с произведениями, записанными как суммы",
+    "q as a function of m": "$q$ как функция $m$",
+    "Fixed-point form for Delta T (first interval)": (
+        "Форма для итераций по $\\Delta T$ (первый интервал)"
+    ),
+    "Left edge of the third interval (section 3.2)": "Левая граница третьего интервала (разд. 3.2)",
+    "Stationary initial condition on the lower edge (after eq. 15)": (
+        "Стационарное начальное условие на нижней границе (после ур. 15)"
+    ),
+    "Segments on the upper edge of the first interval": (
+        "Отрезки на верхней границе первого интервала"
+    ),
+    "First interval at small depth": "Первый интервал при малой глубине модуляции",
+    "Third interval at small depth": "Третий интервал при малой глубине модуляции",
+    "Asymmetry and width of the third interval": "Асимметрия и ширина третьего интервала",
+    "Segments on the lower edge of the second interval": (
+        "Отрезки на нижней границе второго интервала"
+    ),
+    "Angle continuity at t = 0 (second interval)": (
+        "Непрерывность угла при $t = 0$ (второй интервал)"
+    ),
+    "Momentum jump at t = 0 (second interval)": (
+        "Скачок момента импульса при $t = 0$ (второй интервал)"
+    ),
+    "Determinant of (22)-(23)": "Определитель (22)--(23)",
+    "Product-to-sum form of (24)": "(24) с произведениями, записанными как суммы",
+    "Fixed-point form for Delta T (second interval)": (
+        "Форма для итераций по $\\Delta T$ (второй интервал)"
+    ),
+    "Stationary initial condition on the lower edge of the second interval": (
+        "Стационарное начальное условие на нижней границе второго интервала"
+    ),
+    "Second interval at small depth": "Второй интервал при малой глубине модуляции",
+    "Damped segments (paper model)": "Отрезки с затуханием (модель статьи)",
+    "Periodicity conditions, odd orders with friction": (
+        "Условия периодичности, нечётные порядки с трением"
+    ),
+    "Homogeneous system for A, B": "Однородная система для $A$, $B$",
+    "Notation C_i, S_i": "Обозначения $C_i$, $S_i$",
+    "Determinant of (32)": "Определитель (32)",
+    "Product to sum": "Произведения как суммы",
+    "Boundary equation, odd orders with friction": "Уравнение границы, нечётные порядки с трением",
+    "Threshold condition of the first interval": "Условие порога первого интервала",
+    "Threshold of the first interval": "Порог первого интервала",
+    "Fixed-point form with friction (first interval)": (
+        "Форма для итераций с трением (первый интервал)"
+    ),
+    "Cross-reference after eq. (39)": "Ссылка после ур. (39)",
+    "First interval near the threshold": "Первый интервал вблизи порога",
+    "Cross-reference before eq. (40)": "Ссылка перед ур. (40)",
+    "Boundary equation, even orders with friction": "Уравнение границы, чётные порядки с трением",
+    "Threshold condition of the second interval": "Условие порога второго интервала",
+    "Threshold of the second interval": "Порог второго интервала",
+    "Fixed-point form with friction (second interval)": (
+        "Форма для итераций с трением (второй интервал)"
+    ),
+    "Cross-reference after eq. (44)": "Ссылка после ур. (44)",
+    "Second interval near the threshold": "Второй интервал вблизи порога",
 }
 
 PATTERNS: list[tuple[str, object]] = [
+    (r"Figure~\\ref\{([^}]*)\}", r"Рис.~\\ref{\1}"),
+    (r"Table~\\ref\{([^}]*)\}", r"Таблица~\\ref{\1}"),
+    (r"Section~\\ref\{([^}]*)\}", r"Раздел~\\ref{\1}"),
     (
         r"The paper's numbered results: (\d+) checked, (\d+) agree with the derivation, (\d+) "
         r"differ \(misprints or wrong statements; the correct forms are given below\)\. Click an "
