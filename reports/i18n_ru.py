@@ -442,6 +442,38 @@ PHRASES: dict[str, str] = {
     ),
     "Cross-reference after eq. (44)": "Ссылка после ур. (44)",
     "Second interval near the threshold": "Второй интервал вблизи порога",
+    # the paper's time-domain figures
+    "Stationary oscillation on the lower edge of the first interval (near $T = T_{av}/2$)": (
+        "Стационарные колебания на нижней границе первого интервала (вблизи $T = T_{av}/2$)"
+    ),
+    "Stationary oscillation on the upper edge of the first interval": (
+        "Стационарные колебания на верхней границе первого интервала"
+    ),
+    "Stationary oscillations on the lower and upper edges of the third interval "
+    "($T \\approx 3T_{av}/2$)": (
+        "Стационарные колебания на нижней и верхней границах третьего интервала "
+        "($T \\approx 3T_{av}/2$)"
+    ),
+    "Growth of the oscillation at the second-order resonance ($T \\approx T_{av}$)": (
+        "Нарастание колебаний при резонансе второго порядка ($T \\approx T_{av}$)"
+    ),
+    "Stationary oscillation on the lower edge of the second interval (near $T = T_{av}$)": (
+        "Стационарные колебания на нижней границе второго интервала (вблизи $T = T_{av}$)"
+    ),
+    "Closing of the third interval: $T_1 : T_2 = 2 : 1$ ($m = 3/5$), every solution is "
+    "periodic": (
+        "Смыкание третьего интервала: $T_1 : T_2 = 2 : 1$ ($m = 3/5$), любое решение "
+        "периодично"
+    ),
+    "Stationary oscillation on the lower edge of the first interval with friction ($Q = 3$)": (
+        "Стационарные колебания на нижней границе первого интервала с трением ($Q = 3$)"
+    ),
+    # checks
+    r"\emph{Check:}": r"\emph{Проверка:}",
+    "holds up to the non-vanishing factor": "выполняется с точностью до ненулевого множителя",
+    "(proved symbolically)": "(доказано символьно)",
+    r"\emph{Printed:}": r"\emph{В статье:}",
+    r"\emph{Derived:}": r"\emph{Выведено:}",
 }
 
 PATTERNS: list[tuple[str, object]] = [

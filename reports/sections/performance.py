@@ -8,7 +8,7 @@ import math
 from pathlib import Path
 
 from .. import figures
-from ..i18n import say
+from ..i18n import say, tr
 from ..latex import Latex, figure, paragraph, raw, section, table, text
 from . import Context, Part
 
@@ -50,7 +50,8 @@ def _time_domain(ctx: Context) -> tuple[list[Latex], list[tuple[str, bytes]]]:
         ),
     ]
     for n in SCENES:
-        caption = timeplots.PAPER_SCENES[n].caption
+        caption = tr(timeplots.PAPER_SCENES[n].caption)
+        caption = caption[:1].lower() + caption[1:]
         blocks.append(
             figure(
                 f"figures/paper-fig{n}.pdf",
