@@ -524,6 +524,42 @@ PHRASES: dict[str, str] = {
 
 PATTERNS: list[tuple[str, object]] = [
     (
+        r"The third-order island at Q = (\d+) \(Figure",
+        r"Остров третьего порядка при $Q = \1$ (рис.",
+    ),
+    (
+        r"The paper says the region vanishes above about (\d+)% depth and returns above about "
+        r"(\d+)%\. The engine's existence ranges, each end proven by interval arithmetic "
+        r"\((\d+) digits\), are in Table",
+        r"Статья говорит, что область исчезает при глубине модуляции выше примерно \1% и "
+        r"появляется снова выше примерно \2%. Области существования, найденные программой "
+        r"(каждый конец доказан интервальной арифметикой, \3 знаков), приведены в таблице",
+    ),
+    (
+        r"it vanishes at ([\d.]+)% in the paper model \((within|not within) one percentage point "
+        r"of the paper's (\d+)%\); it returns at ([\d.]+)% in the paper model \((within|not "
+        r"within) one percentage point of the paper's (\d+)%\); the exact model gives ([\d.]+)% "
+        r"and ([\d.]+)%\.",
+        lambda m: (
+            f"в модели статьи она исчезает при {m[1]}% "
+            f"({'в пределах' if m[2] == 'within' else 'вне'} одного процентного пункта от "
+            f"{m[3]}% статьи) и появляется снова при {m[4]}% "
+            f"({'в пределах' if m[5] == 'within' else 'вне'} одного процентного пункта от "
+            f"{m[6]}% статьи); точная модель даёт {m[7]}% и {m[8]}%."
+        ),
+    ),
+    (
+        r"Against the paper: (.*)\. Among the first six intervals \(those of its Fig\. 2\) the "
+        r"theorem also gives (.*), which lie at depths above those the paper discusses\.",
+        lambda m: (
+            "Сравнение со статьёй: "
+            + m[1].replace(" closes orders ", " смыкает порядки ").replace(" at m = ", " при m = ")
+            + ". Среди первых шести интервалов (рис. 2 статьи) теорема даёт ещё "
+            + m[2]
+            + "; они лежат при глубинах модуляции больших, чем обсуждаемые в статье."
+        ),
+    ),
+    (
         r"Measured by paramres bench \((.*)\)\.",
         r"Измерено командой paramres bench (\1).",
     ),
