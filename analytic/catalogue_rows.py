@@ -189,10 +189,10 @@ def _eq23() -> Row:
         "agrees" if ok else "differs",
         _latex(pr),
         _latex(derived),
-        "Derived from J phi'' = torque with J = M l^2, gravity -M g l sin(phi) and drag -c l^2 "
-        "phi' on "
-        "the bob: 2 gamma = c/M does not depend on l (same in both halves), omega_i^2 = g/l_i with "
-        "l_i = l_0 (1 +- m); decided symbolically.",
+        r"Derived from $J\ddot\varphi = $ torque with $J = Ml^2$, the torque of gravity "
+        r"$-Mgl\sin\varphi$ and of the drag $-cl^2\dot\varphi$ on the bob: $2\gamma = c/M$ does "
+        r"not depend on $l$ (the same in both halves), $\omega_i^2 = g/l_i$ with "
+        r"$l_{1,2} = l_0(1 \pm m)$; decided symbolically.",
         "Equations of motion in each half",
     )
 
@@ -207,7 +207,10 @@ def _eq4() -> Row:
         sp.expand(J1 / (Mb * l0**2) - inertia(1)) + sp.expand(J2 / (Mb * l0**2) - inertia(2))
     )
     r = _compare_row(
-        "4", "Angular-momentum jump", derived, "Angular momentum J phi' with J = M l^2 conserved."
+        "4",
+        "Angular-momentum jump",
+        derived,
+        r"The angular momentum $J\dot\varphi$ with $J = Ml^2$ is conserved.",
     )
     return (
         r

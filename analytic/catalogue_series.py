@@ -141,8 +141,8 @@ def _eq7() -> Row:
         "The exact form omega_av = (omega_0/2)(1/sqrt(1+m) + 1/sqrt(1-m)) follows from the model "
         f"({v0.describe()}); its series (and that of T_av/T_0 = 1/w) agree with the printed ones "
         f"through m^3 ({_route(vs1 + vs2)}), the printed order being m^2. Next terms: "
-        f"omega_av/omega_0 {sp.sstr(next_term(w, m, 3))}, T_av/T_0 "
-        f"{sp.sstr(next_term(invw, m, 3))}."
+        f"omega_av/omega_0 ${sp.latex(next_term(w, m, 3))}$, T_av/T_0 "
+        f"${sp.latex(next_term(invw, m, 3))}$."
     )
     return Row(
         "7",
@@ -181,8 +181,8 @@ def _edge_row(
             "T_av "
             f"and of T_0 ({_route(verdicts)}, coefficient by coefficient). The derived series go "
             "on: "
-            f"T_-/T_av next term {sp.sstr(next_term(d['Tav']['lower'], m, 2))}, "
-            f"T_-/T_0 next term {sp.sstr(next_term(d['T0']['lower'], m, 2))} "
+            f"T_-/T_av next term ${sp.latex(next_term(d['Tav']['lower'], m, 2))}$, "
+            f"T_-/T_0 next term ${sp.latex(next_term(d['T0']['lower'], m, 2))}$ "
             f"(any order: paramres series --order {n} --terms K)."
         )
     else:
@@ -205,7 +205,7 @@ def _eq18() -> Row:
         sp.Rational(1, 2) * (1 + MP * 3 * m / pi),
         sp.Rational(1, 2) * (1 + MP * 3 * m / pi - sp.Rational(3, 8) * m**2),
         "First interval at small depth",
-        "The lower edge is the root of the eq.-(13) factor (eps = +1) for n = 1.",
+        "The lower edge is the root of the eq.-(13) factor ($\\varepsilon = +1$) for n = 1.",
     )
 
 
@@ -217,7 +217,8 @@ def _eq19() -> Row:
         sp.Rational(3, 2) * (1 + MP * m / pi),
         sp.Rational(3, 2) * (1 + MP * m / pi - sp.Rational(3, 8) * m**2),
         "Third interval at small depth",
-        "For n = 3 the eq.-(13) factor (eps = +1, the shape of eqs. 8-9) gives the UPPER edge and "
+        "For n = 3 the eq.-(13) factor ($\\varepsilon = +1$, the shape of eqs. 8-9) gives the "
+        "upper edge and "
         "the factor of opposite sign (eqs. 16-17) the lower one: for odd n the eq.-(13) factor is "
         "the "
         "lower edge when n = 1, 5, 9, ... and the upper edge when n = 3, 7, 11, ... (c_n = -sin(n "
@@ -260,9 +261,9 @@ def _eq19_shift() -> Row:
         f"({_route(vs1 + vs2 + vs3)}). In general the centre shift is -(3n/16) m^2 T_0 for every "
         "order (it is the shift of n T_av/2) and the leading width 3m/pi T_av for every odd "
         "order. "
-        f"Next terms: centre {sp.sstr(next_term(centre, m, 2))}, width "
-        f"{sp.sstr(next_term(width3, m, 1))} "
-        f"(first interval: {sp.sstr(next_term(width1, m, 1))})."
+        f"Next terms: centre ${sp.latex(next_term(centre, m, 2))}$, width "
+        f"${sp.latex(next_term(width3, m, 1))}$ "
+        f"(first interval: ${sp.latex(next_term(width1, m, 1))}$)."
     )
     if not ok:
         how = "Differs: " + how
@@ -333,14 +334,14 @@ def _threshold_row(label: str, n: int, title: str) -> Row:
     where = "T = T_av/2" if label == "37" else "T = T_av"
     text = (
         f"Read at exact tuning ({where}), as the text does, the printed condition is exactly the "
-        "engine's radicand R(theta = 0) = 0 (its threshold series agrees with that of R(0) = 0 "
-        "through "
-        f"m^{terms}: {same_as_radicand}). But the threshold is where the interval shrinks to a "
-        "point: a "
-        "double root, N = 0 and dN/dtheta = 0 together (the radicand and (q+1)^2 f(x)^2 touch), "
+        "engine's radicand R(theta = 0) = 0 (its threshold series "
+        f"{'agrees' if same_as_radicand else 'does not agree'} with that of R(0) = 0 through "
+        f"m^{terms}). But the threshold is where the interval shrinks to a point: a "
+        "double root, N = 0 and $dN/d\\theta$ = 0 together (the radicand and (q+1)^2 f(x)^2 "
+        "touch), "
         "and "
-        f"the double root does not sit at exact tuning: theta* = "
-        f"{sp.sstr(threshold_series(n, 4 if n % 2 else 6, damping='paper').theta)} + ... ."
+        f"the double root does not sit at exact tuning: $\\theta_* = "
+        f"{sp.latex(threshold_series(n, 4 if n % 2 else 6, damping='paper').theta)} + \\dots$."
     )
     if ok:
         how = text + f" The two thresholds nevertheless agree through m^{terms}."
@@ -349,10 +350,12 @@ def _threshold_row(label: str, n: int, title: str) -> Row:
         rel = sp.simplify((b - a) / lam_tangent.coeff(m, 0))
         how = text + (
             f" So the threshold read off the printed condition is right through relative order "
-            f"m^{k - 1} and wrong at m^{k} (1/Q^{k // p_}): with 1/Q_min = lam(m) m^{p_}, the "
+            f"m^{k - 1} and wrong at m^{k} (1/Q^{k // p_}): with 1/Q_min = $\\lambda(m)$ m^{p_}, "
+            f"the "
             f"m^{k} coefficient "
-            f"of lam is {sp.sstr(a)} from the printed condition but {sp.sstr(b)} at the tangency "
-            f"(relative difference {sp.sstr(rel)} m^{k}); the leading term, eq. "
+            f"of $\\lambda$ is ${sp.latex(a)}$ from the printed condition but ${sp.latex(b)}$ at "
+            f"the tangency "
+            f"(relative difference ${sp.latex(rel)}$ m^{k}); the leading term, eq. "
             f"({'38' if label == '37' else '43'}), is right. The correct condition is the tangency "
             f"(paper model)."
         )
@@ -399,7 +402,7 @@ def _mmin_row(label: str, n: int, printed_Qmin: sp.Expr, printed_mmin: sp.Expr, 
         what = "m_min" if n % 2 else "m_min^2"
         texts.append(
             f"{model} model: leading term {'agrees' if ok and okQ else 'differs'}; next term of "
-            f"{what}: {sp.sstr(nxt)}"
+            f"{what}: ${sp.latex(nxt)}$"
         )
         if model == "paper":
             derived_show = [
@@ -415,12 +418,13 @@ def _mmin_row(label: str, n: int, printed_Qmin: sp.Expr, printed_mmin: sp.Expr, 
     p_ = scaling_power(n)
     gap = model_gap(n, 4)["threshold"]
     how = (
-        "Threshold = tangency of the normal form (N = 0, dN/dtheta = 0), solved in the "
+        "Threshold = tangency of the normal form (N = 0, $dN/d\\theta$ = 0), solved in the "
         "distinguished "
         f"scaling 1/Q ~ m^{1 if n % 2 else 2} and compared with the printed leading term, "
         "coefficient "
         "by coefficient in 1/Q. " + "; ".join(texts) + f". The two damping models part at relative "
-        f"order m^{gap} = 1/Q^{gap // p_} in the threshold (1/Q_min = lam(m) m^{p_}; exact: damped "
+        f"order m^{gap} = 1/Q^{gap // p_} in the threshold (1/Q_min = $\\lambda(m)$ m^{p_}; exact: "
+        f"damped "
         "frequencies sqrt(omega_i^2 - gamma^2) and their r, beta, w)."
     )
     return Row(
@@ -469,12 +473,13 @@ def _sec6_n3() -> Row:
     )
     how = (
         "Threshold of the third interval (tangency, paper model): m_min = pi/(2Q) at leading order "
-        f"(agrees: {ok1}); in general m_min = n pi/(6Q) + O(1/Q^3) for every odd n. Edges: with "
+        f"({'agrees' if ok1 else 'differs'}); in general m_min = n pi/(6Q) + O(1/Q^3) for every "
+        f"odd n. Edges: with "
         "s = sqrt(1 - m_min^2/m^2) (so m s = sqrt(m^2 - m_min^2)), the derived T/T_av = 3/2 -+ "
         "(3/(2 pi)) m s + O(m^2), which is (19) with m -> sqrt(m^2 - m_min^2) "
         f"({'agrees' if ok2 else 'differs: ' + '; '.join(texts)}) through order m, coefficient by "
         "coefficient in m at fixed m_min/m. The next order is a friction shift of the centre, "
-        f"{sp.sstr(next_term(sp.expand((d['lower']['Tav'] + d['upper']['Tav']) / 2), m, 1))} "
+        f"${sp.latex(next_term(sp.expand((d['lower']['Tav'] + d['upper']['Tav']) / 2), m, 1))}$ "
         "(s^2 - 1 = -m_min^2/m^2), which (19) does not have."
     )
     return Row(
@@ -504,7 +509,8 @@ def _near_compare(n: int, printed_Tav: sp.Expr, order: int):
         if not ok:
             ok_all = False
             texts.append(
-                f"{name} edge: coefficient of m^{k} printed {sp.sstr(a)}, derived {sp.sstr(b)}"
+                f"{name} edge: coefficient of m^{k} printed ${sp.latex(a)}$, derived "
+                f"${sp.latex(b)}$"
             )
     return ok_all, texts, verdicts
 
@@ -542,11 +548,14 @@ def _eq40() -> Row:
             "sqrt(1 - m_min^2/m^2), compared coefficient by coefficient in m at fixed m_min/m). "
             "The correct form is T_-+ = (T_av/2)(1 -+ (3/pi) sqrt(m^2 - m_min^2)), i.e. Delta "
             "T/T_av = "
-            f"-+ (3/(2 pi)) sqrt(m^2 - m_min^2) (agrees: {ok_c}), which is what Section 6 states "
+            f"-+ (3/(2 pi)) sqrt(m^2 - m_min^2) ({'agrees' if ok_c else 'differs'}), which is what "
+            f"Section 6 states "
             "((18) with m -> sqrt(m^2 - m_min^2)). The printed form fails the text's own check: at "
-            f"m_min = 0 it gives (1/2)(1 -+ m/pi) T_av, not (18) (agrees with (18): {ok18}; "
+            f"m_min = 0 it gives (1/2)(1 -+ m/pi) T_av, not (18) "
+            f"({'it agrees with (18)' if ok18 else 'it differs from (18)'}; "
             "coefficient "
-            f"of m printed {sp.sstr(a18)}, (18) {sp.sstr(b18)}). In the derivation before (40) the "
+            f"of m printed ${sp.latex(a18)}$, (18) ${sp.latex(b18)}$). In the derivation before "
+            f"(40) the "
             "last "
             "radicand term q(p-1)^2/p ~ (pi/(2Q))^2 equals 9 m_min^2, not m_min^2, so the radicand "
             "is "
@@ -554,8 +563,9 @@ def _eq40() -> Row:
             "is "
             "meant. Beyond the printed order the friction shifts the centre: (T_+ + T_-)/(2 T_av) "
             "- 1/2 "
-            f"= {sp.sstr(next_term(paper_c, m, 1))} (paper model) = -1/(8 Q^2) at leading order, "
-            f"{sp.sstr(next_term(exact_c, m, 1))} (exact model) = -1/(16 Q^2)."
+            f"= ${sp.latex(next_term(paper_c, m, 1))}$ (paper model) = -1/(8 Q^2) at leading "
+            f"order, "
+            f"${sp.latex(next_term(exact_c, m, 1))}$ (exact model) = -1/(16 Q^2)."
         )
     return Row(
         "40",
@@ -592,8 +602,8 @@ def _eq45() -> Row:
         + f" through m^3, coefficient by coefficient in m at fixed m_min/m ({_route(verdicts)}). "
         "In general T/T_av = n/2 -+ (3n/8) sqrt(m^4 - m_min^4) with the same m_min for every even "
         "n. "
-        f"Next order (paper model): lower {sp.sstr(next_term(d['lower']['Tav'], m, 3))}; "
-        f"exact model: lower {sp.sstr(next_term(e['lower']['Tav'], m, 3))}."
+        f"Next order (paper model): lower ${sp.latex(next_term(d['lower']['Tav'], m, 3))}$; "
+        f"exact model: lower ${sp.latex(next_term(e['lower']['Tav'], m, 3))}$."
     )
     return Row(
         "45",
@@ -629,18 +639,19 @@ def _sec5() -> Row:
         )
     )
     how = (
-        "Closing theorem (derived: both edge factors vanish together iff omega_1 T/2 = a pi and "
-        "omega_2 T/2 = b pi with 1 <= a < b, a + b = n; then T1:T2 = b:a, m = (b^2-a^2)/(b^2+a^2), "
-        "T = a T1, M = (-1)^n I; no other closings, by the window theorem). The three ratios the "
-        "text names are special cases: "
+        r"Closing theorem (derived: both edge factors vanish together if and only if "
+        r"$\omega_1 T/2 = a\pi$ and $\omega_2 T/2 = b\pi$ with $1 \le a < b$, $a + b = n$; then "
+        r"$T_1:T_2 = b:a$, $m = (b^2-a^2)/(b^2+a^2)$, $T = aT_1$, $M = (-1)^n I$; no other "
+        r"closings, by the window theorem). The three ratios the text names are special cases: "
         + ", ".join(
-            f"{k} at n = {', '.join(str(x.order) for x in v)} (m = {v[0].m})"
+            f"{k} at $n = {', '.join(str(x.order) for x in v)}$ ($m = {v[0].m}$)"
             for k, v in found.items()
         )
-        + ". The 2:1 closing is the one the text explains (a = 1, b = 2: half an oscillation of T1 "
-        "and a full one of T2 per cycle, M = -I, so every motion repeats after two cycles). For "
-        f"n <= 6 the theorem gives {len(c)} closings: {listing}. Not named in the text: "
-        + ", ".join(f"{x.ratio} (n = {x.order}, m = {x.m} = {float(x.m):.3f})" for x in others)
+        + r". The 2:1 closing is the one the text explains ($a = 1$, $b = 2$: half an oscillation "
+        r"of $T_1$ and a full one of $T_2$ per cycle, $M = -I$, so every motion repeats after two "
+        f"cycles). For $n \\le 6$ the theorem gives {len(c)} closings: {listing}. Not named in the "
+        "text: "
+        + ", ".join(f"{x.ratio} ($n = {x.order}$, $m = {x.m} = {float(x.m):.3f}$)" for x in others)
         + "; they lie at depths near 0.9, where Fig. 2 may not reach. No closings for n = 1, 2 "
         "(the text's 'n > 2' agrees)."
     )

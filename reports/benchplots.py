@@ -71,9 +71,9 @@ def pareto_figure(panels: Sequence[tuple[str, Sequence[dict]]], *, subtitle: str
                 xs = np.array([p["seconds"] for p in front])
                 ys = np.array([max(float(p["error"]), FLOOR) for p in front])
                 ax.step(xs, ys, where="post", color="0.4", lw=0.6, zorder=2)
-                for p, x, y in zip(front, xs, ys, strict=True):
+                for text, x, y in _front_labels(front, xs, ys):
                     ax.annotate(
-                        p["method"],
+                        text,
                         (x, y),
                         textcoords="offset points",
                         xytext=(4, 3),
@@ -105,6 +105,27 @@ def pareto_figure(panels: Sequence[tuple[str, Sequence[dict]]], *, subtitle: str
             fig.suptitle(subtitle, fontsize=7)
         fig.tight_layout(pad=0.4)
     return fig
+
+
+def _front_labels(front, xs, ys):
+    """One label per run of consecutive front points of the same family (``series K=1 ... 8``),
+    at the run's first point, so that labels of close points do not overlap."""
+    out = []
+    k = 0
+    while k < len(front):
+        j = k
+        while j + 1 < len(front) and front[j + 1]["family"] == front[k]["family"]:
+            j += 1
+        first, last = front[k]["method"], front[j]["method"]
+        if j == k:
+            text = first
+        else:
+            tail = last.split()[-1]
+            tail = tail.split("=")[-1]
+            text = f"{first} ... {tail}"
+        out.append((text, xs[k], ys[k]))
+        k = j + 1
+    return out
 
 
 def save_figure(fig: Figure, path) -> Path:

@@ -27,11 +27,13 @@ __all__ = [
     "BuildResult",
     "Engine",
     "find_engine",
+    "supports",
     "compile_pdf",
     "write_output",
     "how_to_get_pdf",
     "page_count",
     "APT_PACKAGES",
+    "APT_PACKAGES_RU",
 ]
 
 #: Debian/Ubuntu packages that compile the report (and let the tests read the PDF back)
@@ -41,6 +43,8 @@ APT_PACKAGES = (
     "texlive-latex-recommended",
     "poppler-utils",
 )
+#: what the Russian report needs in addition: Cyrillic fonts (T2A) and Russian hyphenation
+APT_PACKAGES_RU = ("texlive-lang-cyrillic", "cm-super")
 
 _MAX_PDFLATEX_RUNS = 4
 _TIMEOUT = 600
@@ -85,12 +89,30 @@ def find_engine(prefer: str | None = None) -> Engine | None:
     return None
 
 
+#: TeX files each language needs beyond the base installation
+LANGUAGE_FILES = {"en": (), "ru": ("t2aenc.def", "russianb.ldf")}
+
+
+def supports(lang: str) -> bool:
+    """Whether the installed TeX can typeset ``lang`` (for Russian: the T2A font encoding and
+    babel's Russian), asked of ``kpsewhich``."""
+    files = LANGUAGE_FILES.get(lang, ())
+    if not files:
+        return True
+    kpsewhich = shutil.which("kpsewhich")
+    if kpsewhich is None:
+        return False
+    proc = subprocess.run([kpsewhich, *files], capture_output=True, text=True, check=False)
+    return len([x for x in proc.stdout.splitlines() if x.strip()]) == len(files)
+
+
 def how_to_get_pdf(tex: Path) -> str:
     """The advice printed when no TeX engine is installed."""
     return (
         f"no TeX engine (latexmk or pdflatex) found: wrote {tex} and its figures but not the PDF.\n"
         "To get the PDF, install TeX, e.g. on Debian/Ubuntu\n"
         f"    sudo apt-get install -y --no-install-recommends {' '.join(APT_PACKAGES)}\n"
+        f"(and for `--lang ru` also {' '.join(APT_PACKAGES_RU)}),\n"
         f"then run `paramres report` again, or compile by hand:\n"
         f"    cd {tex.parent} && latexmk -pdf {tex.name}"
     )

@@ -72,16 +72,17 @@ RC = {
     "path.simplify": False,
 }
 
-#: one colour per order (colour-blind safe, Okabe-Ito), cycling
+#: one colour per order (colour-blind safe, Okabe-Ito), cycling; neighbours and the first six
+#: are told apart (no two blues among them)
 ORDER_COLOURS = (
     "#0072B2",
     "#D55E00",
     "#009E73",
     "#CC79A7",
     "#E69F00",
+    "#000000",
     "#56B4E9",
     "#F0E442",
-    "#000000",
 )
 #: shades from no friction (lightest) to the strongest friction
 FRICTION_SHADES = ("#c6dbef", "#6baed6", "#2171b5", "#08306b")
@@ -168,7 +169,17 @@ def draw_regions(
 
 
 def _order_label(ax, n: int, T: float, m: float, color) -> None:
-    ax.annotate(f"$n={n}$", (T, m), ha="center", va="bottom", color=color, fontsize=8)
+    """The order's label just right of the tip of its interval (not on it)."""
+    ax.annotate(
+        f"$n={n}$",
+        (T, m),
+        xytext=(4, 3),
+        textcoords="offset points",
+        ha="left",
+        va="bottom",
+        color=color,
+        fontsize=8,
+    )
 
 
 def intervals_figure(
@@ -197,7 +208,7 @@ def intervals_figure(
         ax.set_xlabel(r"modulation period $T/T_0$")
         ax.set_ylabel(r"modulation depth $m$")
         ax.set_ylim(0, float(np.nanmax(m)))
-        hi = t_max if t_max is not None else max(orders) / 2 + 0.35
+        hi = t_max if t_max is not None else float(np.nanmax(bounds)) + 0.05
         ax.set_xlim(0, hi)
         if title:
             ax.set_title(title)

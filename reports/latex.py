@@ -22,6 +22,8 @@ from dataclasses import dataclass, field
 import sympy
 from sympy.printing.latex import LatexPrinter
 
+from .i18n import current, tr
+
 __all__ = [
     "Latex",
     "Config",
@@ -32,7 +34,10 @@ __all__ = [
     "raw",
     "ref",
     "math",
+    "notation",
     "inline",
+    "slashed",
+    "short_caption",
     "number",
     "command",
     "environment",
@@ -43,6 +48,7 @@ __all__ = [
     "fit",
     "math_lines",
     "pack",
+    "break_source",
     "series_terms",
     "table",
     "figure",
@@ -118,7 +124,7 @@ class Config:
         ("xcolor", ""),
         ("microtype", "expansion=false"),
         ("caption", "font=small,labelfont=bf"),
-        ("hyperref", "hidelinks,pdfcreator={paramres},pdfproducer={paramres}"),
+        ("hyperref", "hidelinks,hypertexnames=false,pdfcreator={paramres},pdfproducer={paramres}"),
     )
     preamble: tuple[str, ...] = (
         # \fitmath{...}: display math scaled down to the line only if TeX finds it too wide
@@ -126,6 +132,10 @@ class Config:
         r"\newcommand{\fitmath}[1]{\sbox\prfitbox{$\displaystyle #1$}%",
         r"\ifdim\wd\prfitbox>\dimexpr\linewidth-4em\relax"
         r"\resizebox{\dimexpr\linewidth-4em\relax}{!}{\usebox\prfitbox}%",
+        r"\else\usebox\prfitbox\fi}",
+        # \fitcell{...}: the same for a formula in a table cell, scaled to the column if needed
+        r"\newcommand{\fitcell}[1]{\sbox\prfitbox{$\displaystyle #1$}%",
+        r"\ifdim\wd\prfitbox>\linewidth\resizebox{\linewidth}{!}{\usebox\prfitbox}%",
         r"\else\usebox\prfitbox\fi}",
         r"\numberwithin{equation}{section}",
         r"\setlength{\LTcapwidth}{\textwidth}",
@@ -193,6 +203,8 @@ _UNICODE = {
     "\u2074": r"$^4$",
     "\u00b0": r"$^\circ$",
     "\u00a7": r"\S{}",
+    "\u00ab": r"\guillemotleft{}",
+    "\u00bb": r"\guillemotright{}",
     "\u00b7": r"$\cdot$",
     "\u03b1": r"$\alpha$",
     "\u03b2": r"$\beta$",
@@ -226,17 +238,33 @@ def text(s: str) -> Latex:
     >>> str(text("γ ≥ 0"))
     '$\\\\gamma$ $\\\\geq$ 0'
     """
+    return Latex(_escape(tr(s)))
+
+
+#: a double hyphen that starts a command-line option (``--order``): kept as two hyphens
+_OPTION = re.compile(r"--(?=[A-Za-z])")
+#: a straight quote that opens a quotation (after a space or bracket, or at the start)
+_OPENING = re.compile(r"(?:(?<=^)|(?<=[\s(\[]))'(?=\S)")
+
+
+def _escape(s: str) -> str:
+    """The characters of ``s`` as LaTeX text (see :func:`text`), without translation."""
+    s = _OPENING.sub("\u2018", _OPTION.sub("\x00", s))
     out = []
     for ch in s:
-        if ch in _SPECIAL:
+        if ch == "\x00":
+            out.append("-{}-{}")
+        elif ch in _SPECIAL:
             out.append(_SPECIAL[ch])
         elif ord(ch) < 128:
             out.append(ch)
         elif ch in _UNICODE:
             out.append(_UNICODE[ch])
+        elif "\u0400" <= ch <= "\u04ff" and current() == "ru":  # the Russian report
+            out.append(ch)
         else:
             out.append(f"[U+{ord(ch):04X}]")
-    return Latex("".join(out))
+    return "".join(out)
 
 
 _GREEK = (
@@ -340,17 +368,30 @@ def prose(s: str) -> Latex:
     >>> str(prose("T = a T1 = a sqrt(2/(a^2 + b^2)) T0, 1 <= a"))
     'T = a $T_{1}$ = a $\\\\sqrt{2/(a^{2} + b^{2})}$ $T_{0}$, 1 $\\\\le$ a'
     """
+    s = tr(s)
+    if "$" in s:  # a translation may carry its formulas in LaTeX already
+        return mixed(s)
+    return _prose_only(s)
+
+
+def _prose_only(s: str) -> Latex:
+    """:func:`prose` without translation."""
     s = re.sub(r"(?<=\S)\*(?=\S)", "\u00b7", s.replace("**", "^"))
     out: list[str] = []
     pos = 0
     for mt in _TOKEN.finditer(s):
         if mt.start() < pos:
             continue
-        out.append(text(s[pos : mt.start()]).raw)
+        out.append(_escape(s[pos : mt.start()]))
         piece, pos = _token_math(s, mt)
         out.append("$" + piece.strip() + "$")
-    out.append(text(s[pos:]).raw)
+    out.append(_escape(s[pos:]))
     return Latex("".join(out))
+
+
+#: a formula with a fraction wider than this (characters, :func:`visible_width`) is displayed, not
+#: set in the line, where it would push the lines apart
+INLINE_FRACTION_WIDTH = 24
 
 
 def mixed(s: str, config: Config = DEFAULT) -> Latex:
@@ -362,6 +403,7 @@ def mixed(s: str, config: Config = DEFAULT) -> Latex:
     >>> str(mixed("printed $q^2$ where omega_1 gives $q$"))
     'printed $q^2$ where $\\\\omega_{1}$ gives $q$'
     """
+    s = tr(s)
     parts = s.split("$")
     if len(parts) % 2 == 0:  # unpaired: treat the last "$" as text
         tail = parts.pop()
@@ -369,9 +411,16 @@ def mixed(s: str, config: Config = DEFAULT) -> Latex:
     out = []
     for k, part in enumerate(parts):
         if k % 2 == 0:
-            out.append(prose(part).raw)
-        elif visible_width(part) > config.fit_width:
-            out.append(r"\[" + fit(Latex(part), config).raw + r"\]")
+            out.append(_prose_only(part).raw)
+        elif visible_width(part) > config.fit_width or (
+            r"\frac" in part and visible_width(part) > INLINE_FRACTION_WIDTH
+        ):
+            lines = break_source(part, config.max_width)
+            if len(lines) == 1:
+                out.append(r"\[" + fit(lines[0], config).raw + r"\]")
+            else:
+                body = " \\\\\n".join(fit(x, config).raw for x in lines)
+                out.append("\n\\begin{multline*}\n" + body + "\n\\end{multline*}\n")
         else:
             out.append("$" + part + "$")
     return Latex("".join(out))
@@ -383,8 +432,9 @@ def ref(kind: str, label: str) -> Latex:
 
 
 def raw(s: str) -> Latex:
-    """LaTeX source written by the caller (markup, never a result)."""
-    return Latex(s)
+    """LaTeX source written by the caller (markup, never a result); prose in it is translated
+    when the report is built in another language (:func:`reports.i18n.tr`)."""
+    return Latex(tr(s))
 
 
 # --------------------------------------------------------------------------------------- math
@@ -395,7 +445,41 @@ def math(expr, config: Config = DEFAULT, **settings) -> Latex:
     LaTeX, printed with ``config.printer`` updated by ``settings`` (e.g. ``order="lex"``)."""
     if isinstance(expr, Latex):
         return expr
-    return Latex(sympy.latex(expr, **{**dict(config.printer), **settings}))
+    return Latex(notation(sympy.latex(expr, **{**dict(config.printer), **settings})))
+
+
+#: sympy orders ``1 + m`` as ``m + 1``; the paper and this report write ``l_0(1 + m)``
+_ONE_PLUS_M = re.compile(r"(\\left\(|\\sqrt\{|\{|\()m \+ 1(?=\\right\)|\}|\))")
+
+
+def notation(src: str) -> str:
+    """The report's notation in sympy's LaTeX: ``1 + m`` (as in ``l_0(1 + m)``), not ``m + 1``.
+
+    >>> notation(r"\\left(m + 1\\right)^{2} \\sqrt{m + 1}")
+    '\\\\left(1 + m\\\\right)^{2} \\\\sqrt{1 + m}'
+    """
+    return _ONE_PLUS_M.sub(lambda mt: mt.group(1) + "1 + m", src)
+
+
+def slashed(expr, config: Config = DEFAULT, **settings) -> Latex:
+    """A formula for running text: fractions written with a slash, ``\\pi n/(6 Q)``, so that a
+    line keeps its height (an equation is done side by side)."""
+    if isinstance(expr, sympy.Equality):
+        return Latex(
+            slashed(expr.lhs, config, **settings).raw
+            + " = "
+            + slashed(expr.rhs, config, **settings).raw
+        )
+    num, den = sympy.fraction(sympy.sympify(expr))
+    if den == 1:
+        return math(expr, config, **settings)
+
+    def part(x, strict: bool) -> str:
+        src = math(x, config, **settings).raw
+        needs = isinstance(x, sympy.Add) or (strict and isinstance(x, sympy.Mul))
+        return r"\left(" + src + r"\right)" if needs else src
+
+    return Latex(part(num, False) + "/" + part(den, True))
 
 
 def inline(body: Latex) -> Latex:
@@ -550,6 +634,56 @@ def pack(pieces: Sequence[Latex], width: int) -> list[Latex]:
     return lines
 
 
+def break_source(src: str, width: int) -> list[Latex]:
+    """A formula given as LaTeX source, broken into lines no wider than ``width`` (as far as it
+    can be): the break points are the ``+`` and ``-`` of a top-level sum, outside every brace and
+    ``\\left...\\right`` group, and the first line keeps everything up to the first ``=``.
+
+    >>> [str(x) for x in break_source(r"x = a + \\frac{b + c}{2} - d", 6)]
+    ['x = a', '+ \\\\frac{b + c}{2}', '- d']
+    """
+    if visible_width(src) <= width:
+        return [Latex(src)]
+    pieces: list[str] = []
+    depth = 0
+    start = 0
+    seen_eq = "=" not in src
+    i = 0
+    while i < len(src):
+        if src.startswith(r"\left", i) and not src[i + 5 : i + 6].isalpha():
+            depth += 1
+            i += 5
+            continue
+        if src.startswith(r"\right", i) and not src[i + 6 : i + 7].isalpha():
+            depth -= 1
+            i += 6
+            continue
+        ch = src[i]
+        if ch == "\\":
+            i += 2
+            continue
+        if ch == "{":
+            depth += 1
+        elif ch == "}":
+            depth -= 1
+        elif depth == 0 and ch == "=":
+            seen_eq = True
+        elif (
+            depth == 0
+            and seen_eq
+            and ch in "+-"
+            and i > 0
+            and src[i - 1] == " "
+            and src[:i].strip()
+            and not src[:i].rstrip().endswith(("=", "(", ","))
+        ):
+            pieces.append(src[start:i].strip())
+            start = i
+        i += 1
+    pieces.append(src[start:].strip())
+    return pack([Latex(p) for p in pieces if p], width)
+
+
 def series_terms(
     expr, var, config: Config = DEFAULT, *, big_o: int | None = None, shown_as=None
 ) -> list[Latex]:
@@ -638,7 +772,7 @@ def paragraph(*parts: Latex | str) -> Latex:
             continue
         if (
             out
-            and not out.endswith(("(", " ", "\n"))
+            and not out.endswith(("(", " ", "\n", "~"))
             and not src.startswith((".", ",", ";", ":", ")", "'", "!", "?", "-"))
         ):
             out += " "
@@ -714,7 +848,7 @@ def table(
     columns = columns or ("l" + "r" * (ncol - 1))
     head = " & ".join(_source(h) for h in header) + r" \\"
     body = "\n".join(" & ".join(_source(c) for c in r) + r" \\" for r in rows)
-    cap = command("caption", caption).raw if caption is not None else ""
+    cap = _caption(caption) if caption is not None else ""
     lab = command("label", raw(label)).raw if label else ""
     switches = [f"\\{size}"] if size else []
     if colsep:
@@ -739,6 +873,37 @@ def table(
     return environment("table", Latex(inner), optional="htbp")
 
 
+def short_caption(src: str, limit: int = 90) -> str | None:
+    """The first sentence of a caption (LaTeX source) for the lists of figures and tables, or
+    ``None`` when the caption is short enough to be listed whole."""
+    if len(src) <= limit:
+        return None
+    depth = 0
+    in_math = False
+    for i, ch in enumerate(src):
+        if ch == "$" and (i == 0 or src[i - 1] != "\\"):
+            in_math = not in_math
+        elif ch == "{":
+            depth += 1
+        elif ch == "}":
+            depth -= 1
+        elif (
+            ch == "."
+            and not in_math
+            and depth == 0
+            and src[i + 1 : i + 2] == " "
+            and not src[max(0, i - 4) : i].endswith(("Fig", "eq", "eqs", "Eq", "e.g", "i.e"))
+        ):
+            return src[: i + 1]
+    return None
+
+
+def _caption(caption: Latex | str) -> str:
+    src = _source(caption)
+    short = short_caption(src)
+    return r"\caption" + ("" if short is None else "[{" + short + "}]") + "{" + src + "}"
+
+
 def figure(
     path: str, caption: Latex | str, *, label: str | None = None, width: str = r"\textwidth"
 ) -> Latex:
@@ -746,7 +911,7 @@ def figure(
     body = (
         "\\centering\n" + command("includegraphics", raw(path), optional=raw(f"width={width}")).raw
     )
-    body += "\n" + command("caption", caption).raw
+    body += "\n" + _caption(caption)
     if label:
         body += command("label", raw(label)).raw
     return environment("figure", Latex(body), optional="htbp")
@@ -773,9 +938,15 @@ def document(
     banner: str | None = None,
     abstract: Latex | str | None = None,
     config: Config = DEFAULT,
+    packages: Sequence[tuple[str, str]] = (),
+    preamble: Sequence[Latex | str] = (),
+    contents: Sequence[Latex] = (Latex(r"\tableofcontents"),),
+    back: Sequence[Latex] = (),
 ) -> Latex:
-    """A complete document: optional ``% banner`` line, preamble from ``config``, title block,
-    abstract, table of contents, then the body blocks separated by blank lines."""
+    """A complete document: optional ``% banner`` line, ``packages`` (loaded first, e.g. the font
+    encoding and language), the packages and preamble of ``config``, then ``preamble`` (LaTeX
+    source), the title block, the abstract, ``contents`` (table of contents, lists), the body
+    blocks separated by blank lines, and the ``back`` matter (bibliography)."""
     head = []
     if banner:
         head.append("% " + banner)
@@ -784,16 +955,18 @@ def document(
             "documentclass", raw(config.documentclass), optional=raw(",".join(config.class_options))
         ).raw
     )
-    for name, opts in config.packages:
-        head.append(command("usepackage", raw(name), optional=raw(opts) if opts else None).raw)
+    for name, opts in (*packages, *config.packages):
+        head.append(Latex("\\usepackage" + (f"[{opts}]" if opts else "") + "{" + name + "}").raw)
     head.extend(config.preamble)
+    head.extend(_source(x) if isinstance(x, Latex) else x for x in preamble)
     head.append(command("title", title).raw)
     head.append(command("author", author).raw)
     head.append(command("date", date).raw)
     blocks = [r"\maketitle"]
     if abstract is not None:
         blocks.append(environment("abstract", abstract).raw)
-    blocks.append(r"\tableofcontents")
+    blocks.extend(b.raw for b in contents)
     blocks.extend(b.raw for b in body)
+    blocks.extend(b.raw for b in back)
     content = "\n\n".join(blocks)
     return Latex("\n".join(head) + "\n\n" + environment("document", Latex(content)).raw + "\n")

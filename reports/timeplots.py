@@ -200,8 +200,8 @@ def draw_run(ax_phase, ax_vel, ax_angle, sim, *, numbered: int = 8) -> None:
         ax_vel.annotate(str(k), (t, dphi), textcoords="offset points", xytext=(3, 3), fontsize=7)
     ax_phase.set_xlabel(r"$\varphi$ (rad)")
     ax_phase.set_ylabel(r"$\dot\varphi$ (rad$/T_0$)")
-    ax_vel.set_ylabel(r"$\dot\varphi$")
-    ax_angle.set_ylabel(r"$\varphi$")
+    ax_vel.set_ylabel(r"$\dot\varphi$ (rad$/T_0$)")
+    ax_angle.set_ylabel(r"$\varphi$ (rad)")
     ax_angle.set_xlabel(r"$t/T_0$")
 
 
@@ -319,17 +319,22 @@ def paper_simulations(number: int, *, digits: int = 30):
     return sims
 
 
-def paper_figure(number: int, *, digits: int = 30) -> Figure:
-    """The paper's figure ``number`` re-drawn from simulated runs."""
+def paper_figure(number: int, *, digits: int = 30, titled: bool = False) -> Figure:
+    """The paper's figure ``number`` re-drawn from simulated runs; ``titled`` puts the paper's
+    number and caption above it (a figure in a document is titled by its caption instead)."""
     sims = paper_simulations(number, digits=digits)
     numbered = 0 if any(r.get("T") for r in PAPER_SCENES[number].runs) else 8
-    return time_figure(
-        sims, title=f"Fig. {number}: {PAPER_SCENES[number].caption}", numbered=numbered
-    )
+    title = f"Fig. {number}: {PAPER_SCENES[number].caption}" if titled else None
+    return time_figure(sims, title=title, numbered=numbered)
 
 
 def saturation_figure(
-    *, m=Fraction(1, 20), Q=Fraction(30), periods: int = 300, amplitude=Fraction(1, 100)
+    *,
+    m=Fraction(1, 20),
+    Q=Fraction(30),
+    periods: int = 300,
+    amplitude=Fraction(1, 100),
+    titled: bool = False,
 ) -> Figure:
     """Growth inside the first interval limited by the amplitude-dependent period: the envelope of
     the linear model (exponential growth) against the real pendulum without friction (beats) and
@@ -355,7 +360,11 @@ def saturation_figure(
     return envelope_figure(
         runs,
         labels,
-        title=f"First interval, $m = {m}$, $T/T_0 = {Tt}$: growth limited by the amplitude",
+        title=(
+            f"First interval, $m = {m}$, $T/T_0 = {Tt}$: growth limited by the amplitude"
+            if titled
+            else None
+        ),
         ylim=(float(amplitude) / 3, 30.0),
     )
 

@@ -3,6 +3,7 @@ installed)."""
 
 from __future__ import annotations
 
+import shlex
 import sys
 import time
 from pathlib import Path
@@ -43,6 +44,12 @@ def register(subparsers) -> None:
     p.add_argument(
         "--no-cache", action="store_true", help="recompute everything, read and write no cache"
     )
+    p.add_argument(
+        "--lang",
+        choices=("en", "ru"),
+        default="en",
+        help="language of the report: en (default) or ru (paramres-report-ru.pdf, in Russian)",
+    )
     p.add_argument("--json", action="store_true", help="print what was written as JSON on stdout")
     p.add_argument("-q", "--quiet", action="store_true", help="no progress messages on stderr")
     p.set_defaults(func=run)
@@ -53,7 +60,7 @@ def run(args) -> int:
 
     from ..build import BuildError, how_to_get_pdf
     from ..output import check_writable
-    from ..report import TEX_NAME, build_report
+    from ..report import build_report, tex_name
 
     out = check_writable(args.out, "--out", directory=True)  # before any work
     cache = None if args.no_cache else (Path(args.cache) if args.cache else cache_dir())
@@ -66,7 +73,14 @@ def run(args) -> int:
     )
     start = time.perf_counter()
     try:
-        result = build_report(out, cache_dir=cache, compile=False if args.no_pdf else None, log=log)
+        result = build_report(
+            out,
+            cache_dir=cache,
+            compile=False if args.no_pdf else None,
+            log=log,
+            lang=args.lang,
+            command=_command_line(args),
+        )
     except BuildError as exc:
         print(f"paramres: LaTeX failed, {out} left as it was:\n{exc}", file=sys.stderr)
         return 1
@@ -90,9 +104,23 @@ def run(args) -> int:
         )
     else:
         print(
-            f"wrote {result.directory / TEX_NAME} and {len(result.files) - 1} figure file(s) "
+            f"wrote {result.directory / tex_name(args.lang)} and {len(result.files) - 1} figure "
+            f"file(s) "
             f"in {seconds:.1f} s"
         )
         if not args.no_pdf:
-            print(how_to_get_pdf(result.directory / TEX_NAME), file=sys.stderr)
+            print(how_to_get_pdf(result.directory / tex_name(args.lang)), file=sys.stderr)
     return 0
+
+
+def _command_line(args) -> str:
+    """The command that produced the report, as a user would type it again (the options given,
+    with their values; machine-specific cache paths are left out)."""
+    words = ["paramres", "report", "--out", str(args.out)]
+    if args.lang != "en":
+        words += ["--lang", args.lang]
+    if args.no_pdf:
+        words.append("--no-pdf")
+    if args.no_cache:
+        words.append("--no-cache")
+    return " ".join(shlex.quote(w) for w in words)

@@ -1,7 +1,11 @@
 """The report's sections, one module each, in reading order.
 
 Every section module defines ``TITLE``, ``LABEL`` and ``build(ctx) -> Part``: the section's LaTeX
-body (without its heading) and the figures it draws, computed from the engine's objects.  A section
+body (without its heading) and the figures it draws, computed from the engine's objects.  Optional:
+``CACHED = False`` for a section that is cheap to build (it is not stored in the cache), and
+``NEW_PAGE = True`` for one that starts on a new page.  A new chapter is one more module here and
+one more name in :data:`SECTIONS`; prose in both languages is written with
+:func:`reports.i18n.say`.  A section
 whose engine parts are not present in this installation says so in the report instead of guessing
 (:func:`missing`).
 """
@@ -17,10 +21,12 @@ from analytic.cache import Cache
 
 from ..latex import DEFAULT, Config, Latex
 
-__all__ = ["Part", "Context", "SECTIONS", "load"]
+__all__ = ["Part", "Context", "SECTIONS", "load", "shared"]
 
 #: section modules, in the order they appear
 SECTIONS = (
+    "introduction",
+    "summary",
     "model",
     "stitching",
     "catalogue",
@@ -30,6 +36,8 @@ SECTIONS = (
     "diagrams",
     "accuracy",
     "performance",
+    "certification",
+    "conclusions",
 )
 
 
@@ -49,6 +57,16 @@ class Context:
     config: Config = DEFAULT
     cache: Cache = field(default_factory=lambda: Cache(None))
     log: Callable[[str], None] = field(default=lambda msg: print(msg, file=sys.stderr, flush=True))
+    #: results computed once per build and shared between sections (see :func:`shared`)
+    memo: dict = field(default_factory=dict)
+
+
+def shared(ctx: Context, name: str, make: Callable[[], object]):
+    """``make()`` computed once per build (and through the cache across builds), for results that
+    more than one section shows, e.g. the summary up front and the section with the details."""
+    if name not in ctx.memo:
+        ctx.memo[name] = ctx.cache.get(name, make)
+    return ctx.memo[name]
 
 
 def load(name: str):

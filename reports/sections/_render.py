@@ -11,6 +11,7 @@ from ..latex import (
     Latex,
     equation,
     equation_lines,
+    fit,
     inline,
     math,
     math_lines,
@@ -18,10 +19,25 @@ from ..latex import (
     prose,
     raw,
     section,
+    slashed,
     text,
+    visible_width,
 )
 
-__all__ = ["verdict", "link", "chain", "tag_of", "note"]
+__all__ = ["verdict", "check", "link", "chain", "tag_of", "note", "CHECKS_STATED_ONCE"]
+
+#: said once at the head of a section of derivations, instead of after every step
+CHECKS_STATED_ONCE = (
+    "Every step below is checked by the engine. Unless its note says otherwise, the check is "
+    "symbolic: the difference of the two sides reduces to zero exactly (after the trigonometric "
+    "functions are written as exponentials, an identity of rational functions). Where sympy "
+    "cannot reduce it, the note says so and gives the numeric check used instead: random points "
+    "at 40 digits and the largest relative residual."
+)
+
+
+#: a factor wider than this (characters, see :func:`reports.latex.visible_width`) is displayed
+INLINE_FACTOR_WIDTH = 24
 
 
 def verdict(v, config: Config) -> Latex:
@@ -31,16 +47,30 @@ def verdict(v, config: Config) -> Latex:
     if v.route == "symbolic":
         factor = getattr(v, "factor", None)
         if factor is not None and factor != 1:
+            shown = slashed(factor, config)
+            if visible_width(shown) > INLINE_FACTOR_WIDTH:  # too long for the line: displayed
+                shown = Latex(r"\[" + fit(math(factor, config), config).raw + r"\]")
+            else:
+                shown = inline(shown)
             return paragraph(
                 "holds up to the non-vanishing factor",
-                inline(math(factor, config)),
+                shown,
                 "(proved symbolically)",
             )
-        return Latex("proved symbolically (the difference reduces to zero)")
+        return Latex("")
     return paragraph(
-        f"checked numerically at {v.points} random points with {v.dps} digits, largest relative "
+        f"numeric, at {v.points} random points with {v.dps} digits, largest relative "
         f"residual {v.worst:.1e} (sympy did not reduce it to zero)"
     )
+
+
+def check(v, config: Config) -> Latex:
+    """``Check: ...`` for a step whose check is not the plain symbolic one (stated once, see
+    :data:`CHECKS_STATED_ONCE`); nothing for the plain one."""
+    said = verdict(v, config)
+    if said.empty:
+        return Latex("")
+    return paragraph(raw(r"\emph{Check:}"), said, ".")
 
 
 def note(*parts) -> Latex:
@@ -56,6 +86,9 @@ def tag_of(label: str) -> str | None:
     m = re.fullmatch(r"(\d+)-upper", label)
     if m:
         return m.group(1) + "'"
+    m = re.fullmatch(r"IC-(\d+)", label)
+    if m:  # the stationary initial condition the paper states after its equation
+        return m.group(1) + r"\text{, i.c.}"
     return sp.latex(sp.Symbol(label)) if re.fullmatch(r"\d+", label) else label.replace("_", r"\_")
 
 
@@ -74,9 +107,7 @@ def link(
         + note(
             raw(r"\emph{" + text(title or lnk.name).raw + ".}"),
             prose(lnk.why + "."),
-            "Check:",
-            verdict(lnk.verdict, config),
-            ".",
+            check(lnk.verdict, config),
         ).raw
     )
 
@@ -119,7 +150,7 @@ def chain(
             out.append(equation_lines([body], tag=tag))
         reasons = []
         for s in grp:
-            reasons.append(paragraph(prose(s.why + "."), "Check:", verdict(s.verdict, config), "."))
+            reasons.append(paragraph(prose(s.why + "."), check(s.verdict, config)))
         out.append(note(*reasons))
     return Latex("\n\n".join(x.raw for x in out))
 

@@ -5,8 +5,22 @@ from __future__ import annotations
 
 import re
 
-from ..latex import Config, Latex, fit, mixed, paragraph, raw, table, text
-from . import Context, Part
+from ..i18n import say
+from ..latex import (
+    Config,
+    Latex,
+    break_source,
+    fit,
+    mixed,
+    notation,
+    paragraph,
+    prose,
+    raw,
+    table,
+    text,
+)
+from ..phrasebook import SAME_EQUATION
+from . import Context, Part, shared
 
 TITLE = "The paper's numbered results, printed against derived"
 LABEL = "sec:catalogue"
@@ -16,7 +30,7 @@ def rows(ctx: Context) -> tuple:
     """The catalogue's rows, through the cache (the derivations behind them are the slow part)."""
     from analytic.catalogue import catalogue
 
-    return ctx.cache.get("catalogue-rows", lambda: tuple(catalogue()))
+    return shared(ctx, "catalogue-rows", lambda: tuple(catalogue()))
 
 
 def anchor(label: str) -> str:
@@ -25,20 +39,46 @@ def anchor(label: str) -> str:
 
 
 def eq_text(label: str) -> Latex:
-    """How an equation label is printed in the table: ``(13)``, ``(15$'$)``, ``\\S 6``."""
-    if label.startswith("§"):
-        return raw(r"\S" + text(label[1:]).raw)
-    return raw("(" + text(label).raw + ")")
+    """How an equation label is printed: ``(13)``, ``(2)--(3)``, ``\\S 6``, and for an entry that
+    is about something next to an equation, what it is: ``(15, n = 3)`` (the same equation for
+    another order), ``(15, i.c.)`` (the stationary initial condition stated after it),
+    ``(39, reference)`` (a cross-reference in the text around it), ``(19, centre)``."""
+    from ..i18n import say
+
+    m = re.fullmatch(r"(§?)(\d+)(?:-(\d+))?(?:-(n\d+|ref|shift))?", label)
+    ic = re.fullmatch(r"IC-(\d+)", label)
+    if ic:
+        return raw("(" + ic.group(1) + ", i.c.)")
+    if not m:
+        return raw("(" + text(label).raw + ")")
+    sec, first, last, what = m.groups()
+    extra = ""
+    if what and what.startswith("n"):
+        extra = f", $n = {what[1:]}$"
+    elif what == "ref":
+        extra = ", " + say("reference", "ссылка")
+    elif what == "shift":
+        extra = ", " + say("centre", "центр")
+    if sec:
+        return raw(r"\S" + first + extra)
+    return raw("(" + first + extra + ")" + (f"--({last})" if last else ""))
 
 
 def display(src: str, config: Config) -> Latex:
     """A LaTeX formula (string from the engine) as display math: a list ``a,\\quad b`` becomes one
-    line per item, each scaled down to the line if TeX finds it too wide (:func:`fit`)."""
-    items = [x.strip() for x in re.split(r",\\quad\s*", src) if x.strip()] or [""]
-    if len(items) == 1:
-        return Latex(r"\[" + fit(Latex(items[0]), config).raw + r"\]")
-    body = " \\\\\n".join(fit(Latex(item), config).raw for item in items)
-    return Latex("\\begin{gather*}\n" + body + "\n\\end{gather*}")
+    display per item; an item too wide for the line is broken before the ``+`` and ``-`` of its
+    top-level sums (:func:`break_source`), and a line that still does not fit is scaled down to
+    the line (:func:`fit`)."""
+    items = [notation(x.strip()) for x in re.split(r",\\quad\s*", src) if x.strip()] or [""]
+    out = []
+    for item in items:
+        lines = break_source(item, config.max_width)
+        if len(lines) == 1:
+            out.append(r"\[" + fit(lines[0], config).raw + r"\]")
+        else:
+            body = " \\\\\n".join(fit(x, config).raw for x in lines)
+            out.append("\\begin{multline*}\n" + body + "\n\\end{multline*}")
+    return Latex("\n".join(out))
 
 
 def _entry(r, ctx: Context) -> Latex:
@@ -47,7 +87,7 @@ def _entry(r, ctx: Context) -> Latex:
         r"\paragraph{"
         + eq_text(r.equation).raw
         + " "
-        + text(r.title or "").raw
+        + prose(r.title or "").raw
         + r" --- "
         + status
         + r".}\label{cat:"
@@ -58,7 +98,8 @@ def _entry(r, ctx: Context) -> Latex:
     body = [head, raw(r"\emph{Printed:}"), display(r.printed, cfg)]
     if r.derived:
         body += [raw(r"\emph{Derived:}"), display(r.derived, cfg)]
-    body.append(paragraph(raw(r"\emph{Verdict:}"), mixed(r.how, cfg)))
+    if r.how != SAME_EQUATION:  # the common verdict is stated once, in the introduction
+        body.append(paragraph(raw(r"\emph{" + say("Verdict:", "Вывод:") + "}"), mixed(r.how, cfg)))
     return Latex("\n".join(b.raw for b in body))
 
 
@@ -70,12 +111,12 @@ def build(ctx: Context) -> Part:
         [
             [
                 raw(r"\hyperref[cat:" + anchor(r.equation) + "]{" + eq_text(r.equation).raw + "}"),
-                text(r.title or ""),
+                prose(r.title or ""),
                 raw("agrees") if r.status == "agrees" else raw(r"\textbf{differs}"),
             ]
             for r in rs
         ],
-        columns="lp{0.68\\linewidth}l",
+        columns="lp{0.62\\linewidth}l",
         caption=raw(
             f"The paper's numbered results: {len(rs)} checked, {len(rs) - len(differs)} agree "
             f"with the "
@@ -89,10 +130,12 @@ def build(ctx: Context) -> Part:
     )
     intro = paragraph(
         "For each numbered result the engine transcribes the printed formula (the thing being "
-        "checked), derives the same result from the model, and decides whether the two agree -- "
-        "symbolically where sympy can, otherwise at random points with 40 digits. Where they "
-        "differ, "
-        "the entry shows the smallest sub-expressions in which they part and the correct form."
+        "checked), derives the same result from the model, and decides whether the two agree: "
+        "symbolically where sympy can (an exact identity of rational functions after the "
+        "abbreviations are expanded), otherwise at random points with 40 digits. An entry whose "
+        "printed and derived forms are simply the same equation, decided symbolically, says "
+        "nothing more; every other entry says how it was decided. Where they differ, the entry "
+        "shows the smallest sub-expressions in which they part and the correct form."
     )
     entries = [_entry(r, ctx) for r in rs]
     blocks = [intro, summary, *entries]

@@ -10,7 +10,8 @@ import sympy as sp
 
 from ..latex import Latex, inline, math, paragraph, prose, raw, table
 from . import Context, Part
-from ._render import note, verdict
+from ._render import check, note
+from .summary import theorem
 
 TITLE = "Closings of the intervals"
 LABEL = "sec:closings"
@@ -59,10 +60,7 @@ def build(ctx: Context) -> Part:
     cfg = ctx.config
     cl, checks = _compute()
     out: list[Latex] = [
-        paragraph(
-            raw(r"\textbf{Theorem.}"),
-            prose(cl.statement),
-        ),
+        theorem(cl, ctx),
         paragraph(
             "The paper shows closings of the third, fourth and fifth intervals in its Fig. 2 and "
             "links "
@@ -87,8 +85,11 @@ def build(ctx: Context) -> Part:
                 raw(f"\\item[{k}.]"),
                 prose(step.claim[0].upper() + step.claim[1:] + "."),
                 *((raw(r"\\"), shown) if shown is not None and len(shown.raw) < 260 else ()),
-                raw(r"\\"),
-                note("Check:", verdict(step.verdict, cfg), "."),
+                *(
+                    (raw(r"\\"), note(check(step.verdict, cfg)))
+                    if not check(step.verdict, cfg).empty
+                    else ()
+                ),
             )
         )
     out.append(

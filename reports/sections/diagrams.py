@@ -8,7 +8,7 @@ import numpy as np
 
 from .. import figures
 from ..latex import Latex, figure, inline, paragraph, prose, raw, ref, table, text
-from . import Context, Part
+from . import Context, Part, shared
 
 TITLE = "Diagrams: the paper's Figs. 2 and 8 redrawn"
 LABEL = "sec:diagrams"
@@ -69,7 +69,7 @@ def _compute():
 
 
 def build(ctx: Context) -> Part:
-    d = ctx.cache.get("diagram-data", _compute)
+    d = shared(ctx, "diagram-data", _compute)
     figs = []
     labels = [(n, m, T, r) for n, m, T, r, _ in d["closings"]]
     fig = figures.intervals_figure(d["m2"], d["fig2"], FIG2_ORDERS, closings=labels)

@@ -17,6 +17,7 @@ from analytic.model import (
     segment,
 )
 
+from ..i18n import say
 from ..latex import Latex, equation, inline, math, paragraph, prose, raw, section, table, text
 from . import Context, Part
 
@@ -166,19 +167,19 @@ def _abbreviations(ctx: Context) -> Latex:
 
 def build(ctx: Context) -> Part:
     body = [
-        paragraph(
-            "A rigid pendulum whose length jumps between",
-            inline(raw(r"l_0(1+m)")),
-            "and",
-            inline(raw(r"l_0(1-m)")),
-            "as a square wave of period",
-            inline(raw("T")),
-            "(E. I. Butikov, ``Pendulum with modulated length II: regions of parametric "
-            "excitation''). "
-            "Everything below is derived by the engine from this model: two free-oscillation "
-            "segments per period, the jump rule, and (anti)periodicity. A formula printed in the "
-            "paper "
-            "is only ever the thing being checked.",
+        raw(
+            say(
+                r"A rigid pendulum whose length jumps between $l_0(1+m)$ and $l_0(1-m)$ as a "
+                r"square wave of period $T$~\cite{butikov2}. Everything below is derived by the "
+                r"engine from this model: two free-oscillation segments per period, the jump rule, "
+                r"and (anti)periodicity. A formula printed in the paper is only ever the thing "
+                r"being checked.",
+                r"Жёсткий маятник, длина которого скачком меняется между $l_0(1+m)$ и $l_0(1-m)$ "
+                r"по прямоугольному закону с периодом $T$~\cite{butikov2}. Всё дальнейшее "
+                r"программа выводит из этой модели: два отрезка свободных колебаний за период, "
+                r"правило скачка и (анти)периодичность. Формула, напечатанная в статье, --- "
+                r"всегда лишь предмет проверки.",
+            )
         ),
         section("Units and conventions", "sec:conventions", level=1),
         paragraph(

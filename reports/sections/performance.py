@@ -8,6 +8,7 @@ import math
 from pathlib import Path
 
 from .. import figures
+from ..i18n import say, tr
 from ..latex import Latex, figure, paragraph, raw, section, table, text
 from . import Context, Part
 
@@ -47,17 +48,32 @@ def _time_domain(ctx: Context) -> tuple[list[Latex], list[tuple[str, bytes]]]:
             "of the "
             "linear model, started on a certified edge from the stationary initial condition of ",
             raw(r"Section~\ref{sec:stitching}"),
-            "). The title of each run states its closure error after one (anti)period: the state "
+            "). The line above each run states its closure error after one (anti)period: the state "
             "returns to where it started to the working precision, which is the time-domain check "
             "that the edge and the initial condition are right.",
         ),
     ]
     for n in SCENES:
-        caption = timeplots.PAPER_SCENES[n].caption
+        caption = tr(timeplots.PAPER_SCENES[n].caption)
+        caption = caption[:1].lower() + caption[1:]
         blocks.append(
             figure(
                 f"figures/paper-fig{n}.pdf",
-                raw(f"The paper's Fig.~{n} redrawn: " + caption + "."),
+                raw(
+                    say(f"The paper's Fig.~{n} redrawn: ", f"Рис.~{n} статьи, перестроенный: ")
+                    + caption
+                    + say(
+                        r". Left: the phase trajectory; right: $\dot\varphi(t)$ and "
+                        r"$\varphi(t)$. Blue: the bob-down half of the period (length "
+                        r"$l_0(1+m)$); orange: the bob-up half ($l_0(1-m)$); dashed grey: the "
+                        r"jumps of the angular velocity; numbers: the ends of the first "
+                        r"segments, in order.",
+                        r". Слева: фазовая траектория; справа: $\dot\varphi(t)$ и "
+                        r"$\varphi(t)$. Синий: полупериод с опущенным грузом (длина "
+                        r"$l_0(1+m)$); оранжевый: с поднятым ($l_0(1-m)$); серый пунктир: "
+                        r"скачки угловой скорости; цифры: концы первых отрезков по порядку.",
+                    )
+                ),
                 label=f"fig:time-{n}",
             )
         )

@@ -30,7 +30,7 @@ from analytic.stitching import (
 
 from ..latex import Latex, equation, inline, math, paragraph, raw, section, table, text
 from . import Context, Part
-from ._render import chain, link, note, verdict
+from ._render import CHECKS_STATED_ONCE, chain, check, link, note
 
 TITLE = "Stitching systems, determinants and the per-edge equations"
 LABEL = "sec:stitching"
@@ -297,9 +297,8 @@ def _edge_kind(kind: EdgeKind, ctx: Context, chains_by_key: dict | None, used: s
             ),
             "with",
             inline(raw(r"r = (q-1)/(q+1)")),
-            "; check:",
-            verdict(lnk.verdict, cfg),
             ".",
+            check(lnk.verdict, cfg),
         )
     )
     return out
@@ -402,7 +401,7 @@ def build(ctx: Context) -> Part:
 
     chains_by_key = {c.key: c for c in chains()}
     used: set = set()
-    blocks: list[Latex] = []
+    blocks: list[Latex] = [paragraph(CHECKS_STATED_ONCE)]
     blocks += _general(ctx)
     blocks += _normal_form(ctx)
     for kind in EdgeKind:

@@ -1,0 +1,586 @@
+"""Russian versions of the report's prose (see :mod:`reports.i18n`), in the paper's own terms:
+интервал параметрической неустойчивости, глубина модуляции, добротность, период модуляции.
+
+``PHRASES`` maps an English string, exactly as the report or the engine writes it, to its Russian
+version; ``PATTERNS`` are ``(regular expression, replacement)`` pairs for strings that carry numbers
+or formulas.  A string with no entry is left in English.
+"""
+
+from __future__ import annotations
+
+__all__ = ["PHRASES", "PATTERNS"]
+
+PHRASES: dict[str, str] = {
+    # section titles
+    "Introduction": "Введение",
+    "Summary of results": "Сводка результатов",
+    "The model and conventions": "Модель и соглашения",
+    "Stitching systems, determinants and the per-edge equations": (
+        "Системы сшивания, определители и уравнения границ"
+    ),
+    "The paper's numbered results, printed against derived": (
+        "Пронумерованные результаты статьи: напечатанное и выведенное"
+    ),
+    "Expansions in the depth": "Разложения по глубине модуляции",
+    "Closings of the intervals": "Смыкания интервалов",
+    "Diagrams: the paper's Figs. 2 and 8 redrawn": "Диаграммы: рис. 2 и 8 статьи",
+    "Accuracy: series, certified values and the Floquet cross-check": (
+        "Точность: ряды, гарантированные значения и проверка через матрицу монодромии"
+    ),
+    "Speed and the time domain": "Скорость и моделирование во времени",
+    "How the numbers are certified": "Как гарантируются числа",
+    "Conclusions": "Заключение",
+    # subsection titles
+    "Units and conventions": "Единицы и соглашения",
+    "Equations of motion and the jump": "Уравнения движения и скачок",
+    "Abbreviations and parameters": "Сокращения и параметры",
+    "The general system": "Общая система",
+    "From the determinant to the normal form": "От определителя к нормальной форме",
+    "Parameters of the normal form": "Параметры нормальной формы",
+    "The paper's remaining reductions": "Остальные преобразования статьи",
+    "Single results": "Отдельные результаты",
+    "Stationary initial conditions on the edges": "Стационарные начальные условия на границах",
+    "Paper model with friction, odd orders": "Модель статьи с трением, нечётные порядки",
+    "Paper model with friction, even orders": "Модель статьи с трением, чётные порядки",
+    "The per-edge equations for every order": "Уравнения границ для любого порядка",
+    "Edges without friction, orders 1 to 6": "Границы без трения, порядки 1--6",
+    "Thresholds with friction": "Пороги с трением",
+    "Edges above the threshold": "Границы выше порога",
+    "General order": "Произвольный порядок",
+    "Speed against error": "Скорость и погрешность",
+    "Time-domain pictures": "Моделирование во времени",
+    "Edge shape odd-cos-sin": "Форма границы odd-cos-sin",
+    "Edge shape odd-sin-cos": "Форма границы odd-sin-cos",
+    "Edge shape even-cos-cos": "Форма границы even-cos-cos",
+    "Edge shape even-sin-sin": "Форма границы even-sin-sin",
+    # table headers and short words
+    "half": "полупериод",
+    "bob down": "груз опущен",
+    "bob up": "груз поднят",
+    "length": "длина",
+    "natural period": "собственный период",
+    "model": "модель",
+    "orders": "порядки",
+    "symbol": "обозначение",
+    "definition": "определение",
+    "result": "результат",
+    "status": "статус",
+    "eq.": "ур.",
+    "agrees": "совпадает",
+    "no friction": "без трения",
+    "paper model": "модель статьи",
+    "exact model": "точная модель",
+    "paper": "модель статьи",
+    "exact": "точная модель",
+    "residual in the equation": "невязка в уравнении",
+    "coupling of the jumps (eq. 14)": "связь скачков (ур. 14)",
+    "decay per period": "затухание за период",
+    "mean frequency": "средняя частота",
+    "frequency difference": "разность частот",
+    "mean natural period (eq. 5)": "средний собственный период (ур. 5)",
+    "eq. 33": "ур. 33",
+    "The paper's abbreviations as the engine defines them.": (
+        "Сокращения статьи в определении программы."
+    ),
+    # captions
+    r"The two halves of a modulation period (time in units of $T_0$, so $\omega_0 = 2\pi$).": (
+        r"Два полупериода модуляции (время в единицах $T_0$, так что $\omega_0 = 2\pi$)."
+    ),
+    r"Intervals of parametric instability without friction (the paper's Fig.~2), orders "
+    r"$n = 1,\dots,6$. Shaded: the rest state is unstable. Dots: closings, labelled with "
+    r"$T_1:T_2$.": (
+        r"Интервалы параметрической неустойчивости без трения (рис.~2 статьи), порядки "
+        r"$n = 1,\dots,6$. Закрашено: положение равновесия неустойчиво. Точки: смыкания с "
+        r"отношением $T_1:T_2$."
+    ),
+    r"Intervals with friction (the paper's Fig.~8): orders 1--3 for no friction and "
+    r"$Q = 7, 5, 3$ (darker: stronger friction). Left: the paper's model; right: the exact "
+    r"damped oscillator.": (
+        r"Интервалы с трением (рис.~8 статьи): порядки 1--3 без трения и при $Q = 7, 5, 3$ "
+        r"(темнее --- сильнее трение). Слева: модель статьи; справа: точный затухающий "
+        r"осциллятор."
+    ),
+    r"Relative error of the series for the lower edge against the certified value, on log--log "
+    r"axes; below $10^{-16}$ no double-precision computation could tell.": (
+        r"Относительная погрешность рядов для нижней границы по сравнению с гарантированным "
+        r"значением, в логарифмическом масштабе; ниже $10^{-16}$ вычисление в двойной точности "
+        r"её не различит."
+    ),
+    r"Median CPU time per edge against the largest relative error of $T/T_0$, per method, over "
+    r"all scenes and over the small depths; the methods that no other beats in both are joined "
+    r"(the Pareto front) and labelled.": (
+        r"Медианное процессорное время на границу и наибольшая относительная погрешность "
+        r"$T/T_0$ для каждого метода, по всем сценам и по малым глубинам модуляции; методы, "
+        r"которые никто не превосходит по обоим показателям, соединены (фронт Парето) и "
+        r"подписаны."
+    ),
+    "Speed against error of every method (from the benchmark).": (
+        "Скорость и погрешность каждого метода (по замерам)."
+    ),
+    r"Growth inside the first interval: the linear model grows without bound, the real "
+    r"pendulum's period lengthens with the amplitude, which detunes it (beats); with friction "
+    r"the beats die out to a steady swing.": (
+        r"Рост внутри первого интервала: в линейной модели колебания растут неограниченно, у "
+        r"реального маятника период растёт с амплитудой, что выводит его из резонанса (биения); "
+        r"с трением биения затухают и устанавливаются колебания постоянного размаха."
+    ),
+    # paragraphs of the model section
+    "Two damping models are carried through everything: paper, the appendix's approximation "
+    "(used by the paper's eqs. 32-45 and its Fig. 8), and exact, the true damped oscillator "
+    "with frequency Omega_i = sqrt(omega_i^2 - gamma^2) and its over- and critically damped "
+    "forms. The gap between them is one of the results.": (
+        r"Всюду рассматриваются две модели трения: модель статьи (приближение приложения, "
+        r"использованное в ур. 32--45 и на рис. 8) и точная --- настоящий затухающий осциллятор "
+        r"с частотой $\Omega_i = \sqrt{\omega_i^2 - \gamma^2}$, включая апериодический и "
+        r"критический режимы. Различие между ними --- один из результатов."
+    ),
+    "Time is measured in units of the natural period": (
+        "Время измеряется в единицах собственного периода"
+    ),
+    "(so": "(так что",
+    "), the modulation period as": "), период модуляции --- как",
+    ", the depth as": ", глубина модуляции --- как",
+    ", friction by the quality factor": ", трение --- добротностью",
+    "; no friction is": "; отсутствие трения --- это",
+    "). The resonance of order": "). Резонанс порядка",
+    "lies near": "лежит вблизи",
+    "; on the edges of its interval the motion is anti-periodic over": (
+        "; на границах его интервала движение антипериодично с периодом"
+    ),
+    "(Floquet multiplier": "(мультипликатор Флоке",
+    ") for odd": ") для нечётных",
+    "and periodic (": "и периодично (",
+    ") for even": ") для чётных",
+    ". The monodromy matrix is taken from": ". Матрица монодромии берётся от момента",
+    ", the start of the bob-down half, over one period.": (
+        ", начала полупериода с опущенным грузом, за один период."
+    ),
+    "Equation numbers without a section prefix, such as (13), are the paper's; numbers such as "
+    "(2.3) are this report's.": (
+        "Номера уравнений без номера раздела, например (13), --- номера статьи; номера вида "
+        "(2.3) --- номера этого отчёта."
+    ),
+    "Between the jumps the linearised equation of motion of half": (
+        "Между скачками линеаризованное уравнение движения на полупериоде"
+    ),
+    "is (eqs. 2--3 with": "имеет вид (ур. 2--3 при",
+    "), as the engine's residual operator states it:": "), как его записывает программа:",
+    "At each jump the angle is continuous and the angular momentum": (
+        "При каждом скачке угол непрерывен, а момент импульса"
+    ),
+    "with": "при",
+    "is conserved (eq. 4): the angular velocity is multiplied by": (
+        "сохраняется (ур. 4): угловая скорость умножается на"
+    ),
+    "when the bob moves up and by the inverse when it moves down.": (
+        "при подъёме груза и на обратную величину при его опускании."
+    ),
+    # stitching
+    "Every step below is checked by the engine. Unless its note says otherwise, the check is "
+    "symbolic: the difference of the two sides reduces to zero exactly (after the trigonometric "
+    "functions are written as exponentials, an identity of rational functions). Where sympy "
+    "cannot reduce it, the note says so and gives the numeric check used instead: random points "
+    "at 40 digits and the largest relative residual.": (
+        "Каждый шаг ниже проверен программой. Если в примечании не сказано иное, проверка "
+        "символьная: разность двух частей в точности сводится к нулю (после записи "
+        "тригонометрических функций через экспоненты --- тождество рациональных функций). Где "
+        "sympy не справляется, это указано вместе с численной проверкой: случайные точки с 40 "
+        "знаками и наибольшая относительная невязка."
+    ),
+    "Both halves symmetric about their midpoints: a cos on the bob-down half, a sin on the bob-up "
+    "half (odd orders; the paper's lower edge of the first interval):": (
+        "Оба полупериода симметричны относительно своих середин: cos на полупериоде с опущенным "
+        "грузом, sin --- с поднятым (нечётные порядки; нижняя граница первого интервала в статье):"
+    ),
+    "Both halves symmetric about their midpoints: a sin on the bob-down half, a cos on the bob-up "
+    "half (odd orders; the paper's upper edge of the first interval):": (
+        "Оба полупериода симметричны относительно своих середин: sin на полупериоде с опущенным "
+        "грузом, cos --- с поднятым (нечётные порядки; верхняя граница первого интервала в "
+        "статье):"
+    ),
+    "Both halves symmetric about their midpoints: a cos on the bob-down half, a cos on the bob-up "
+    "half (even orders; the paper's edge of the second interval):": (
+        "Оба полупериода симметричны относительно своих середин: cos на обоих полупериодах "
+        "(чётные порядки; граница второго интервала в статье):"
+    ),
+    "Both halves symmetric about their midpoints: a sin on the bob-down half, a sin on the bob-up "
+    "half (even orders; the other edge of even intervals, which the paper does not write):": (
+        "Оба полупериода симметричны относительно своих середин: sin на обоих полупериодах "
+        "(чётные порядки; другая граница чётных интервалов, которую статья не выписывает):"
+    ),
+    "The single results, the stationary initial conditions on the edges, and the paper model with "
+    "friction (the paper's appendix), each step derived from the previous one:": (
+        "Отдельные результаты, стационарные начальные условия на границах и модель статьи с "
+        "трением (приложение статьи); каждый шаг выведен из предыдущего:"
+    ),
+    "The monodromy matrix has determinant": "Определитель матрицы монодромии равен",
+    "in every model:": "во всех моделях:",
+    "and for even orders": "и для чётных порядков",
+    "A stationary oscillation on an edge is made of two free segments, ": (
+        "Стационарное колебание на границе состоит из двух отрезков свободных колебаний: "
+    ),
+    "on": "на",
+    "and": "и",
+    # catalogue
+    "For each numbered result the engine transcribes the printed formula (the thing being "
+    "checked), derives the same result from the model, and decides whether the two agree: "
+    "symbolically where sympy can (an exact identity of rational functions after the "
+    "abbreviations are expanded), otherwise at random points with 40 digits. An entry whose "
+    "printed and derived forms are simply the same equation, decided symbolically, says nothing "
+    "more; every other entry says how it was decided. Where they differ, the entry shows the "
+    "smallest sub-expressions in which they part and the correct form.": (
+        "Для каждого пронумерованного результата программа переписывает напечатанную формулу "
+        "(предмет проверки), выводит тот же результат из модели и решает, совпадают ли они: "
+        "символьно, где это удаётся sympy (точное тождество рациональных функций после "
+        "раскрытия сокращений), иначе --- в случайных точках с 40 знаками. Если напечатанная и "
+        "выведенная формы --- просто одно и то же уравнение и это доказано символьно, больше "
+        "ничего не сказано; в остальных случаях указано, как принято решение. Где формы "
+        "расходятся, показаны наименьшие различающиеся подвыражения и верная форма."
+    ),
+    "Printed:": "В статье:",
+    "Derived:": "Выведено:",
+    # model section
+    r"Free-oscillation segments of each damping model, and what is left when the segment is put "
+    r"into the equation of motion (computed by the engine). The paper's segment misses the "
+    r"equation by $\gamma^2\varphi$: its frequency is the undamped one and its derivative is "
+    r"taken as if $e^{-\gamma t}$ were constant. The critically damped segment solves the "
+    r"equation exactly at $\gamma = \omega_1$, where its residual vanishes.": (
+        r"Отрезки свободных колебаний в каждой модели трения и невязка при подстановке отрезка "
+        r"в уравнение движения (вычислено программой). Отрезок статьи не удовлетворяет "
+        r"уравнению на $\gamma^2\varphi$: его частота --- частота без трения, а производная "
+        r"взята так, будто $e^{-\gamma t}$ постоянна. Отрезок критического затухания точно "
+        r"удовлетворяет уравнению при $\gamma = \omega_1$, где его невязка обращается в нуль."
+    ),
+    r"The factor between the determinant of the four stitching conditions and "
+    r"$\det(M-\sigma I)$, found as the ratio of the two (a symbolic identity: the ratio is free of "
+    r"the oscillating terms). The boundary condition \emph{is} the statement that "
+    r"$\sigma = (-1)^n$ is a Floquet multiplier.": (
+        r"Множитель между определителем четырёх условий сшивания и $\det(M-\sigma I)$, найденный "
+        r"как их отношение (символьное тождество: отношение не содержит осциллирующих членов). "
+        r"Условие границы \emph{и есть} утверждение, что $\sigma = (-1)^n$ --- мультипликатор "
+        r"Флоке."
+    ),
+    r"The per-edge equations in $\theta$ for $n = 1,\dots,6$, with "
+    r"$\beta = (\omega_2-\omega_1)/(\omega_2+\omega_1)$ and $r = (q-1)/(q+1)$.": (
+        r"Уравнения границ относительно $\theta$ для $n = 1,\dots,6$, где "
+        r"$\beta = (\omega_2-\omega_1)/(\omega_2+\omega_1)$ и $r = (q-1)/(q+1)$."
+    ),
+    r"Every closing of the intervals of order $n\le 12$: $\omega_1T/2 = a\pi$, "
+    r"$\omega_2T/2 = b\pi$, $m = (b^2-a^2)/(b^2+a^2)$, $T = ab\sqrt{2/(a^2+b^2)}\,T_0$.": (
+        r"Все смыкания интервалов порядка $n\le 12$: $\omega_1T/2 = a\pi$, $\omega_2T/2 = b\pi$, "
+        r"$m = (b^2-a^2)/(b^2+a^2)$, $T = ab\sqrt{2/(a^2+b^2)}\,T_0$."
+    ),
+    r"$|\det(M-\sigma I)|$, relative to the size of $M$, at the certified edges of "
+    r"Table~\ref{tab:certified}.": (
+        r"$|\det(M-\sigma I)|$ относительно величины $M$ на гарантированных границах "
+        r"таблицы~\ref{tab:certified}."
+    ),
+    r"The third interval at $Q = 7$ in detail (dark), inside the frictionless interval (light). "
+    r"Bars on the left: the proven existence ranges; dashed: the paper's 48\,\% and 66\,\%.": (
+        r"Третий интервал при $Q = 7$ (тёмный) внутри интервала без трения (светлый). Полосы "
+        r"слева: доказанные области существования; пунктир: 48\,\% и 66\,\% из статьи."
+    ),
+    "Certified edges, 35 significant digits.": "Гарантированные границы, 35 значащих цифр.",
+    "Without friction": "Без трения",
+    "Exact tuning": "Точная настройка",
+    "Average period": "Средний период",
+    "Naive resonance condition": "Простейшее условие резонанса",
+    # expansions
+    "Each edge is the root of one per-edge factor (": (
+        "Каждая граница --- корень одного множителя ("
+    ),
+    "The same computation with the order kept as a symbol": (
+        "То же вычисление с порядком в виде символа"
+    ),
+    "Width and centre for odd orders, leading terms:": (
+        "Ширина и центр для нечётных порядков, главные члены:"
+    ),
+    "Width and centre for even orders, leading terms:": (
+        "Ширина и центр для чётных порядков, главные члены:"
+    ),
+    "With friction an interval exists only above a threshold depth m_min(Q). At the threshold the "
+    "instability indicator has a double zero in theta (a tangency); in the distinguished scaling "
+    "1/Q = lambda m^p (p = 1 for odd orders, 2 for even) both conditions are solved as series and "
+    "reverted. Both damping models:": (
+        r"С трением интервал существует лишь при глубине модуляции выше пороговой "
+        r"$m_{\min}(Q)$. На пороге индикатор неустойчивости имеет двукратный нуль по $\theta$ "
+        r"(касание); в выделенном масштабе $1/Q = \lambda m^p$ ($p = 1$ для нечётных порядков, 2 "
+        r"для чётных) оба условия решаются в виде рядов, которые затем обращаются. Обе модели "
+        r"трения:"
+    ),
+    "Above the threshold the edges are series in m at fixed s = sqrt(1 - (m_min0/m)^(2p)), with "
+    "m_min0 the leading threshold; the paper's eqs. (40) and (45) are the first terms. Both "
+    "damping "
+    "models, in units of T_0:": (
+        r"Выше порога границы --- ряды по $m$ при фиксированном "
+        r"$s = \sqrt{1 - (m_{\min,0}/m)^{2p}}$, где $m_{\min,0}$ --- главный член порога; ур. (40) "
+        r"и (45) статьи --- первые члены. Обе модели трения, в единицах $T_0$:"
+    ),
+    # closings
+    "The paper shows closings of the third, fourth and fifth intervals in its Fig. 2 and links "
+    "them to": "Статья показывает смыкания третьего, четвёртого и пятого интервалов на рис. 2 и "
+    "связывает их с",
+    "(its Section 5); the theorem says these are instances of one rule and that there are no "
+    "others. The derivation, each step checked by the engine:": (
+        "(разд. 5); теорема утверждает, что это частные случаи одного правила и других нет. "
+        "Вывод, каждый шаг которого проверен программой:"
+    ),
+    r"Table~\ref{tab:closings} lists every closing of the orders $1,\dots,12$. The period is "
+    r"printed with 40 correctly rounded significant digits from an interval enclosure; the last "
+    r"column is the independent check: the monodromy matrix built from the free oscillations and "
+    r"the jumps (\texttt{verify.floquet}, 50 digits) at that depth and period, against "
+    r"$(-1)^n I$.": (
+        r"В таблице~\ref{tab:closings} перечислены все смыкания порядков $1,\dots,12$. Период "
+        r"напечатан с 40 правильно округлёнными значащими цифрами по интервальному включению; "
+        r"последний столбец --- независимая проверка: матрица монодромии, построенная из "
+        r"свободных колебаний и скачков (\texttt{verify.floquet}, 50 знаков) при этих глубине и "
+        r"периоде, в сравнении с $(-1)^n I$."
+    ),
+    # diagrams
+    "redraws the paper's Fig. 2: the first six intervals of instability in the plane of the "
+    "modulation period and the depth, without friction, from the certified-equation solver in "
+    "double precision (every edge is a root of one per-edge equation,": (
+        "воспроизводит рис. 2 статьи: первые шесть интервалов неустойчивости на плоскости "
+        "(период модуляции, глубина модуляции) без трения, по решениям уравнений границ в "
+        "двойной точности (каждая граница --- корень одного уравнения границы,"
+    ),
+    "redraws the paper's Fig. 8: the first three intervals without friction and for": (
+        "воспроизводит рис. 8 статьи: первые три интервала без трения и при"
+    ),
+    ", in the paper's damping model (left, which is what the paper computed) and in the exact "
+    "model (right). Friction raises a threshold below which an interval does not exist and "
+    "swallows the neighbourhood of every closing.": (
+        ", в модели трения статьи (слева; её и рассчитывала статья) и в точной модели (справа). "
+        "Трение создаёт порог, ниже которого интервала нет, и поглощает окрестность каждого "
+        "смыкания."
+    ),
+    # performance
+    "The paper's pictures of stationary oscillations, redrawn from simulations that follow the "
+    "pendulum through the jumps half period by half period (exact piecewise propagation of the "
+    "linear model, started on a certified edge from the stationary initial condition of ": (
+        "Рисунки статьи со стационарными колебаниями, перестроенные по моделированию, которое "
+        "ведёт маятник через скачки полупериод за полупериодом (точное кусочное решение "
+        "линейной модели, начатое на гарантированной границе со стационарного начального "
+        "условия из "
+    ),
+    "). The line above each run states its closure error after one (anti)period: the state "
+    "returns to where it started to the working precision, which is the time-domain check that "
+    "the edge and the initial condition are right.": (
+        "). Строка над каждым прогоном указывает ошибку замыкания через один (анти)период: "
+        "состояние возвращается к исходному с рабочей точностью, что и есть проверка во времени "
+        "правильности границы и начального условия."
+    ),
+    # the catalogue's titles
+    "Equations of motion in each half": "Уравнения движения на каждом полупериоде",
+    "Angular-momentum jump": "Скачок момента импульса",
+    "Closings of intervals": "Смыкания интервалов",
+    "Third interval with friction": "Третий интервал с трением",
+    "Average frequency and period at small depth": (
+        "Средние частота и период при малой глубине модуляции"
+    ),
+    "Segments on the lower edge of the first interval": (
+        "Отрезки на нижней границе первого интервала"
+    ),
+    "Angle continuity at t = 0": "Непрерывность угла при $t = 0$",
+    "Momentum jump at t = 0": "Скачок момента импульса при $t = 0$",
+    "Determinant of (10)-(11)": "Определитель (10)--(11)",
+    "Product-to-sum form of (12)": "(12) с произведениями, записанными как суммы",
+    "q as a function of m": "$q$ как функция $m$",
+    "Fixed-point form for Delta T (first interval)": (
+        "Форма для итераций по $\\Delta T$ (первый интервал)"
+    ),
+    "Left edge of the third interval (section 3.2)": "Левая граница третьего интервала (разд. 3.2)",
+    "Stationary initial condition on the lower edge (after eq. 15)": (
+        "Стационарное начальное условие на нижней границе (после ур. 15)"
+    ),
+    "Segments on the upper edge of the first interval": (
+        "Отрезки на верхней границе первого интервала"
+    ),
+    "First interval at small depth": "Первый интервал при малой глубине модуляции",
+    "Third interval at small depth": "Третий интервал при малой глубине модуляции",
+    "Asymmetry and width of the third interval": "Асимметрия и ширина третьего интервала",
+    "Segments on the lower edge of the second interval": (
+        "Отрезки на нижней границе второго интервала"
+    ),
+    "Angle continuity at t = 0 (second interval)": (
+        "Непрерывность угла при $t = 0$ (второй интервал)"
+    ),
+    "Momentum jump at t = 0 (second interval)": (
+        "Скачок момента импульса при $t = 0$ (второй интервал)"
+    ),
+    "Determinant of (22)-(23)": "Определитель (22)--(23)",
+    "Product-to-sum form of (24)": "(24) с произведениями, записанными как суммы",
+    "Fixed-point form for Delta T (second interval)": (
+        "Форма для итераций по $\\Delta T$ (второй интервал)"
+    ),
+    "Stationary initial condition on the lower edge of the second interval": (
+        "Стационарное начальное условие на нижней границе второго интервала"
+    ),
+    "Second interval at small depth": "Второй интервал при малой глубине модуляции",
+    "Damped segments (paper model)": "Отрезки с затуханием (модель статьи)",
+    "Periodicity conditions, odd orders with friction": (
+        "Условия периодичности, нечётные порядки с трением"
+    ),
+    "Homogeneous system for A, B": "Однородная система для $A$, $B$",
+    "Notation C_i, S_i": "Обозначения $C_i$, $S_i$",
+    "Determinant of (32)": "Определитель (32)",
+    "Product to sum": "Произведения как суммы",
+    "Boundary equation, odd orders with friction": "Уравнение границы, нечётные порядки с трением",
+    "Threshold condition of the first interval": "Условие порога первого интервала",
+    "Threshold of the first interval": "Порог первого интервала",
+    "Fixed-point form with friction (first interval)": (
+        "Форма для итераций с трением (первый интервал)"
+    ),
+    "Cross-reference after eq. (39)": "Ссылка после ур. (39)",
+    "First interval near the threshold": "Первый интервал вблизи порога",
+    "Cross-reference before eq. (40)": "Ссылка перед ур. (40)",
+    "Boundary equation, even orders with friction": "Уравнение границы, чётные порядки с трением",
+    "Threshold condition of the second interval": "Условие порога второго интервала",
+    "Threshold of the second interval": "Порог второго интервала",
+    "Fixed-point form with friction (second interval)": (
+        "Форма для итераций с трением (второй интервал)"
+    ),
+    "Cross-reference after eq. (44)": "Ссылка после ур. (44)",
+    "Second interval near the threshold": "Второй интервал вблизи порога",
+    # the paper's time-domain figures
+    "Stationary oscillation on the lower edge of the first interval (near $T = T_{av}/2$)": (
+        "Стационарные колебания на нижней границе первого интервала (вблизи $T = T_{av}/2$)"
+    ),
+    "Stationary oscillation on the upper edge of the first interval": (
+        "Стационарные колебания на верхней границе первого интервала"
+    ),
+    "Stationary oscillations on the lower and upper edges of the third interval "
+    "($T \\approx 3T_{av}/2$)": (
+        "Стационарные колебания на нижней и верхней границах третьего интервала "
+        "($T \\approx 3T_{av}/2$)"
+    ),
+    "Growth of the oscillation at the second-order resonance ($T \\approx T_{av}$)": (
+        "Нарастание колебаний при резонансе второго порядка ($T \\approx T_{av}$)"
+    ),
+    "Stationary oscillation on the lower edge of the second interval (near $T = T_{av}$)": (
+        "Стационарные колебания на нижней границе второго интервала (вблизи $T = T_{av}$)"
+    ),
+    "Closing of the third interval: $T_1 : T_2 = 2 : 1$ ($m = 3/5$), every solution is periodic": (
+        "Смыкание третьего интервала: $T_1 : T_2 = 2 : 1$ ($m = 3/5$), любое решение периодично"
+    ),
+    "Stationary oscillation on the lower edge of the first interval with friction ($Q = 3$)": (
+        "Стационарные колебания на нижней границе первого интервала с трением ($Q = 3$)"
+    ),
+    # checks
+    r"\emph{Check:}": r"\emph{Проверка:}",
+    "holds up to the non-vanishing factor": "выполняется с точностью до ненулевого множителя",
+    "(proved symbolically)": "(доказано символьно)",
+    r"\emph{Printed:}": r"\emph{В статье:}",
+    r"\emph{Derived:}": r"\emph{Выведено:}",
+    # diagrams, accuracy, performance
+    "Section": "раздел",
+    "Table": "таблица",
+    "The intervals of order": "Интервалы порядка",
+    "pinch to zero width at the closings of": "стягиваются в точку в смыканиях из",
+    "(dots, labelled": "(точки с подписью",
+    "); within the figure these are the ratios": "); на рисунке это отношения",
+    ". The paper names 2:1, 3:1 and 3:2.": ". Статья называет 2:1, 3:1 и 3:2.",
+    "compares the series of": "сравнивает ряды из",
+    "truncated after the powers": "оборванные после степеней",
+    "with the certified lower edges (40 proven digits). The error falls off as the first "
+    "neglected power: the fitted slopes at the smallest depths are": (
+        "с гарантированными нижними границами (40 доказанных знаков). Погрешность убывает как "
+        "первая отброшенная степень: наклоны, подобранные при наименьших глубинах модуляции,"
+    ),
+    ". The truncation through": ". Обрыв после",
+    "is the form the paper prints for": "--- та форма, которую статья печатает для",
+    "(eqs. 18, 27, 19; see the catalogue for where it agrees).": (
+        "(ур. 18, 27, 19; где она совпадает --- см. разбор результатов статьи)."
+    ),
+    r"\textbf{Floquet cross-check.}": r"\textbf{Проверка через матрицу монодромии.}",
+    "The monodromy matrix": "Матрица монодромии",
+    "is built independently of the determinants, as the product of the half-period maps and the "
+    "jumps, and evaluated at each certified edge with": (
+        "строится независимо от определителей, как произведение отображений за полупериоды и "
+        "скачков, и вычисляется на каждой гарантированной границе с"
+    ),
+    "digits. On an edge": "знаками. На границе",
+    "must be a multiplier, i.e.": "должно быть мультипликатором, т.\u00a0е.",
+    r"(Table~\ref{tab:floquet}):": r"(таблица~\ref{tab:floquet}):",
+    "the residuals are at the level of the": "невязки --- на уровне",
+    "digits the edges are given to.": "знаков, с которыми даны границы.",
+    "Every way the engine offers to compute an edge -- the series, the paper's fixed-point "
+    "iteration, double precision per point and on a grid, uncertified mpmath, the certified "
+    "solver, plain root finding on the printed equations and the automatic choice -- timed on "
+    "the same scenes (orders 1 to 6 on a grid of depths, and the hard cases: tiny depth, depth "
+    "near 1, closings, thresholds with friction, order 100) and compared with a certified "
+    "reference of 60 digits": (
+        "Все способы, которыми программа вычисляет границу, --- ряды, итерации статьи, двойная "
+        "точность в точке и на сетке, mpmath без гарантии, гарантированный решатель, обычный "
+        "поиск корня напечатанных уравнений и автоматический выбор --- измерены на одних и тех "
+        "же сценах (порядки 1--6 на сетке глубин модуляции и трудные случаи: очень малая "
+        "глубина, глубина около 1, смыкания, пороги с трением, порядок 100) и сравнены с "
+        "гарантированным эталоном в 60 знаков"
+    ),
+    r"(Figure~\ref{fig:pareto}, Table~\ref{tab:speed}).": (
+        r"(рис.~\ref{fig:pareto}, таблица~\ref{tab:speed})."
+    ),
+}
+
+PATTERNS: list[tuple[str, object]] = [
+    (
+        r"The third-order island at Q = (\d+) \(Figure",
+        r"Остров третьего порядка при $Q = \1$ (рис.",
+    ),
+    (
+        r"The paper says the region vanishes above about (\d+)% depth and returns above about "
+        r"(\d+)%\. The engine's existence ranges, each end proven by interval arithmetic "
+        r"\((\d+) digits\), are in Table",
+        r"Статья говорит, что область исчезает при глубине модуляции выше примерно \1% и "
+        r"появляется снова выше примерно \2%. Области существования, найденные программой "
+        r"(каждый конец доказан интервальной арифметикой, \3 знаков), приведены в таблице",
+    ),
+    (
+        r"it vanishes at ([\d.]+)% in the paper model \((within|not within) one percentage point "
+        r"of the paper's (\d+)%\); it returns at ([\d.]+)% in the paper model \((within|not "
+        r"within) one percentage point of the paper's (\d+)%\); the exact model gives ([\d.]+)% "
+        r"and ([\d.]+)%\.",
+        lambda m: (
+            f"в модели статьи она исчезает при {m[1]}% "
+            f"({'в пределах' if m[2] == 'within' else 'вне'} одного процентного пункта от "
+            f"{m[3]}% статьи) и появляется снова при {m[4]}% "
+            f"({'в пределах' if m[5] == 'within' else 'вне'} одного процентного пункта от "
+            f"{m[6]}% статьи); точная модель даёт {m[7]}% и {m[8]}%."
+        ),
+    ),
+    (
+        r"Against the paper: (.*)\. Among the first six intervals \(those of its Fig\. 2\) the "
+        r"theorem also gives (.*), which lie at depths above those the paper discusses\.",
+        lambda m: (
+            "Сравнение со статьёй: "
+            + m[1].replace(" closes orders ", " смыкает порядки ").replace(" at m = ", " при m = ")
+            + ". Среди первых шести интервалов (рис. 2 статьи) теорема даёт ещё "
+            + m[2]
+            + "; они лежат при глубинах модуляции больших, чем обсуждаемые в статье."
+        ),
+    ),
+    (
+        r"Measured by paramres bench \((.*)\)\.",
+        r"Измерено командой paramres bench (\1).",
+    ),
+    (r"Figure~\\ref\{([^}]*)\}", r"Рис.~\\ref{\1}"),
+    (r"Table~\\ref\{([^}]*)\}", r"Таблица~\\ref{\1}"),
+    (r"Section~\\ref\{([^}]*)\}", r"Раздел~\\ref{\1}"),
+    (
+        r"The paper's numbered results: (\d+) checked, (\d+) agree with the derivation, (\d+) "
+        r"differ \(misprints or wrong statements; the correct forms are given below\)\. Click an "
+        r"equation number for the entry\.",
+        r"Пронумерованные результаты статьи: проверено \1, с выводом совпадают \2, расходятся "
+        r"\3 (опечатки или неверные утверждения; верные формы приведены ниже). Номер уравнения "
+        r"--- ссылка на разбор.",
+    ),
+    (
+        r"Depth ranges in which the third interval exists at \$Q = (\d+)\$ \(proven ends\)\.",
+        r"Глубины модуляции, при которых третий интервал существует при $Q = \1$ (доказанные "
+        r"концы).",
+    ),
+    (
+        r"The paper's Fig\.~(\d+) redrawn: (.*)",
+        r"Рис.~\1 статьи, перестроенный: \2",
+    ),
+]

@@ -1,0 +1,338 @@
+"""Section 2: the findings up front -- the paper's errata with the corrected formulas, the closing
+theorem, the thresholds with friction and the third-order island at ``Q = 7``, every formula and
+number taken from the engine's objects (:func:`analytic.catalogue.catalogue`,
+:func:`analytic.closings.closings`, :func:`analytic.thresholds.threshold_series`,
+:func:`verify.existence.existence` through the diagrams' data)."""
+
+from __future__ import annotations
+
+import re
+
+import sympy as sp
+
+from analytic.model import S
+
+from ..i18n import say
+from ..latex import (
+    Latex,
+    break_source,
+    inline,
+    math,
+    notation,
+    paragraph,
+    prose,
+    raw,
+    slashed,
+    table,
+)
+from . import Context, Part, shared
+from .catalogue import anchor, eq_text
+from .catalogue import rows as catalogue_rows
+
+TITLE = "Summary of results"
+LABEL = "sec:summary"
+
+#: orders whose closings are listed in the summary (the paper's Fig. 2 shows orders 1 to 6)
+LISTED_ORDERS = 6
+#: the width (in characters, see :func:`reports.latex.visible_width`) of a formula line in the
+#: errata table before it is broken
+CELL_WIDTH = 28
+#: the most lines one formula may take in the errata table
+CELL_LINES = 2
+#: closings are counted up to this order (as in the closings section)
+MAX_ORDER = 12
+
+
+def _closings():
+    from analytic.closings import closings
+
+    return closings(MAX_ORDER)
+
+
+def _thresholds():
+    from analytic.thresholds import threshold_series
+
+    out = {}
+    for order in ("odd", "even", 1, 2, 3):
+        t = threshold_series(order, terms=1, damping="paper")
+        out[order] = (t.m_min_leading, t.Q_min)
+    return out
+
+
+def findings(ctx: Context) -> dict:
+    """What the summary and the abstract state, computed once per build."""
+    from .diagrams import ISLAND_ORDER, ISLAND_Q, PAPER_ISLAND_CLAIM, _compute
+
+    rows = catalogue_rows(ctx)
+    cl = shared(ctx, "closings-theorem", _closings)
+    th = shared(ctx, "threshold-leading", _thresholds)
+    island = shared(ctx, "diagram-data", _compute)["ex"]
+    return {
+        "rows": rows,
+        "differs": [r for r in rows if r.status != "agrees"],
+        "closings": cl,
+        "thresholds": th,
+        "island": island,
+        "island_order": ISLAND_ORDER,
+        "island_Q": ISLAND_Q,
+        "island_claim": PAPER_ISLAND_CLAIM,
+    }
+
+
+def _items(src: str) -> list[str]:
+    return [notation(x.strip()) for x in re.split(r",\\quad\s*", src) if x.strip()]
+
+
+def _cell(src: str) -> Latex:
+    """Formulas in a table cell: one per line, each scaled down to the column if too wide; a
+    formula that would take more than :data:`CELL_LINES` lines is left to the full entry."""
+    lines = []
+    for x in _items(src):
+        broken = break_source(x, CELL_WIDTH)
+        if len(broken) > CELL_LINES:
+            if not lines or lines[-1] != r"\dots":
+                lines.append(r"\dots")
+            continue
+        lines.extend(r"\fitcell{" + line.raw + "}" for line in broken)
+    return raw(
+        r"\begin{minipage}[t]{\linewidth}\raggedright "
+        + r"\\[2pt] ".join(lines)
+        + r"\end{minipage}"
+    )
+
+
+def errata_table(f: dict) -> Latex:
+    rows = []
+    for r in f["differs"]:
+        rows.append(
+            [
+                raw(r"\hyperref[cat:" + anchor(r.equation) + "]{" + eq_text(r.equation).raw + "}"),
+                prose(r.title or ""),
+                _cell(r.printed),
+                _cell(r.derived) if r.derived else raw(""),
+            ]
+        )
+    return table(
+        [
+            say("eq.", "ур."),
+            say("result", "результат"),
+            say("printed", "в статье"),
+            say("derived (correct)", "выведено (верно)"),
+        ],
+        rows,
+        columns=r">{\raggedright}p{0.08\linewidth}>{\raggedright}p{0.16\linewidth}"
+        r"p{0.32\linewidth}p{0.32\linewidth}",
+        caption=raw(
+            say(
+                "Errata: the paper's results whose printed form differs from the derivation, "
+                "with the derived (correct) form. Each equation number links to its entry in "
+                "Section~",
+                "Опечатки: результаты статьи, напечатанная форма которых расходится с выводом, "
+                "и выведенная (верная) форма. Номер уравнения --- ссылка на подробный разбор "
+                "в разделе~",
+            )
+            + r"\ref{sec:catalogue}."
+        ),
+        label="tab:errata",
+        long=True,
+        size="small",
+    )
+
+
+def t(en: str, ru: str) -> Latex:
+    """Prose with LaTeX in it, in the report's language."""
+    return raw(say(en, ru))
+
+
+def _step(cl, prefix: str):
+    for s in cl.steps:
+        if s.claim.startswith(prefix):
+            return s.expr
+    raise LookupError(prefix)
+
+
+def closing_depth(cl) -> sp.Equality:
+    """The depth of a closing, ``m = (b^2 - a^2)/(b^2 + a^2)``, as the theorem's step derives it."""
+    return [
+        e for e in _step(cl, "omega2/omega1").args if isinstance(e, sp.Equality) and e.lhs == S.m
+    ][0]
+
+
+def theorem(cl, ctx: Context) -> Latex:
+    cfg = ctx.config
+    a, b, n = sp.symbols("a b n", integer=True, positive=True)
+    m_eq = closing_depth(cl)
+    T_eq = _step(cl, "T = a T1")
+    M_shown = sp.Eq(sp.Symbol("M"), (-1) ** n * sp.Symbol("I"), evaluate=False)
+    c1 = sp.Eq(S.omega1 * S.T / 2, a * sp.pi)
+    c2 = sp.Eq(S.omega2 * S.T / 2, b * sp.pi)
+    ratio = sp.Eq(sp.Symbol("T_1") / sp.Symbol("T_2"), b / a)
+
+    def m(x):
+        return inline(math(x, cfg))
+
+    m_eq = Latex(sp.latex(m_eq.lhs) + " = " + math(m_eq.rhs, cfg, order="rev-lex").raw)
+    return paragraph(
+        raw(r"\textbf{" + say("Theorem (closings).", "Теорема (о смыканиях).") + "}"),
+        t(
+            "Without friction the edges of the $n$-th interval of instability meet (the interval "
+            "closes) exactly where",
+            "Без трения границы $n$-го интервала неустойчивости смыкаются (интервал "
+            "стягивается в точку) в точности там, где",
+        ),
+        m(c1),
+        t("and", "и"),
+        m(c2),
+        t("with integers", "при целых"),
+        inline(raw(r"1 \le a < b")),
+        ",",
+        inline(raw("a + b = n")),
+        ";",
+        t("there", "при этом"),
+        raw(
+            r"\["
+            + math(m_eq, cfg).raw
+            + r",\qquad "
+            + math(ratio, cfg).raw
+            + r",\qquad "
+            + math(T_eq, cfg).raw
+            + r"\,T_0,\qquad "
+            + math(M_shown, cfg).raw
+            + r"\]"
+        ),
+        t(
+            "with $M$ the monodromy matrix over one period. There are no other closings.",
+            "где $M$ --- матрица монодромии за период. Других смыканий нет.",
+        ),
+    )
+
+
+def build(ctx: Context) -> Part:
+    f = findings(ctx)
+    cfg = ctx.config
+    rows, differs, cl = f["rows"], f["differs"], f["closings"]
+    out: list[Latex] = []
+    out.append(
+        paragraph(
+            t(
+                f"The engine checks {len(rows)} numbered results of the paper. "
+                f"{len(rows) - len(differs)} agree with the derivation; {len(differs)} do not "
+                "(Table~",
+                f"Программа проверяет {len(rows)} пронумерованных результатов статьи: "
+                f"{len(rows) - len(differs)} совпадают с выводом, {len(differs)} --- нет "
+                "(таблица~",
+            ),
+            raw(r"\ref{tab:errata}):"),
+            t(
+                "misprinted formulas, a lost factor, wrong cross-references, and threshold "
+                "conditions read at exact tuning where the threshold is a tangency.",
+                "опечатки в формулах, потерянный множитель, неверные ссылки и условия порога, "
+                "записанные при точной настройке, тогда как порог --- это касание.",
+            ),
+        )
+    )
+    out.append(errata_table(f))
+    out.append(theorem(cl, ctx))
+    pairs = {}
+    for c in cl:
+        if c.order <= LISTED_ORDERS:
+            pairs.setdefault((c.reduced_ratio, c.m), []).append(c.order)
+    listed = []
+    for (ratio, mval), orders in sorted(pairs.items(), key=lambda kv: kv[0][1]):
+        listed.append(
+            inline(raw(ratio.replace(":", "\\!:\\!")))
+            + " ("
+            + inline(raw(f"m = {mval.numerator}/{mval.denominator}"))
+            + ", "
+            + (t("order", "порядок") if len(orders) == 1 else t("orders", "порядки"))
+            + " "
+            + inline(raw(", ".join(str(o) for o in orders)))
+            + ")"
+        )
+    out.append(
+        paragraph(
+            t(
+                f"Up to order {MAX_ORDER} there are {len(cl)} closings (Section~",
+                f"До порядка {MAX_ORDER} имеется {len(cl)} смыканий (раздел~",
+            ),
+            raw(r"\ref{sec:closings});"),
+            t(
+                f"within the first {LISTED_ORDERS} intervals, those of the paper's Fig.~2, they "
+                "are at",
+                f"в первых {LISTED_ORDERS} интервалах, показанных на рис.~2 статьи, это",
+            ),
+            raw("; ".join(x.raw for x in listed) + "."),
+            t(
+                "The paper names the first three ratios and explains $2:1$.",
+                "Статья называет первые три отношения и объясняет $2:1$.",
+            ),
+        )
+    )
+    th = f["thresholds"]
+    mmin = sp.Symbol(r"m_{\min}")
+    odd, even = th["odd"][0], th["even"][0]
+    out.append(
+        paragraph(
+            t(
+                "With friction (quality factor $Q$) an interval exists only above a threshold "
+                "depth; to leading order in $1/Q$, in both damping models,",
+                "С трением (добротность $Q$) интервал существует лишь при глубине модуляции выше "
+                "пороговой; в главном порядке по $1/Q$, в обеих моделях трения,",
+            ),
+            raw(
+                r"\["
+                + math(sp.Eq(mmin, odd), cfg).raw
+                + r"\quad\text{"
+                + say("(odd } n\\text{)", "(нечётные } n\\text{)")
+                + r"},\qquad "
+                + math(sp.Eq(mmin, even), cfg).raw
+                + r"\quad\text{"
+                + say("(even } n\\text{)", "(чётные } n\\text{)")
+                + r"}.\]"
+            ),
+            t(
+                "For $n = 1, 2, 3$ these are the paper's",
+                "При $n = 1, 2, 3$ это пороги статьи",
+            ),
+            inline(slashed(sp.Eq(mmin, th[1][0]), cfg)),
+            ",",
+            inline(slashed(sp.Eq(mmin, th[2][0]), cfg)),
+            t("and", "и"),
+            inline(slashed(sp.Eq(mmin, th[3][0]), cfg)),
+            t(
+                "(eqs. 38, 43 and Section 6); for every other order they are new (Section~",
+                "(ур. 38, 43 и разд. 6); для остальных порядков они новые (раздел~",
+            ),
+            raw(r"\ref{sec:expansions})."),
+        )
+    )
+    ex = f["island"]
+    lo, hi = (round(100 * x) for x in f["island_claim"])
+
+    def rng(model):
+        ranges = ex[model][1]
+        if len(ranges) < 2:
+            return raw(say("no gap", "разрыва нет"))
+        return inline(raw(f"{ranges[0][1]} < m < {ranges[1][0]}"))
+
+    out.append(
+        paragraph(
+            t(
+                f"At $Q = {f['island_Q']}$ the interval of order {f['island_order']} vanishes for",
+                f"При $Q = {f['island_Q']}$ интервал порядка {f['island_order']} исчезает при",
+            ),
+            rng("paper"),
+            t("in the paper's model and for", "в модели статьи и при"),
+            rng("exact"),
+            raw(
+                say(
+                    r"in the exact one (ends proven in interval arithmetic); the paper reads "
+                    rf"``about {lo}\,\%'' and ``about {hi}\,\%'' off its Fig.~8 (Section~",
+                    r"в точной модели (концы доказаны интервальной арифметикой); статья "
+                    rf"оценивает по рис.~8: <<около {lo}\,\%>> и <<около {hi}\,\%>> (раздел~",
+                )
+            ),
+            raw(r"\ref{sec:diagrams})."),
+        )
+    )
+    return Part(Latex("\n\n".join(b.raw for b in out)))

@@ -1,0 +1,244 @@
+"""The report as a document a reader is handed: front matter, findings first, conclusions and
+references last, PDF metadata, and no machine notation in the text -- in English and in Russian.
+
+The English report is built once (from the CLI, so that the producing command is recorded), the
+Russian one once more from the same cache.  The LaTeX source is always checked; where ``pdflatex``,
+``pdftotext`` and ``pdfinfo`` are installed (and, for Russian, Cyrillic TeX) the PDF is checked too.
+"""
+
+from __future__ import annotations
+
+import re
+import shutil
+import subprocess
+import unicodedata
+from datetime import datetime, timezone
+
+import pytest
+
+from reports.bibliography import ENTRIES
+from reports.build import find_engine, supports
+from reports.cli import main
+from reports.report import tex_name
+from reports.sections import SECTIONS, load
+
+pytestmark = pytest.mark.slow
+
+HAVE_PDF_TOOLS = (
+    find_engine() is not None
+    and shutil.which("pdftotext") is not None
+    and shutil.which("pdfinfo") is not None
+)
+HAVE = {"en": HAVE_PDF_TOOLS, "ru": HAVE_PDF_TOOLS and supports("ru")}
+
+#: machine notation that must not reach a reader: Python/ASCII maths and Python values, an escaped
+#: underscore, a command-line option whose double hyphen became a dash, and the check sentence
+#: that used to follow every step
+FORBIDDEN = {
+    "Python power": r"\*\*",
+    "ASCII power": r"[A-Za-z0-9)]\^[0-9(]",
+    "sqrt( call": r"\bsqrt\(",
+    "spelled Greek": r"\b(omega|gamma|theta|Delta|lambda|lam)(_?[a-z0-9]+)?\b",
+    "Python bool": r"\b(True|False)\b",
+    "dN/dtheta": r"dN/dtheta",
+    "eps =": r"\beps\s*=",
+    "escaped underscore": r"(?<!x86)\\_",  # a machine name such as x86_64 may have one
+    "option with a dash": r"[\u2013\u2014](order|terms|m|Q|out|lang|digits|tol)\b",
+    "repeated check": r"Check: proved symbolically",
+    "ASCII minus-plus": r"(\+-|-\+) ",
+}
+
+
+@pytest.fixture(scope="module")
+def reports(tmp_path_factory):
+    """The English and the Russian report, built by the command a user types."""
+    cache = tmp_path_factory.mktemp("cache")
+    out = {}
+    for lang in ("en", "ru"):
+        directory = tmp_path_factory.mktemp(lang) / "report"
+        args = ["report", "--out", str(directory), "--cache", str(cache), "-q"]
+        if lang != "en":
+            args += ["--lang", lang]
+        assert main(args) == 0
+        out[lang] = directory
+    return out
+
+
+def _tex(reports, lang) -> str:
+    return (reports[lang] / tex_name(lang)).read_text(encoding="utf-8")
+
+
+def _pdf(reports, lang):
+    return reports[lang] / tex_name(lang).replace(".tex", ".pdf")
+
+
+def _pdf_text(reports, lang) -> str:
+    out = subprocess.run(
+        ["pdftotext", str(_pdf(reports, lang)), "-"], capture_output=True, check=True
+    )
+    text = unicodedata.normalize("NFKC", out.stdout.decode("utf-8", "replace"))
+    return re.sub(r"\s+", " ", text)
+
+
+def _prose(tex: str) -> str:
+    """The source without its mathematics, verbatim text and commands' arguments that are names
+    (labels, references, citations, files): what is left is what a reader reads as words."""
+    tex = tex.split(r"\begin{document}", 1)[1]
+    tex = re.sub(
+        r"\\begin\{(equation|multline|gather|align)\*?\}.*?\\end\{\1\*?\}", " ", tex, flags=re.S
+    )
+    tex = re.sub(r"\\\[.*?\\\]", " ", tex, flags=re.S)
+    tex = _drop_command(tex, r"\fitcell")
+    tex = re.sub(r"(?<!\\)\$.*?(?<!\\)\$", " ", tex, flags=re.S)
+    tex = re.sub(
+        r"\\(label|ref|cite|includegraphics|hyperref|url|bibitem)(\[[^\]]*\])?\{[^}]*\}", " ", tex
+    )
+    return tex
+
+
+def _drop_command(tex: str, name: str) -> str:
+    """``tex`` without every ``name{...}`` (balanced braces)."""
+    out, pos = [], 0
+    while (k := tex.find(name + "{", pos)) >= 0:
+        out.append(tex[pos:k])
+        depth, j = 0, k + len(name)
+        while j < len(tex):
+            depth += {"{": 1, "}": -1}.get(tex[j], 0) if tex[j - 1] != "\\" else 0
+            j += 1
+            if depth == 0:
+                break
+        pos = j
+    out.append(tex[pos:])
+    return " ".join(out)
+
+
+@pytest.mark.parametrize("lang", ["en", "ru"])
+def test_front_matter(reports, lang):
+    import reports.frontmatter as fm
+
+    tex = _tex(reports, lang)
+    head, body = tex.split(r"\begin{document}", 1)
+    assert r"\hypersetup{" in head and "pdftitle={" in head and "pdfauthor={paramres " in head
+    prov = fm.provenance()
+    assert prov.version in head
+    if prov.commit:  # a git checkout: the commit is printed; a wheel install has none
+        assert prov.commit in head
+    today = datetime.now(timezone.utc)
+    assert str(today.year) in head
+    expected = f"paramres report -{{}}-out {reports[lang]}"
+    assert expected in head.replace("-{}-{}", "-{}-"), "the producing command is printed"
+    if lang == "ru":
+        assert "-{}-lang ru" in head.replace("-{}-{}", "-{}-")
+    for piece in (
+        r"\maketitle",
+        r"\begin{abstract}",
+        r"\tableofcontents",
+        r"\listoffigures",
+        r"\listoftables",
+        r"\begin{thebibliography}",
+    ):
+        assert piece in body, piece
+
+
+@pytest.mark.parametrize("lang", ["en", "ru"])
+def test_findings_first_conclusions_and_references_last(reports, lang):
+    tex = _tex(reports, lang)
+    labels = re.findall(r"\\section\{[^}]*\}\\label\{([^}]+)\}", tex)
+    assert labels[:2] == ["sec:introduction", "sec:summary"]
+    assert labels[-1] == "sec:conclusions"
+    assert labels == [load(name).LABEL for name in SECTIONS]
+    assert tex.index(r"\begin{thebibliography}") > tex.index(r"\label{sec:conclusions}")
+    # every entry is cited and every citation has an entry
+    keys = {k for k, _, _ in ENTRIES}
+    cited = {k for group in re.findall(r"\\cite\{([^}]*)\}", tex) for k in group.split(",")}
+    assert cited == keys
+    for key in keys:
+        assert r"\bibitem{" + key + "}" in tex
+    assert r"\label{tab:errata}" in tex
+
+
+def test_summary_numbers_come_from_the_engine(reports):
+    """The summary states the catalogue's counts, the closings' count and the island's ends."""
+    from analytic.catalogue import catalogue
+    from analytic.closings import closings
+    from reports.sections.summary import MAX_ORDER
+
+    tex = _tex(reports, "en")
+    summary = tex.split(r"\label{sec:summary}", 1)[1].split(r"\section{", 1)[0]
+    rows = catalogue()
+    differs = [r for r in rows if r.status != "agrees"]
+    assert f"checks {len(rows)} numbered results" in summary
+    assert f"{len(differs)} do not" in summary
+    assert f"there are {len(closings(MAX_ORDER))} closings" in summary
+    # m_min = n pi/(6Q) (odd) and sqrt(2/(3Q)) (even), as sympy prints them
+    assert r"m_{\min} = \frac{\pi n}{6 Q}" in summary
+    assert r"m_{\min} = \frac{\sqrt{6}}{3 \sqrt{Q}}" in summary
+    # the island at Q = 7 (paper model): the proven ends, as the existence section prints them
+    assert re.search(r"0\.48\d+ < m < 0\.65\d+", summary)
+
+
+@pytest.mark.parametrize("lang", ["en", "ru"])
+def test_no_machine_notation_in_the_prose(reports, lang):
+    prose = _prose(_tex(reports, lang))
+    for what, pattern in FORBIDDEN.items():
+        hit = re.search(pattern, prose)
+        assert hit is None, f"{what}: ...{prose[max(0, hit.start() - 80) : hit.end() + 40]}..."
+
+
+@pytest.mark.parametrize("lang", ["en", "ru"])
+def test_pdf_metadata_and_text(reports, lang):
+    if not HAVE[lang]:
+        pytest.skip(f"no TeX/poppler for {lang}")
+    info = subprocess.run(
+        ["pdfinfo", str(_pdf(reports, lang))], capture_output=True, text=True, check=True
+    ).stdout
+    title = re.search(r"^Title:\s+(.*)$", info, re.M).group(1)
+    author = re.search(r"^Author:\s+(.*)$", info, re.M).group(1)
+    assert author.startswith("paramres ")
+    if lang == "en":
+        assert title.startswith("Regions of parametric excitation")
+    else:
+        assert title.startswith("Области параметрического возбуждения")
+    text = _pdf_text(reports, lang)
+    words = {
+        "en": (
+            "Abstract",
+            "Contents",
+            "List of Figures",
+            "List of Tables",
+            "References",
+            "Summary of results",
+            "Conclusions",
+            "Butikov",
+        ),
+        "ru": (
+            "Аннотация",
+            "Содержание",
+            "Список иллюстраций",
+            "Список таблиц",
+            "Список литературы",
+            "Сводка результатов",
+            "Заключение",
+            "Бутиков",
+            "интервал",
+            "глубина модуляции",
+            "добротность",
+        ),
+    }[lang]
+    for w in words:
+        assert w in text, w
+    for what, pattern in FORBIDDEN.items():
+        if what in ("ASCII power",):  # superscripts extract as plain digits from a PDF
+            continue
+        hit = re.search(pattern, text)
+        assert hit is None, f"{what}: ...{text[max(0, hit.start() - 80) : hit.end() + 40]}..."
+    # the command is printed with its double hyphen
+    assert "paramres report --out" in text
+
+
+def test_bad_language_is_refused(tmp_path, capsys):
+    with pytest.raises(SystemExit) as exc:
+        main(["report", "--out", str(tmp_path / "r"), "--lang", "de"])
+    assert exc.value.code == 2
+    assert "invalid choice" in capsys.readouterr().err
+    assert not (tmp_path / "r").exists()

@@ -1,0 +1,97 @@
+"""The pieces that turn the engine's output into a document's text: the language of a build,
+typeset statements, equation labels, broken long formulas, slashed fractions, short captions."""
+
+from __future__ import annotations
+
+import pytest
+import sympy as sp
+
+from reports.i18n import current, language, say, tr
+from reports.latex import break_source, notation, short_caption, slashed, text
+from reports.phrasebook import lookup
+from reports.sections.catalogue import eq_text
+
+
+def test_language_is_scoped_to_the_build():
+    assert current() == "en"
+    with language("ru"):
+        assert current() == "ru"
+        assert say("order", "порядок") == "порядок"
+    assert current() == "en" and say("order", "порядок") == "order"
+    with pytest.raises(ValueError, match="de"):
+        with language("de"):
+            pass
+
+
+def test_translation_falls_back_to_the_english_text():
+    with language("ru"):
+        assert tr("Summary of results") == "Сводка результатов"
+        assert tr("a sentence nobody translated") == "a sentence nobody translated"
+        assert tr(r"Figure~\ref{fig:x}") == r"Рис.~\ref{fig:x}"
+    assert tr("Summary of results") == "Summary of results"
+
+
+def test_cyrillic_reaches_the_source_only_in_the_russian_report():
+    assert text("Бутиков").raw.isascii()
+    with language("ru"):
+        assert text("Бутиков").raw == "Бутиков"
+
+
+def test_options_keep_their_double_hyphen_and_quotes_open():
+    assert text("paramres series --order 1 --terms K").raw == (
+        "paramres series -{}-{}order 1 -{}-{}terms K"
+    )
+    assert text("eqs. 2--3").raw == "eqs. 2--3"  # a range stays an en dash
+    assert text("the text's 'n > 2' agrees").raw.count("`") == 1
+
+
+def test_engine_statements_are_typeset():
+    en = lookup("T = 3 T_av/2 + Delta T with omega_av T_av = 2 pi; divide by -q - 1.", "en")
+    assert en == (
+        r"With $T = \tfrac{3}{2} T_{av} + \Delta T$ and $\omega_{av} T_{av} = 2\pi$, divided by "
+        r"$-(q + 1)$."
+    )
+    assert lookup("continuity of the angle at t = 0.", "ru") == "Непрерывность угла при $t = 0$."
+    assert lookup("something the phrasebook does not know", "en") is None
+
+
+@pytest.mark.parametrize(
+    "label, shown",
+    [
+        ("13", "(13)"),
+        ("2-3", "(2)--(3)"),
+        ("§5", r"\S5"),
+        ("15-n3", "(15, $n = 3$)"),
+        ("IC-15", "(15, i.c.)"),
+        ("39-ref", "(39, reference)"),
+        ("19-shift", "(19, centre)"),
+    ],
+)
+def test_equation_labels(label, shown):
+    assert eq_text(label).raw == shown
+
+
+def test_long_formulas_break_at_top_level_signs_only():
+    src = r"x = a + \left(b - c\right) - \frac{d + e}{2} + f"
+    lines = [line.raw for line in break_source(src, 8)]
+    assert lines[0].startswith("x = a")
+    assert "".join(lines).replace(" ", "") == src.replace(" ", "")
+    # no break inside the bracket or the fraction
+    assert all(line.count(r"\left(") == line.count(r"\right)") for line in lines)
+    assert all(line.count("{") == line.count("}") for line in lines)
+
+
+def test_running_text_formulas_keep_the_line_height():
+    Q, n = sp.symbols("Q n", positive=True)
+    assert slashed(sp.pi * n / (6 * Q)).raw == r"\pi n/\left(6 Q\right)"
+    assert slashed(sp.Eq(sp.Symbol("x"), sp.Rational(1, 2))).raw == "x = 1/2"
+    assert notation(r"\left(m + 1\right)^{2}") == r"\left(1 + m\right)^{2}"
+
+
+def test_short_captions_for_the_lists():
+    long = "First sentence, which names the figure. " + "More detail follows here. " * 5
+    assert short_caption(long) == "First sentence, which names the figure."
+    assert short_caption("Short caption.") is None
+    # a period inside mathematics or after "Fig" does not end the sentence
+    src = r"The paper's Fig.~1 redrawn: $a. b$ stays whole, and so on. " + "x" * 80
+    assert short_caption(src) == r"The paper's Fig.~1 redrawn: $a. b$ stays whole, and so on."
