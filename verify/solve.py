@@ -383,7 +383,10 @@ def _undamped(req: Request) -> Boundary:
     C = _AtPrecision(lambda: arb.pi() * n / 2)
     sgn = _sgn(n)
     if pf.bm < NEAR_ONE:
-        ys = sorted((_near_one_edge(n, eps, P, C, bits) for eps in (1, -1)), key=lambda r: float(r.ball.mid()))
+        ys = sorted(
+            (_near_one_edge(n, eps, P, C, bits) for eps in (1, -1)),
+            key=lambda r: float(r.ball.mid()),
+        )
         return _result(
             req,
             "certified",
@@ -889,9 +892,7 @@ def hump_box(n: int, lo: Fraction, hi: Fraction, Q: Fraction, damping: str, floa
         float_stage = {k: float(np.asarray(v).ravel()[0]) for k, v in fl.items()}
         float_stage["bm"] = float(pm.bm)
     # the middle as an exact ball: arb arithmetic instead of long rationals
-    hm, _ = hump_normal(
-        n, mid, Q, damping, 64, m_box=(mid, mid), float_stage=float_stage
-    )
+    hm, _ = hump_normal(n, mid, Q, damping, 64, m_box=(mid, mid), float_stage=float_stage)
     hj, _ = hump_normal(n, mid, Q, damping, 64, m_box=(lo, hi), float_stage=float_stage, jet=True)
 
     def dm():
@@ -1018,9 +1019,7 @@ def _normal_damped(req: Request) -> Boundary:
     )
 
 
-def hump_trace(
-    n: int, m: Fraction, Q: Fraction, regimes: tuple[str, str], m_box=None, window=None
-):
+def hump_trace(n: int, m: Fraction, Q: Fraction, regimes: tuple[str, str], m_box=None, window=None):
     """The friction problem in the trace form (exact model, a half critically or over-damped):
     the :class:`_Hump` in ``zeta`` on the proven window of order ``n``, and the parameters; or
     ``(None, reason)`` if the order has no window.  ``m_box`` as for :func:`hump_normal` (the
