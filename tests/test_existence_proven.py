@@ -129,9 +129,7 @@ def test_existence_and_boundary_never_disagree(case, m):
     assert boundary(order, m, Q=Q, damping=damping, digits=10).exists == (sign == 1)
 
 
-@pytest.mark.parametrize(
-    "m", ["0.78350", "0.78360", "0.78370", "0.78380", "0.78345", "0.78390"]
-)
+@pytest.mark.parametrize("m", ["0.78350", "0.78360", "0.78370", "0.78380", "0.78345", "0.78390"])
 def test_island_points_agree(m):
     """Depths across the narrow island of order 5 at Q = 2.008906."""
     ex = _ex(5, "2.008906", "exact")

@@ -138,14 +138,16 @@ class Existence:
         return [[self._text(a), self._text(b)] for a, b in self._ranges()]
 
     def undecided_texts(self) -> list[list[str]]:
-        return [[mpmath.nstr(_mpf(lo), self.digits), mpmath.nstr(_mpf(hi), self.digits)]
-                for lo, hi in self.undecided]
+        return [
+            [mpmath.nstr(_mpf(lo), self.digits), mpmath.nstr(_mpf(hi), self.digits)]
+            for lo, hi in self.undecided
+        ]
 
     def where(self, m: Fraction) -> str:
         """Why the interval does or does not exist at the exact depth ``m``: ``"exists"``,
         ``"below the threshold m = ..."``, ``"in the gap ... around the a:b closing ..."``,
         ``"above ..."``, ``"undecided ..."`` (from the proof, :attr:`segments`)."""
-        for j, (lo, hi, sign) in enumerate(self.segments):
+        for lo, hi, sign in self.segments:
             if not lo <= m <= hi:
                 continue
             if sign == 1:
@@ -206,8 +208,10 @@ class Existence:
         lines = []
         ranges = self.interval_texts()
         if not ranges:
-            lines.append(f"{head}: the interval exists at no depth 0 < m < 1"
-                         + (" that could be decided" if self.undecided else ""))
+            lines.append(
+                f"{head}: the interval exists at no depth 0 < m < 1"
+                + (" that could be decided" if self.undecided else "")
+            )
         else:
             lines.append(f"{head}: the interval exists for")
             for a, b in ranges:
@@ -236,8 +240,7 @@ def _closing_in(n: int, Q, damping: str, lo, hi) -> str:
     if damping == "exact":
         for mc in closing_depths(n, Q, damping):
             if lo <= mc <= hi:
-                for a in range(1, n):
-                    return _nearest_ratio(n, mc)
+                return _nearest_ratio(n, mc)
     return ""
 
 
@@ -662,8 +665,10 @@ def _negative_on_box(h, budget: int, top=None, narrow: bool = False) -> bool:
     float maximiser ``t`` (any point will do): on a ball ``X`` around ``t`` where ``D'' < 0``,
     ``D <= D(t) + D'(t)^2 / (2 |sup D''(X)|)``, and bisection outside ``X``."""
     top = h.top if top is None else top
-    t = top if (isinstance(top, arb) or math.isfinite(top)) and h.a < top < h.b else 0.5 * (
-        h.a + h.b
+    t = (
+        top
+        if (isinstance(top, arb) or math.isfinite(top)) and h.a < top < h.b
+        else 0.5 * (h.a + h.b)
     )
     tf = float(t)
     for prec in (64, 128, 256) if narrow else (64, 128):
@@ -683,9 +688,11 @@ def _negative_on_box(h, budget: int, top=None, narrow: bool = False) -> bool:
                     bound = Dt + D1t * D1t / (2 * abs(d2.upper()))
                     if bound < 0:
                         return (
-                            lo <= h.a or prove_sign(h.D, h.dD, h.a, lo, -1, prec=prec, budget=budget)
+                            lo <= h.a
+                            or prove_sign(h.D, h.dD, h.a, lo, -1, prec=prec, budget=budget)
                         ) and (
-                            hi >= h.b or prove_sign(h.D, h.dD, hi, h.b, -1, prec=prec, budget=budget)
+                            hi >= h.b
+                            or prove_sign(h.D, h.dD, hi, h.b, -1, prec=prec, budget=budget)
                         )
                 rho /= 4
     # no usable maximiser: bisection alone
@@ -770,7 +777,7 @@ def _segments(n: int, Q: Fraction, damping: str, digits: int, budget: int):
 
 
 def _round_fraction(mid: Fraction, lo: Fraction, hi: Fraction) -> Fraction:
-    """A dyadic rational strictly between ``lo`` and ``hi`` near ``mid`` (keeps the numbers short)."""
+    """A dyadic rational strictly between ``lo`` and ``hi`` near ``mid`` (short numbers)."""
     width = hi - lo
     k = max(0, -(width.numerator.bit_length() - width.denominator.bit_length()) + 3)
     x = Fraction(round(mid * 2**k), 2**k)

@@ -964,7 +964,8 @@ def hump_box(n: int, lo: Fraction, hi: Fraction, Q: Fraction, damping: str, floa
         fl = damped_normal(np.array([[n]]), Pn)
         float_stage = {k: float(np.asarray(v).ravel()[0]) for k, v in fl.items()}
         float_stage["bm"] = float(pm.bm)
-    hm, _ = hump_normal(n, mid, Q, damping, 64, float_stage=float_stage)
+    # the middle as an exact ball: arb arithmetic instead of long rationals
+    hm, _ = hump_normal(n, mid, Q, damping, 64, m_box=(mid, mid), float_stage=float_stage)
     hj, _ = hump_normal(n, mid, Q, damping, 64, m_box=(lo, hi), float_stage=float_stage, jet=True)
 
     def dm():
@@ -1129,7 +1130,7 @@ def hump_trace(
 
     funcs = [lambda z, F=F: F(z, *args()) for F in (D0, D1, D2)]
     if m_box is not None:  # the mean-value form in m (see hump_box), jets from the middle
-        Pm = _AtPrecision(lambda: trace_params(m, Q, _ARB))
+        Pm = _AtPrecision(lambda: _params_at(m, Q, None, (m, m), trace_params), box_prec((m, m)))
 
         def jets():
             Qb = arb(Q.numerator) / Q.denominator
