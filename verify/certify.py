@@ -78,8 +78,11 @@ def upper_mpf(x: arb) -> mpmath.mpf:
 def ball(mid, rad=0) -> arb:
     """A ball from a float, an mpf or an arb midpoint and a radius (exact conversions)."""
     if isinstance(mid, mpmath.mpf):
-        man, exp = mid.man_exp
+        negative = mid < 0
+        man, exp = mid.man_exp  # the magnitude only: man_exp drops the sign
         mid = arb(man) * arb(2) ** int(exp) if man else arb(0)
+        if negative:
+            mid = -mid
     elif isinstance(mid, arb):
         mid = mid.mid()
     else:
