@@ -55,16 +55,32 @@ def check_modulation(modulation, switch_time, system="pendulum", Q=None) -> Frac
     return S
 
 
-def boundary(order, m=None, *, modulation="square", switch_time=None, **kwargs):
-    """:func:`verify.solve.boundary` for ``modulation="square"``; for ``"ramp"`` the certified
-    edges of :func:`verify.ramp.ramp_boundary` (a :class:`verify.solve.Boundary`)."""
+def boundary(
+    order,
+    m=None,
+    *,
+    Q=None,
+    damping="exact",
+    digits=30,
+    method="certified",
+    tol=None,
+    system="pendulum",
+    duty="1/2",
+    modulation="square",
+    switch_time=None,
+):
+    """:func:`verify.solve.boundary` for ``modulation="square"`` (the same arguments); for
+    ``"ramp"`` the certified edges with linear ramps lasting ``switch_time`` (units ``T0``) of
+    :func:`verify.ramp.ramp_boundary`, as a :class:`verify.solve.Boundary` (pendulum, no
+    friction, the certified method)."""
     from .solve import boundary as square_boundary
 
-    system = kwargs.get("system", "pendulum")
-    S = check_modulation(modulation, switch_time, system, kwargs.get("Q"))
+    S = check_modulation(modulation, switch_time, system, Q)
     if S is None:
-        return square_boundary(order, m, **kwargs)
-    method, tol = kwargs.get("method", "certified"), kwargs.get("tol")
+        return square_boundary(
+            order, m, Q=Q, damping=damping, digits=digits, method=method, tol=tol,
+            system=system, duty=duty,
+        )
     if method != "certified" or tol is not None:
         raise InputError(
             f"the ramp modulation has the certified method only (got method {method!r}"
@@ -73,15 +89,28 @@ def boundary(order, m=None, *, modulation="square", switch_time=None, **kwargs):
         )
     from .ramp import ramp_boundary
 
-    duty = kwargs.get("duty", "1/2")
     if hasattr(system, "duty"):
         duty = system.duty
-    return ramp_boundary(order, m, S, duty=duty, digits=kwargs.get("digits", 30)).boundary
+    return ramp_boundary(order, m, S, duty=duty, digits=digits).boundary
 
 
-def multipliers(T, m=None, *, modulation="square", switch_time=None, **kwargs):
-    """:func:`verify.multipliers.multipliers`, with the ramp's monodromy for ``"ramp"``."""
+def multipliers(
+    T,
+    m=None,
+    *,
+    Q=None,
+    damping="exact",
+    digits=30,
+    system="pendulum",
+    duty="1/2",
+    modulation="square",
+    switch_time=None,
+):
+    """:func:`verify.multipliers.multipliers` (the same arguments), with the ramp's monodromy
+    for ``modulation="ramp"`` (``switch_time`` in units of ``T0``)."""
     from .multipliers import multipliers as mult
 
-    S = check_modulation(modulation, switch_time, kwargs.get("system", "pendulum"), kwargs.get("Q"))
-    return mult(T, m, switch_time=S, **kwargs)
+    S = check_modulation(modulation, switch_time, system, Q)
+    return mult(
+        T, m, Q=Q, damping=damping, digits=digits, system=system, duty=duty, switch_time=S
+    )
