@@ -83,7 +83,8 @@ def test_ramp_map_matches_ode(la, lb, S):
 
 
 @pytest.mark.parametrize(
-    "m,tau,D", [(F(3, 10), F(1, 2), F(1, 2)), (F(3, 5), F(8, 5), F(1, 3)), (F(1, 10**6), 1, F(1, 2))]
+    "m,tau,D",
+    [(F(3, 10), F(1, 2), F(1, 2)), (F(3, 5), F(8, 5), F(1, 3)), (F(1, 10**6), 1, F(1, 2))],
 )
 def test_S_zero_is_the_jump_model(m, tau, D):
     with ctx.workprec(200):
@@ -240,7 +241,10 @@ def test_leading_shift_error_falls_like_S_squared(n, m):
         r = ramp_boundary(n, m, S, digits=30)
         with ctx.workprec(200):
             Sb = arb(S.numerator) / S.denominator
-            q[S] = [float(((sh - ai * Sb) / (Sb * Sb)).mid()) for sh, ai in zip(r.shifts, a)]
+            q[S] = [
+                float(((sh - ai * Sb) / (Sb * Sb)).mid())
+                for sh, ai in zip(r.shifts, a, strict=True)
+            ]
     for x, y in zip(q[F(1, 1000)], q[F(1, 2000)], strict=True):
         assert abs(x - y) < 0.02 * max(abs(x), abs(y)) + 1e-3
 
@@ -307,8 +311,16 @@ def _cli(capsys, *argv):
 
 def test_cli_boundary_ramp(capsys):
     rc, out, err = _cli(
-        capsys, "boundary", "--order", "1", "--m", "0.3", "--modulation", "ramp",
-        "--switch-time", "0.01",
+        capsys,
+        "boundary",
+        "--order",
+        "1",
+        "--m",
+        "0.3",
+        "--modulation",
+        "ramp",
+        "--switch-time",
+        "0.01",
     )
     assert rc == 0 and "ramp modulation, S = 1/100" in out
     # reference: ramp_boundary (the API the command calls), 30 digits
@@ -324,8 +336,18 @@ def test_cli_default_is_square(capsys):
 
 def test_cli_multipliers_ramp(capsys):
     rc, out, _ = _cli(
-        capsys, "multipliers", "--T", "0.5", "--m", "0.3", "--modulation", "ramp",
-        "--switch-time", "1/4", "--digits", "15",
+        capsys,
+        "multipliers",
+        "--T",
+        "0.5",
+        "--m",
+        "0.3",
+        "--modulation",
+        "ramp",
+        "--switch-time",
+        "1/4",
+        "--digits",
+        "15",
     )
     assert rc == 0 and "ramp modulation" in out and "unstable" in out
 
@@ -345,25 +367,107 @@ def test_cli_jump_validity(capsys):
 @pytest.mark.parametrize(
     "argv,words",
     [
-        (["boundary", "--order", "1", "--m", "0.3", "--modulation", "ramp", "--switch-time",
-          "-0.1"], "negative"),
-        (["boundary", "--order", "1", "--m", "0.3", "--modulation", "ramp", "--switch-time",
-          "0.3"], "longer than a phase"),
-        (["boundary", "--order", "1", "--m", "0.3", "--switch-time", "0.01"],
-         "needs the ramp modulation"),
-        (["boundary", "--order", "1", "--m", "0.3", "--modulation", "ramp"],
-         "needs a switching time"),
+        (
+            [
+                "boundary",
+                "--order",
+                "1",
+                "--m",
+                "0.3",
+                "--modulation",
+                "ramp",
+                "--switch-time",
+                "-0.1",
+            ],
+            "negative",
+        ),
+        (
+            [
+                "boundary",
+                "--order",
+                "1",
+                "--m",
+                "0.3",
+                "--modulation",
+                "ramp",
+                "--switch-time",
+                "0.3",
+            ],
+            "longer than a phase",
+        ),
+        (
+            ["boundary", "--order", "1", "--m", "0.3", "--switch-time", "0.01"],
+            "needs the ramp modulation",
+        ),
+        (
+            ["boundary", "--order", "1", "--m", "0.3", "--modulation", "ramp"],
+            "needs a switching time",
+        ),
         (["boundary", "--order", "1", "--m", "0.3", "--modulation", "sine"], "not one of"),
-        (["boundary", "--order", "1", "--m", "0.3", "--modulation", "ramp", "--switch-time",
-          "0.01", "--system", "meissner"], "pendulum only"),
-        (["boundary", "--order", "1", "--m", "0.3", "--modulation", "ramp", "--switch-time",
-          "0.01", "--Q", "5"], "without friction"),
-        (["boundary", "--order", "1", "--m", "0.3", "--modulation", "ramp", "--switch-time",
-          "abc"], "not a number"),
-        (["multipliers", "--T", "0.5", "--m", "0.3", "--modulation", "ramp", "--switch-time",
-          "0.26"], "longer than a phase"),
-        (["multipliers", "--T", "0.5", "--m", "0.3", "--switch-time", "0.1"],
-         "needs the ramp modulation"),
+        (
+            [
+                "boundary",
+                "--order",
+                "1",
+                "--m",
+                "0.3",
+                "--modulation",
+                "ramp",
+                "--switch-time",
+                "0.01",
+                "--system",
+                "meissner",
+            ],
+            "pendulum only",
+        ),
+        (
+            [
+                "boundary",
+                "--order",
+                "1",
+                "--m",
+                "0.3",
+                "--modulation",
+                "ramp",
+                "--switch-time",
+                "0.01",
+                "--Q",
+                "5",
+            ],
+            "without friction",
+        ),
+        (
+            [
+                "boundary",
+                "--order",
+                "1",
+                "--m",
+                "0.3",
+                "--modulation",
+                "ramp",
+                "--switch-time",
+                "abc",
+            ],
+            "not a number",
+        ),
+        (
+            [
+                "multipliers",
+                "--T",
+                "0.5",
+                "--m",
+                "0.3",
+                "--modulation",
+                "ramp",
+                "--switch-time",
+                "0.26",
+            ],
+            "longer than a phase",
+        ),
+        (
+            ["multipliers", "--T", "0.5", "--m", "0.3", "--switch-time", "0.1"],
+            "needs the ramp modulation",
+        ),
         (["jump-validity", "--order", "1", "--m", "0.3", "--tol", "0"], "tolerance"),
     ],
 )
@@ -372,3 +476,19 @@ def test_cli_refusals(capsys, argv, words):
     assert rc == 2 and out == ""
     assert err.startswith("paramres: error:") and words in err
     assert "Traceback" not in err
+
+
+def test_order_3_closes_at_a_finite_switching_time():
+    """At m = 9/10 (past the jump model's closing at 3/5) the edges of order 3 are zeros of G11
+    (lower) and G22 (upper) at S = 0.3, and the other way round at S = 0.35: both pairs proven
+    distinct, so the two followed edges cross in between, where M = -I (the interval closes at a
+    finite S; located near S = 0.31228, T = 1.18410).  The period map there, from the derived maps,
+    is -I to the accuracy of the located point."""
+    r1 = ramp_boundary(3, "9/10", F(3, 10), digits=20)
+    r2 = ramp_boundary(3, "9/10", F(7, 20), digits=20)
+    assert r1.factors == ("G11", "G22") and r1.lower.upper() < r1.upper.lower()
+    assert r2.factors == ("G22", "G11") and r2.lower.upper() < r2.upper.lower()
+    with ctx.workprec(100):
+        M = ramp_monodromy_arb(F(9, 10), F("1.1841011666965775"), F("0.3122835850405863"))
+    for x, ref in zip(M, (-1, 0, 0, -1), strict=True):
+        assert abs(float(x.mid()) - ref) < 1e-9

@@ -49,8 +49,7 @@ def check_modulation(modulation, switch_time, system="pendulum", Q=None) -> Frac
         )
     if Q is not None and not (isinstance(Q, str) and Q.strip().lower() in ("none", "inf")):
         raise InputError(
-            f"the ramp modulation is implemented without friction only (got Q = {Q}); "
-            "leave Q out"
+            f"the ramp modulation is implemented without friction only (got Q = {Q}); leave Q out"
         )
     return S
 
@@ -78,8 +77,15 @@ def boundary(
     S = check_modulation(modulation, switch_time, system, Q)
     if S is None:
         return square_boundary(
-            order, m, Q=Q, damping=damping, digits=digits, method=method, tol=tol,
-            system=system, duty=duty,
+            order,
+            m,
+            Q=Q,
+            damping=damping,
+            digits=digits,
+            method=method,
+            tol=tol,
+            system=system,
+            duty=duty,
         )
     if method != "certified" or tol is not None:
         raise InputError(
@@ -111,6 +117,4 @@ def multipliers(
     from .multipliers import multipliers as mult
 
     S = check_modulation(modulation, switch_time, system, Q)
-    return mult(
-        T, m, Q=Q, damping=damping, digits=digits, system=system, duty=duty, switch_time=S
-    )
+    return mult(T, m, Q=Q, damping=damping, digits=digits, system=system, duty=duty, switch_time=S)

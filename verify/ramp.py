@@ -111,7 +111,11 @@ def _compiled():
     out = {}
     for name, (args, exprs) in pieces.items():
         fn = sp.lambdify(
-            args, list(exprs), modules=[_NAMESPACE], printer=_printer(), cse=True,
+            args,
+            list(exprs),
+            modules=[_NAMESPACE],
+            printer=_printer(),
+            cse=True,
             docstring_limit=0,
         )
         out[name] = fn
@@ -275,27 +279,37 @@ def _newton_mid(p: _Pendulum, e: int, T: float, iters: int = 40) -> float | None
     return None
 
 
+#: the largest step of the continuation in S, and the largest Newton correction accepted after
+#: the predictor, as fractions of the order's spacing T_upper/n
+_STEP, _CORRECTION = 40, 100
+
+
 def _follow(m, S, duty, e, T0: float, spacing: float, bits: int = 96) -> float:
-    """Continue the zero of entry ``e`` of ``G`` from ``S = 0`` (at ``T0``) to ``S``."""
+    """Continue the zero of entry ``e`` of ``G`` from ``S = 0`` (at ``T0``) to ``S``: secant
+    predictor, Newton corrector; steps of at most ``spacing/40`` in ``S``, halved whenever the
+    corrector moves the root by more than ``spacing/100`` or does not converge (so the path
+    cannot jump to another zero of the same entry)."""
     with ctx.workprec(bits):
         s_now, T_now, slope = Fraction(0), T0, 0.0
-        step = S
+        cap = Fraction(spacing / _STEP)
+        step = min(S, cap)
         while s_now < S:
             s_next = min(S, s_now + step)
             guess = T_now + slope * float(s_next - s_now)
             p = _Pendulum(m, s_next, duty)
             root = _newton_mid(p, e, guess)
-            if root is None or abs(root - guess) > 0.05 * spacing:
+            if root is None or abs(root - guess) > spacing / _CORRECTION:
                 step = step / 2
                 if step < S * Fraction(1, 2**40):
                     raise CertificationError(
-                        f"the edge could not be followed to S = {S} (it may leave the window)"
+                        f"the edge could not be followed to S = {_text(S)} (it may turn back "
+                        "or leave the window)"
                     )
                 continue
             if s_next > s_now:
                 slope = (root - T_now) / float(s_next - s_now)
             s_now, T_now = s_next, root
-            step = min(step * 2, S)
+            step = min(step * 2, cap, S)
         return T_now
 
 
@@ -331,8 +345,12 @@ def ramp_boundary(order, m, S, *, duty="1/2", digits=30, _jump_result=None) -> R
         names = _factors(p0, n, T_lo0, T_hi0)
     spacing = float(T_scale) / n
     approx = [
-        _follow(mm, SS, D, _ENTRY[names[0]], float(jump.lower), spacing) if SS else float(jump.lower),
-        _follow(mm, SS, D, _ENTRY[names[1]], float(jump.upper), spacing) if SS else float(jump.upper),
+        _follow(mm, SS, D, _ENTRY[names[0]], float(jump.lower), spacing)
+        if SS
+        else float(jump.lower),
+        _follow(mm, SS, D, _ENTRY[names[1]], float(jump.upper), spacing)
+        if SS
+        else float(jump.upper),
     ]
     roots = []
     p_cache = {}
@@ -417,7 +435,10 @@ def _edges_float(n, mm, S, D, jump, names=None) -> tuple[float, float]:
         with ctx.workprec(96):
             rad = jump.radii or (jump.radius,) * 4
             names = _factors(
-                _Pendulum(mm, Fraction(0), D), n, _ball(jump.lower, rad[0]), _ball(jump.upper, rad[1])
+                _Pendulum(mm, Fraction(0), D),
+                n,
+                _ball(jump.lower, rad[0]),
+                _ball(jump.upper, rad[1]),
             )
     if S == 0:
         return float(jump.lower), float(jump.upper)
@@ -673,8 +694,11 @@ def jump_validity(order, m, tol, *, duty="1/2", digits=15) -> Validity:
         if r.factors != names:  # the edges swapped order: report by the jump model's edges
             a, b = by_name[names[0]], by_name[names[1]]
             jl, ju = ju, jl
-        return a, b, (abs(a) <= _A(tt) * jl and abs(b) <= _A(tt) * ju), (
-            abs(a) > _A(tt) * jl or abs(b) > _A(tt) * ju
+        return (
+            a,
+            b,
+            (abs(a) <= _A(tt) * jl and abs(b) <= _A(tt) * ju),
+            (abs(a) > _A(tt) * jl or abs(b) > _A(tt) * ju),
         )
 
     table = []
@@ -710,5 +734,6 @@ def jump_validity(order, m, tol, *, duty="1/2", digits=15) -> Validity:
             if not within:  # pragma: no cover - the shift grows with S in every case seen
                 notes.append(f"at S = {_decimal(S)} an edge is already beyond the tolerance")
             table.insert(len(table) - (1 if S_bad is None else 2), (S, a, b))
-    return Validity(n, mm, D, tt, jl_b, ju_b, S_ok, S_bad, S_fit, slopes, tuple(table),
-                    tuple(notes))
+    return Validity(
+        n, mm, D, tt, jl_b, ju_b, S_ok, S_bad, S_fit, slopes, tuple(table), tuple(notes)
+    )

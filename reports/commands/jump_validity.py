@@ -36,15 +36,16 @@ def register(subparsers) -> None:
     add_order(p)
     add_depth(p)
     p.add_argument(
-        "--tol", required=True, metavar="TOL", help="relative tolerance of the edges T/T0 "
-        "(e.g. 1e-3; at most 0.1)"
+        "--tol",
+        required=True,
+        metavar="TOL",
+        help="relative tolerance of the edges T/T0 (e.g. 1e-3; at most 0.1)",
     )
     p.add_argument(
         "--duty",
         default="1/2",
         metavar="D",
-        help="fraction of the period spent in phase 1 (the long pendulum), 0 < D < 1; "
-        "default 1/2",
+        help="fraction of the period spent in phase 1 (the long pendulum), 0 < D < 1; default 1/2",
     )
     p.add_argument(
         "--digits", default="15", metavar="D", help="digits of the certified edges (default 15)"
