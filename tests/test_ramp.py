@@ -3,6 +3,7 @@
 
 from __future__ import annotations
 
+import math
 import random
 from fractions import Fraction as F
 
@@ -492,3 +493,44 @@ def test_order_3_closes_at_a_finite_switching_time():
         M = ramp_monodromy_arb(F(9, 10), F("1.1841011666965775"), F("0.3122835850405863"))
     for x, ref in zip(M, (-1, 0, 0, -1), strict=True):
         assert abs(float(x.mid()) - ref) < 1e-9
+
+
+@pytest.mark.parametrize("n", [1, 2, 3, 4])
+def test_leading_shift_at_small_depth(n):
+    """The slope dT/dS at S = 0 for small m, measured: odd n, 2 m^2 (1 -+ n pi m/4); even n,
+    4 m^2 (lower) and n^2 pi^2 m^4/16 (upper).  Reference: leading_shift at m = 1e-4, where the
+    terms left out are O(m^2) relative (1e-8), except for the even upper edge, whose relative
+    correction is O(m) (1e-4): tolerances 1e-6 (still 1e3 below the m-term tested) and 1e-3."""
+    m = 1e-4
+    a = [float(x.mid()) for x in leading_shift(n, "1e-4", digits=20)]
+    if n % 2:
+        assert abs(a[0] / (2 * m**2) - (1 - n * math.pi * m / 4)) < 1e-6
+        assert abs(a[1] / (2 * m**2) - (1 + n * math.pi * m / 4)) < 1e-6
+    else:
+        assert abs(a[0] / (4 * m**2) - 1) < 1e-6
+        assert abs(a[1] / (n**2 * math.pi**2 * m**4 / 16) - 1) < 1e-3
+
+
+def test_tiny_depth_edges_keep_their_digits():
+    """m = 1e-12, order 2, S = 1e-4: the lower edge moves by 4 m^2 S = 4e-28 (the measured slope
+    at small m, test above) within 1 % (the S^2 term is of relative size ~S), an offset 1e-16
+    below the edges themselves: the certified shift must resolve it."""
+    r = ramp_boundary(2, "1e-12", F(1, 10**4), digits=30)
+    shift = float(r.shifts[0].mid())
+    assert abs(shift / 4e-28 - 1) < 1e-2
+    assert r.shifts[0].rad() < 1e-40
+
+
+def test_ball_is_exact_at_low_working_precision():
+    """verify.certify.ball keeps every bit of an mpf midpoint whatever flint's precision (the
+    ramp's shifts are differences of such balls; a rounded midpoint once gave 1.1e-16)."""
+    from verify.certify import ball
+
+    with mpmath.workdps(40):
+        x = mpmath.mpf(1) - mpmath.mpf(2) ** -100
+        y = -x
+    with ctx.workprec(53):
+        bx, by = ball(x, 1e-45), ball(y)
+    with ctx.workprec(300):
+        assert (bx - 1).contains(-(arb(2) ** -100))
+        assert (by + 1).mid() == arb(2) ** -100

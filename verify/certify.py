@@ -80,9 +80,13 @@ def ball(mid, rad=0) -> arb:
     if isinstance(mid, mpmath.mpf):
         negative = mid < 0
         man, exp = mid.man_exp  # the magnitude only: man_exp drops the sign
-        mid = arb(man) * arb(2) ** int(exp) if man else arb(0)
-        if negative:
-            mid = -mid
+        # exact at any working precision: the product with a power of two is formed with
+        # enough bits for the whole mantissa (else it would round and the midpoint taken
+        # below would silently drop the rounding error)
+        with ctx.workprec(max(ctx.prec, int(man).bit_length() + 8)):
+            mid = arb(man) * arb(2) ** int(exp) if man else arb(0)
+            if negative:
+                mid = -mid
     elif isinstance(mid, arb):
         mid = mid.mid()
     else:
