@@ -12,7 +12,7 @@ from __future__ import annotations
 
 from fractions import Fraction
 
-from .inputs import InputError
+from .inputs import InputError, as_quality
 from .ramp import as_switch_time
 
 __all__ = ["MODULATIONS", "check_modulation", "boundary", "multipliers"]
@@ -47,7 +47,7 @@ def check_modulation(modulation, switch_time, system="pendulum", Q=None) -> Frac
         raise InputError(
             f"the ramp modulation is implemented for the pendulum only, not for system {name!r}"
         )
-    if Q is not None and not (isinstance(Q, str) and Q.strip().lower() in ("none", "inf")):
+    if as_quality(Q) is not None:
         raise InputError(
             f"the ramp modulation is implemented without friction only (got Q = {Q}); leave Q out"
         )
