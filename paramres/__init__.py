@@ -12,9 +12,11 @@ The public API, loaded on first use so that ``import paramres`` is fast:
 ``existence`` (depth ranges with friction), ``series`` (edges as power series in ``m``),
 ``crossings`` (every closing of every interval), ``catalogue`` (the paper's numbered results,
 printed against derived), ``simulate`` (time-domain runs), ``report`` (the derivation report),
-``multipliers`` (certified Floquet multipliers at a point); ``system``/``custom`` describe the
+``multipliers`` (certified Floquet multipliers at a point), ``jump_validity`` (up to which
+switching time the instantaneous jump is a good model); ``system``/``custom`` describe the
 oscillator (a member of the two-level family, with its duty), taken by every function above as
-``system=``.
+``system=``.  ``boundary`` and ``multipliers`` take ``modulation="ramp", switch_time=S`` for
+linear ramps of the length lasting ``S`` (units ``T0``) instead of jumps.
 
 The engine lives in three packages installed beside this one, :mod:`analytic` (sympy
 derivations), :mod:`verify` (numbers) and :mod:`reports` (command line and report).  Importing
@@ -35,7 +37,7 @@ __version__ = "0.1.0"
 
 #: public name -> (module, attribute)
 _API = {
-    "boundary": ("verify.solve", "boundary"),
+    "boundary": ("verify.modulation", "boundary"),
     "boundary_grid": ("verify.grid", "boundary_grid"),
     "existence": ("verify.existence", "existence"),
     "series": ("analytic.expansions", "edge_series"),
@@ -43,7 +45,8 @@ _API = {
     "catalogue": ("analytic.catalogue", "catalogue"),
     "simulate": ("verify.timedomain", "simulate"),
     "report": ("reports.report", "build_report"),
-    "multipliers": ("verify.multipliers", "multipliers"),
+    "multipliers": ("verify.modulation", "multipliers"),
+    "jump_validity": ("verify.ramp", "jump_validity"),
     "system": ("analytic.system", "system"),
     "custom": ("analytic.system", "custom"),
     "System": ("analytic.system", "System"),

@@ -12,7 +12,7 @@ import importlib
 
 _API = {
     "InputError": "inputs",
-    "boundary": "solve",
+    "boundary": "modulation",
     "Boundary": "solve",
     "boundary_grid": "grid",
     "boundaries_tol": "auto",

@@ -79,8 +79,15 @@ def upper_mpf(x: arb) -> mpmath.mpf:
 def ball(mid, rad=0) -> arb:
     """A ball from a float, an mpf or an arb midpoint and a radius (exact conversions)."""
     if isinstance(mid, mpmath.mpf):
-        man, exp = mid.man_exp
-        mid = arb(man) * arb(2) ** int(exp) if man else arb(0)
+        negative = mid < 0
+        man, exp = mid.man_exp  # the magnitude only: man_exp drops the sign
+        # exact at any working precision: the product with a power of two is formed with
+        # enough bits for the whole mantissa (else it would round and the midpoint taken
+        # below would silently drop the rounding error)
+        with ctx.workprec(max(ctx.prec, int(man).bit_length() + 8)):
+            mid = arb(man) * arb(2) ** int(exp) if man else arb(0)
+            if negative:
+                mid = -mid
     elif isinstance(mid, arb):
         mid = mid.mid()
     else:

@@ -183,11 +183,21 @@ def _eigen(M) -> tuple:
 
 
 def multipliers(
-    T, m=None, *, Q=None, damping="exact", digits=30, system="pendulum", duty="1/2"
+    T,
+    m=None,
+    *,
+    Q=None,
+    damping="exact",
+    digits=30,
+    system="pendulum",
+    duty="1/2",
+    switch_time=None,
 ) -> Multipliers:
     """Both Floquet multipliers at period ``T`` (units of ``T0``) and depth ``m`` (left out for a
     custom system), with friction ``Q`` in the ``exact`` or ``paper`` model, to ``digits``
-    proven digits; ``system``/``duty`` as in :func:`verify.boundary`."""
+    proven digits; ``system``/``duty`` as in :func:`verify.boundary`.  ``switch_time = S``
+    replaces each jump by a linear ramp of the length lasting ``S`` (units ``T0``; the pendulum
+    without friction only; :func:`verify.ramp.ramp_monodromy_arb`)."""
     sysv = as_system(system, duty)
     if sysv.uses_depth:
         if m is None:
@@ -202,12 +212,29 @@ def multipliers(
     QQ = None if QQ is None else exact_fraction(QQ)
     model = as_damping(damping)
     d = as_digits(digits)
+    monodromy = lambda: monodromy_arb(mm, TT, QQ, model, sysv)  # noqa: E731
+    notes = []
+    if switch_time is not None:
+        from .ramp import as_switch_time, check_fits, ramp_monodromy_arb
+
+        S = as_switch_time(switch_time)
+        if sysv.name != "pendulum" or QQ is not None:
+            raise InputError(
+                "a switching time (ramp modulation) is implemented for the pendulum without "
+                f"friction only (got system {sysv.name!r}, Q = {Q})"
+            )
+        check_fits(S, TT, sysv.duty)
+        monodromy = lambda: ramp_monodromy_arb(mm, TT, S, sysv.duty)  # noqa: E731
+        notes.append(
+            f"ramp modulation: the length changes linearly during S = {_text(S)} T0 at each "
+            "switch (Bessel route)"
+        )
     goal = arb(10) ** (-(d + 1))
     bits = bits_for_digits(d + 4)
     cap = max(bits * _MAX_BITS_PER_DIGIT, 4096)
     while True:
         with ctx.workprec(bits):
-            M = monodromy_arb(mm, TT, QQ, model, sysv)
+            M = monodromy()
             mu1, mu2, kind = _eigen(M)
             mods = [abs(mu1), abs(mu2)]
             big = mods[0] if mods[0] >= mods[1] else mods[1]
@@ -222,7 +249,6 @@ def multipliers(
             bits *= 2
     if growth is None:  # pragma: no cover - |mu|max = sqrt(det M) > 0 always
         raise InputError("the multipliers could not be separated from zero")
-    notes = []
     if kind == "zero":
         notes.append(
             "the two multipliers may coincide here (a double multiplier, e.g. on a closing): "

@@ -3,7 +3,15 @@
 
 from __future__ import annotations
 
-__all__ = ["add_order", "add_depth", "add_friction", "add_json", "add_system", "system_of"]
+__all__ = [
+    "add_order",
+    "add_depth",
+    "add_friction",
+    "add_json",
+    "add_system",
+    "system_of",
+    "add_modulation",
+]
 
 
 def add_order(p, help: str = "order of the resonance (1, 2, ...)") -> None:
@@ -87,3 +95,22 @@ def add_friction(p, *, required: bool = False) -> None:
 
 def add_json(p, help: str = "machine-readable output") -> None:
     p.add_argument("--json", action="store_true", help=help)
+
+
+def add_modulation(p) -> None:
+    """``--modulation square|ramp`` and ``--switch-time S`` (the ramp's duration)."""
+    g = p.add_argument_group("the modulation (how the length switches)")
+    g.add_argument(
+        "--modulation",
+        default="square",
+        metavar="KIND",
+        help="square (default: the paper's instantaneous jump) or ramp (the length changes "
+        "linearly during --switch-time S around each switch; pendulum without friction)",
+    )
+    g.add_argument(
+        "--switch-time",
+        default=None,
+        metavar="S",
+        help="ramp only: the duration of each switch in units of T0, 0 <= S <= the shorter "
+        "phase (S = 0 is the jump)",
+    )

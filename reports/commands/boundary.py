@@ -1,7 +1,8 @@
 """``paramres boundary``: the certified edges of one interval of instability.
 
     paramres boundary --order N --m M [--Q Q] [--damping exact|paper] [--digits D | --tol TOL]
-                      [--method certified|fixedpoint] [--system S] [--duty D] [--json]
+                      [--method certified|fixedpoint] [--system S] [--duty D]
+                      [--modulation square|ramp --switch-time S] [--json]
 
 Prints the lower and upper edge ``T/T0`` and their offsets ``T - n T_av/2`` with ``D`` proven
 digits (ball arithmetic; see :mod:`verify.solve`), or says that the interval does not exist.
@@ -16,9 +17,18 @@ import argparse
 from reports.output import dump_json
 from verify.fixedpoint import FixedPointError
 from verify.inputs import InputError
-from verify.solve import METHODS, boundary
+from verify.modulation import boundary
+from verify.solve import METHODS
 
-from ._arguments import add_depth, add_friction, add_json, add_order, add_system, system_of
+from ._arguments import (
+    add_depth,
+    add_friction,
+    add_json,
+    add_modulation,
+    add_order,
+    add_system,
+    system_of,
+)
 
 __all__ = ["register", "run"]
 
@@ -41,6 +51,7 @@ def register(subparsers) -> None:
     add_depth(p, required=False)
     add_friction(p)
     add_system(p)
+    add_modulation(p)
     p.add_argument(
         "--digits", default=None, metavar="D", help="significant digits, 5 to 10000 (default 30)"
     )
@@ -78,6 +89,8 @@ def run(args) -> int:
             digits=30 if args.digits is None else args.digits,
             method=args.method,
             tol=args.tol,
+            modulation=args.modulation,
+            switch_time=args.switch_time,
         )
     except FixedPointError as exc:
         raise InputError(f"the fixed-point iteration failed ({exc.kind}): {exc}") from None
@@ -85,6 +98,9 @@ def run(args) -> int:
         doc = result.as_json()
         if args.tol is not None:
             doc["tolerance"] = str(args.tol).strip()
+        doc["modulation"] = args.modulation.strip().lower()
+        if args.switch_time is not None:
+            doc["switch_time"] = str(args.switch_time).strip()
         dump_json(doc)
     else:
         print(result)

@@ -1,7 +1,8 @@
 """``paramres multipliers``: both Floquet multipliers at one point, certified.
 
     paramres multipliers --T T [--m M] [--Q Q] [--damping exact|paper] [--digits D]
-                         [--system S] [--duty D] [--omega-sq W1,W2 --jump K] [--json]
+                         [--system S] [--duty D] [--omega-sq W1,W2 --jump K]
+                         [--modulation square|ramp --switch-time S] [--json]
 
 The monodromy over one modulation period is built from the segment maps and the switches in ball
 arithmetic (the independent Floquet route, :mod:`verify.multipliers`); both eigenvalues, the
@@ -15,7 +16,7 @@ import argparse
 from reports.output import dump_json
 from verify.inputs import InputError
 
-from ._arguments import add_depth, add_friction, add_json, add_system, system_of
+from ._arguments import add_depth, add_friction, add_json, add_modulation, add_system, system_of
 
 __all__ = ["register", "run"]
 
@@ -39,18 +40,26 @@ def register(subparsers) -> None:
         "--digits", default="30", metavar="D", help="significant digits, 5 to 10000 (default 30)"
     )
     add_system(p)
+    add_modulation(p)
     add_json(p)
     p.set_defaults(func=run)
 
 
 def run(args) -> int:
-    from verify.multipliers import multipliers
+    from verify.modulation import multipliers
 
     sysv = system_of(args)
     if args.T is None:  # pragma: no cover - argparse requires it
         raise InputError("--T is required")
     result = multipliers(
-        args.T, args.m, Q=args.Q, damping=args.damping, digits=args.digits, system=sysv
+        args.T,
+        args.m,
+        Q=args.Q,
+        damping=args.damping,
+        digits=args.digits,
+        system=sysv,
+        modulation=args.modulation,
+        switch_time=args.switch_time,
     )
     if args.json:
         dump_json(result.as_json())
