@@ -35,6 +35,7 @@ from .inputs import (
     as_system,
 )
 from .params import exact_fraction
+from .rounding import bound_text, printed_error
 from .solve import proven_text
 
 __all__ = ["Multipliers", "multipliers"]
@@ -98,14 +99,39 @@ class Multipliers:
             mag = abs(im_)
         return f"{self._num(re_, rad)} {sign} {self._num(mag, rad)} i"
 
+    def _bound(self, texts_values, rad) -> str | None:
+        """The bound of the printed decimals (rounding included): the largest over the parts."""
+        bounds = [printed_error(t, x, rad) for t, x in texts_values]
+        return bound_text(max(b for b in bounds if b is not None)) if bounds else None
+
+    def _overall_bound(self) -> str:
+        """One bound for every number the text prints (rounding included)."""
+        items = []
+        with mpmath.workdps(self.digits + 20):
+            for (re_, im_), rad in zip(self.mu, self.radii, strict=True):
+                items.append((self._num(re_, rad), re_, rad))
+                if not self.real:
+                    mag = abs(im_)
+                    items.append((self._num(mag, rad), mag, rad))
+        items.append(
+            (self._num(self.modulus, self.modulus_radius), self.modulus, self.modulus_radius)
+        )
+        items.append((self._num(self.growth, self.growth_radius), self.growth, self.growth_radius))
+        bounds = [printed_error(t, x, r) for t, x, r in items]
+        return bound_text(max(b for b in bounds if b is not None))
+
     def as_json(self) -> dict:
         def one(i):
             re_, im_ = self.mu[i]
+            rt, it = self._num(re_, self.radii[i]), self._num(im_, self.radii[i])
             return {
-                "re": self._num(re_, self.radii[i]),
-                "im": self._num(im_, self.radii[i]),
-                "bound": mpmath.nstr(self.radii[i], 3),
+                "re": rt,
+                "im": it,
+                "error_bound": self._bound([(rt, re_), (it, im_)], self.radii[i]),
             }
+
+        mod_t = self._num(self.modulus, self.modulus_radius)
+        gr_t = self._num(self.growth, self.growth_radius)
 
         return {
             **self.system.as_json(),
@@ -116,10 +142,10 @@ class Multipliers:
             "digits": self.digits,
             "multipliers": [one(0), one(1)],
             "real": self.real,
-            "max_modulus": self._num(self.modulus, self.modulus_radius),
-            "max_modulus_bound": mpmath.nstr(self.modulus_radius, 3),
-            "growth_rate": self._num(self.growth, self.growth_radius),
-            "growth_rate_bound": mpmath.nstr(self.growth_radius, 3),
+            "max_modulus": mod_t,
+            "max_modulus_error_bound": self._bound([(mod_t, self.modulus)], self.modulus_radius),
+            "growth_rate": gr_t,
+            "growth_rate_error_bound": self._bound([(gr_t, self.growth)], self.growth_radius),
             "unstable": self.unstable,
             "certified": True,
             "notes": list(self.notes),
@@ -138,7 +164,7 @@ class Multipliers:
             f"  mu2 = {self._mu_text(1)}",
             f"  |mu|max = {self._num(self.modulus, self.modulus_radius)}",
             f"  growth per period ln|mu|max = {self._num(self.growth, self.growth_radius)}",
-            f"  [{state}; certified: every printed digit is proven (ball arithmetic)]",
+            f"  [{state}; certified: |printed - exact| < {self._overall_bound()}]",
         ]
         lines += [f"  note: {n}" for n in self.notes]
         return "\n".join(lines)
