@@ -239,7 +239,7 @@ def family_figure(
             ax.set_xlim(0, max(orders) / 2 + 0.3)
             ax.set_ylim(0, float(np.nanmax(m)))
             ax.set_xlabel(r"$T/T_0$")
-            ax.text(0.03, 0.97, name, transform=ax.transAxes, va="top", fontsize=8)
+            ax.set_title(name, fontsize=8, pad=12)
         axes[0].set_ylabel(r"modulation depth $m$")
         fig.tight_layout(pad=0.4)
     return fig

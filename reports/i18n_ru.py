@@ -23,6 +23,7 @@ PHRASES: dict[str, str] = {
     ),
     "Expansions in the depth": "Разложения по глубине модуляции",
     "Closings of the intervals": "Смыкания интервалов",
+    "The family of two-level oscillators": "Семейство двухуровневых осцилляторов",
     "Diagrams: the paper's Figs. 2 and 8 redrawn": "Диаграммы: рис. 2 и 8 статьи",
     "Accuracy: series, certified values and the Floquet cross-check": (
         "Точность: ряды, гарантированные значения и проверка через матрицу монодромии"

@@ -6,6 +6,7 @@ closing theorem for any duty with its table, and the widths at small depth
 
 from __future__ import annotations
 
+import re
 from fractions import Fraction
 
 import mpmath
@@ -13,7 +14,8 @@ import numpy as np
 import sympy as sp
 
 from .. import figures
-from ..latex import Latex, figure, inline, math, paragraph, prose, raw, ref, table
+from ..i18n import say
+from ..latex import Latex, figure, inline, math, paragraph, raw, table
 from . import Context, Part
 from .closings import _sci, digit_groups
 
@@ -92,7 +94,7 @@ def _system_rows(cfg) -> list:
         rows.append(
             [
                 raw(r"\texttt{" + name + "}"),
-                prose(LAWS[name].picture.split(";")[0].split("(")[0].strip()),
+                raw(re.split(r"[,(;:]", LAWS[name].picture)[0].strip()),
                 inline(math(w1, cfg)),
                 inline(math(w2, cfg)),
                 inline(math(sp.factor(k), cfg)),
@@ -113,58 +115,120 @@ def build(ctx: Context) -> Part:
     fig = figures.family_figure(m_side, [(name, side[name]) for name in SIDE_SYSTEMS], SIDE_ORDERS)
     figs.append(("family-systems.pdf", figures.pdf_bytes(fig)))
 
+    from analytic.family import D as Dsym
+    from analytic.family import coupling, phases
+    from analytic.model import Damping, S
+
+    def m_(x):
+        return inline(math(x, cfg))
+
+    a1, a2 = phases(Damping.NONE)
+    a1x, a2x = phases(Damping.EXACT)
     out: list[Latex] = [
         paragraph(
-            prose(
-                "The paper's pendulum is one member of a family: two-level square-wave parametric "
-                "oscillators. Phase 1 (the low-frequency phase) lasts D T and phase 2 lasts "
-                "(1 - D) T; in each phase the linearised motion is a free damped oscillation "
-                "with the same damping, and at the switch 1 -> 2 the angular velocity is "
-                "multiplied by k (by 1/k at 2 -> 1). The built-in members are listed in"
-            ),
-            ref("Table", "tab:family"),
-            prose("; a custom member is given by its two squared frequencies and k."),
+            raw(
+                say(
+                    r"The paper's pendulum is one member of a family: two-level square-wave "
+                    r"parametric oscillators. Phase~1 (the low-frequency phase) lasts $D\,T$ and "
+                    r"phase~2 lasts $(1-D)\,T$; in each phase the linearised motion is a free "
+                    r"oscillation with the same damping $\gamma$, and at the switch $1\to2$ the "
+                    r"angular velocity is multiplied by $k$ (by $1/k$ at $2\to1$). The built-in "
+                    r"members are listed in Table~\ref{tab:family}; a custom member is given by "
+                    r"its two squared frequencies and $k$.",
+                    r"Маятник статьи "
+                    r"--- один из членов семейства: двухуровневые осцилляторы с параметрами, "
+                    r"переключаемыми по закону меандра. Фаза~1 (с меньшей частотой) длится "
+                    r"$D\,T$, фаза~2 --- $(1-D)\,T$; в каждой фазе линеаризованное движение "
+                    r"--- свободные колебания с одним и тем же затуханием $\gamma$, а при "
+                    r"переключении $1\to2$ угловая скорость умножается на $k$ (на $1/k$ при "
+                    r"$2\to1$). Встроенные члены семейства перечислены в "
+                    r"таблице~\ref{tab:family}; произвольный задаётся квадратами двух частот и "
+                    r"множителем $k$.",
+                )
+            )
         ),
         table(
             [
-                "system",
-                "picture",
+                say("system", "система"),
+                say("picture", "физическая картина"),
                 raw(r"$\omega_1^2/\omega_0^2$"),
                 raw(r"$\omega_2^2/\omega_0^2$"),
                 raw(r"$k$"),
             ],
             _system_rows(cfg),
             columns="llccc",
-            caption="The built-in members of the family.",
+            caption=say(
+                "The built-in members of the family.", "Встроенные члены семейства."
+            ),
             label="tab:family",
         ),
         paragraph(
-            prose(
-                "For every member and every duty the engine derives, with D and k kept as "
-                "symbols, that det M = exp(-2 gamma T) and that the trace of the monodromy has the "
-                "paper's form with the phases a_1 = W_1 D T and a_2 = W_2 (1 - D) T and one "
-                "coupling constant K. The normal form of the paper therefore holds for the whole "
-                "family; only r, beta and the mean frequency w = D W_1 + (1 - D) W_2 change, with "
-                "|r| < 1 and |beta| < 1 always. Without friction it factors into one equation per "
-                "edge, each with one simple root per order, for every duty."
-            )
+            raw(
+                say(
+                    r"For every member and every duty the engine derives, with $D$ and $k$ kept "
+                    r"as symbols, that $\det M = e^{-2\gamma T}$ and that the trace of the "
+                    r"monodromy has the paper's form with the phases ",
+                    r"Для любого члена семейства и любой скважности программа выводит, "
+                    r"сохраняя $D$ и $k$ символами, что $\det M = e^{-2\gamma T}$ и что след "
+                    r"матрицы монодромии имеет вид, как в статье, с фазами ",
+                )
+            ),
+            m_(sp.Eq(sp.Symbol("a_1"), a1)),
+            ",",
+            m_(sp.Eq(sp.Symbol("a_2"), a2)),
+            raw(say(r" and one coupling constant ", r" и одной постоянной связи ")),
+            m_(sp.Eq(sp.Symbol("K"), coupling(Damping.NONE))),
+            raw(
+                say(
+                    r" (with friction in the exact model the damped frequencies replace "
+                    r"$\omega_i$ and ",
+                    r" (с трением в точной модели вместо $\omega_i$ стоят затухающие частоты "
+                    r"и ",
+                )
+            ),
+            m_(sp.Eq(sp.Symbol("K"), coupling(Damping.EXACT))),
+            raw(
+                say(
+                    r"). The normal form of the paper therefore holds for the whole family; only "
+                    r"$r$, $\beta$ and the mean frequency $w = D W_1 + (1-D) W_2$ change, with "
+                    r"$|r| < 1$ and $|\beta| < 1$ always. Without friction it factors into one "
+                    r"equation per edge, each with one simple root per order, for every duty.",
+                    r"). Поэтому нормальная форма статьи верна для всего семейства; меняются "
+                    r"лишь $r$, $\beta$ и средняя частота $w = D W_1 + (1-D) W_2$, причём всегда "
+                    r"$|r| < 1$ и $|\beta| < 1$. Без трения она распадается на уравнения для "
+                    r"каждой границы, у каждого по одному простому корню для каждого порядка, "
+                    r"при любой скважности.",
+                )
+            ),
         ),
         figure(
             "figures/family-duty.pdf",
             raw(
-                r"Intervals of instability of the pendulum with unequal phases, $D = 1/3$ "
-                r"(certified edges at "
-                + str(len(CHART_M))
-                + r" depths; the marks are the closings of Table~\ref{tab:family-closings})."
+                say(
+                    r"Intervals of instability of the pendulum with unequal phases, $D = 1/3$ "
+                    r"(certified edges at " + str(len(CHART_M)) + r" depths; the marks are the "
+                    r"closings of Table~\ref{tab:family-closings}).",
+                    r"Интервалы неустойчивости маятника с неравными фазами, $D = 1/3$ "
+                    r"(гарантированные границы в " + str(len(CHART_M)) + r" точках по глубине; "
+                    r"точки --- смыкания из таблицы~\ref{tab:family-closings}).",
+                )
             ),
             label="fig:family-duty",
         ),
         paragraph(
-            prose(
-                "Unequal phases change the picture qualitatively. At small depth every interval "
-                "is O(m) wide unless n D is an integer, where the n-th harmonic of the square wave "
-                "vanishes and the width is O(m^2): the even orders of equal halves are the case "
-                "D = 1/2. The leading widths, from the series of the edges:"
+            raw(
+                say(
+                    r"Unequal phases change the picture qualitatively. At small depth every "
+                    r"interval is $O(m)$ wide unless $nD$ is an integer, where the $n$-th "
+                    r"harmonic of the square wave vanishes and the width is $O(m^2)$: the even "
+                    r"orders of equal halves are the case $D = 1/2$. The leading widths, from the "
+                    r"series of the edges, are in Table~\ref{tab:family-widths}.",
+                    r"Неравные фазы качественно меняют картину. При малой глубине ширина каждого "
+                    r"интервала порядка $O(m)$, если только $nD$ не целое: тогда $n$-я гармоника "
+                    r"меандра обращается в нуль и ширина порядка $O(m^2)$; чётные порядки при "
+                    r"равных половинах --- это случай $D = 1/2$. Главные члены ширины из рядов "
+                    r"для границ --- в таблице~\ref{tab:family-widths}.",
+                )
             )
         ),
         table(
@@ -175,27 +239,77 @@ def build(ctx: Context) -> Part:
             ],
             columns="rcc",
             caption=raw(
-                r"Width $T_+ - T_-$ of the $n$-th interval of the pendulum through $m^2$ "
-                r"(units of $T_0$)."
+                say(
+                    r"Width $T_+ - T_-$ of the $n$-th interval of the pendulum through $m^2$ "
+                    r"(units of $T_0$).",
+                    r"Ширина $T_+ - T_-$ $n$-го интервала маятника до $m^2$ (в единицах $T_0$).",
+                )
             ),
             label="tab:family-widths",
         ),
         figure(
             "figures/family-systems.pdf",
             raw(
-                r"The first four intervals of the three built-in systems with equal phases. The "
-                r"jump sets the strength of the excitation: $q = k\,\omega_1/\omega_2$ is "
-                r"$((1+m)/(1-m))^{3/2}$ for the pendulum, $((1+m)/(1-m))^{1/2}$ for the torsion "
-                r"pendulum and $((1-m)/(1+m))^{1/2}$ for the Meissner equation."
+                say(
+                    r"The first four intervals of the three built-in systems with equal phases. "
+                    r"The jump sets the strength of the excitation: $q = k\,\omega_1/\omega_2$ "
+                    r"is $((1+m)/(1-m))^{3/2}$ for the pendulum, $((1+m)/(1-m))^{1/2}$ for the "
+                    r"torsion pendulum and $((1-m)/(1+m))^{1/2}$ for the Meissner equation.",
+                    r"Первые четыре интервала трёх встроенных систем при равных фазах. Скачок "
+                    r"задаёт силу возбуждения: $q = k\,\omega_1/\omega_2$ равно "
+                    r"$((1+m)/(1-m))^{3/2}$ для маятника, $((1+m)/(1-m))^{1/2}$ для крутильного "
+                    r"маятника и $((1-m)/(1+m))^{1/2}$ для уравнения Мейсснера.",
+                )
             ),
             label="fig:family-systems",
         ),
         paragraph(
-            raw(r"\textbf{Theorem (closings, any member and duty).}"),
-            prose(cl.statement),
-            prose(
-                f"Its derivation has {len(cl.steps)} steps, each checked "
-                f"({sum(s.verdict.holds for s in cl.steps)} hold)."
+            raw(
+                r"\textbf{"
+                + say(
+                    "Theorem (closings, any member and duty).",
+                    "Теорема (о смыканиях, любой член семейства и скважность).",
+                )
+                + "} "
+                + say(
+                    r"Without friction the $n$-th interval has zero width exactly where both "
+                    r"phases turn through whole multiples of $\pi$: ",
+                    r"Без трения $n$-й интервал имеет нулевую ширину в точности там, где обе "
+                    r"фазы проходят целое число полупериодов $\pi$: ",
+                )
+            ),
+            m_(sp.Eq(a1, sp.Symbol("a") * sp.pi)),
+            ",",
+            m_(sp.Eq(a2, sp.Symbol("b") * sp.pi)),
+            raw(
+                say(
+                    r" with integers $a, b \ge 1$, $a + b = n$; there the monodromy is "
+                    r"$M = (-1)^n I$, and there are no other closings ($r \ne 0$). For the "
+                    r"built-in members this fixes ",
+                    r" при целых $a, b \ge 1$, $a + b = n$; там матрица монодромии "
+                    r"$M = (-1)^n I$, и других смыканий нет ($r \ne 0$). Для встроенных систем "
+                    r"отсюда ",
+                )
+            ),
+            m_(
+                sp.Eq(
+                    S.omega2**2 / S.omega1**2,
+                    (sp.Symbol("b") * Dsym / (sp.Symbol("a") * (1 - Dsym))) ** 2,
+                )
+            ),
+            raw(
+                say(
+                    r". Its derivation has "
+                    + str(len(cl.steps))
+                    + r" steps, each checked by the engine ("
+                    + str(sum(s_.verdict.holds for s_ in cl.steps))
+                    + r" hold).",
+                    r". Вывод состоит из "
+                    + str(len(cl.steps))
+                    + r" шагов, каждый проверен программой (выполнены "
+                    + str(sum(s_.verdict.holds for s_ in cl.steps))
+                    + r").",
+                )
             ),
         ),
     ]
@@ -226,10 +340,16 @@ def build(ctx: Context) -> Part:
             rows,
             columns="rcccclr",
             caption=raw(
-                r"Every closing of the pendulum with $D = 1/3$ up to order "
-                + str(CLOSING_ORDER)
-                + r": $\omega_1 D T = a\pi$, $\omega_2 (1-D) T = b\pi$; the last column is the "
-                r"independent Floquet check at the printed period."
+                say(
+                    r"Every closing of the pendulum with $D = 1/3$ up to order "
+                    + str(CLOSING_ORDER)
+                    + r": $\omega_1 D T = a\pi$, $\omega_2 (1-D) T = b\pi$; the last column is "
+                    r"the independent Floquet check at the printed period.",
+                    r"Все смыкания маятника с $D = 1/3$ до порядка "
+                    + str(CLOSING_ORDER)
+                    + r": $\omega_1 D T = a\pi$, $\omega_2 (1-D) T = b\pi$; последний столбец "
+                    r"--- независимая проверка по Флоке при напечатанном периоде.",
+                )
             ),
             label="tab:family-closings",
             size="footnotesize",
