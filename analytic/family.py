@@ -47,6 +47,7 @@ import sympy as sp
 
 from .identity import Verdict, prove_zero
 from .model import Damping, Regime, S
+from .normal_form import Link
 from .stitching import propagator
 from .system import System
 
@@ -68,17 +69,6 @@ __all__ = [
 #: the duty and the velocity factor at the switch 1 -> 2, as symbols
 D = sp.Symbol("D", positive=True)
 k = sp.Symbol("k", positive=True)
-
-
-@dataclass(frozen=True)
-class Link:
-    """One proven step of the chain for the family."""
-
-    name: str
-    lhs: sp.Expr
-    rhs: sp.Expr
-    why: str
-    verdict: Verdict
 
 
 def _damped(damping: Damping) -> bool:

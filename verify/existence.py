@@ -270,10 +270,11 @@ def closing_depths(n: int, Q: Fraction | None, damping: str) -> list[float]:
             continue
         q2 = 4 * float(Q) ** 2
 
-        def h(m, a=a, b=b, q2=q2):
-            nu1 = math.sqrt(max(q2 - 1 - m, 0.0) / (1 + m))
-            nu2 = math.sqrt(max(q2 - 1 + m, 0.0) / (1 - m))
-            return a * nu2 - b * nu1
+        def h(m, a=a, b=b):
+            # the damped frequencies (units of gamma) from the one definition in verify.params:
+            # the phases close where a Omega2 = b Omega1
+            tp = trace_params(Fraction(m), Fraction(Q), backend("math"))
+            return a * tp.nu2 - b * tp.nu1
 
         # both damped frequencies are real only for 1 - 4Q^2 < m < 4Q^2 - 1 (none if Q <= 1/2:
         # half 1 is then over-damped at every depth and does not rotate, so nothing closes)
