@@ -15,56 +15,15 @@ wave vanishes), where the width is ``O(m^2)`` -- the even orders of the paper's 
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
 from functools import cache
 
 import sympy as sp
 
 from .model import Damping, S
+from .series_result import EdgeSeries
 from .system import System
 
-__all__ = ["FamilyEdgeSeries", "family_edge_series"]
-
-
-@dataclass(frozen=True)
-class FamilyEdgeSeries:
-    """Both edges of order ``order`` of ``system`` through ``m**terms`` (sympy expressions in
-    ``m``): ``in_T0`` (``T/T0``), ``in_Tn`` (``T`` in units of ``2 pi/w``, so exact tuning is
-    ``n/2``) and ``theta``; the same interface as :class:`analytic.series_result.EdgeSeries`."""
-
-    order: int
-    terms: int
-    units: str
-    system: System
-    in_T0: dict
-    in_Tav: dict
-    theta: dict
-    notes: tuple = field(default=())
-    Q: object = None
-    damping: str | None = None
-    threshold: dict | None = None
-    scaled: dict | None = None
-    lower_factor: int | None = None
-
-    @property
-    def lower(self) -> sp.Expr:
-        return (self.in_T0 if self.units == "T0" else self.in_Tav)["lower"]
-
-    @property
-    def upper(self) -> sp.Expr:
-        return (self.in_T0 if self.units == "T0" else self.in_Tav)["upper"]
-
-    def as_json(self) -> dict:
-        return {
-            **self.system.as_json(),
-            "order": self.order,
-            "terms": self.terms,
-            "units": self.units,
-            "lower": str(self.lower),
-            "upper": str(self.upper),
-            "in_T0": {k: str(v) for k, v in self.in_T0.items()},
-            "in_Tav": {k: str(v) for k, v in self.in_Tav.items()},
-        }
+__all__ = ["family_edge_series"]
 
 
 def _series(expr, K: int) -> sp.Expr:
@@ -147,7 +106,7 @@ def _leading_sign(expr) -> int:
 
 
 @cache
-def family_edge_series(order: int, terms: int, units: str, system: System) -> FamilyEdgeSeries:
+def family_edge_series(order: int, terms: int, units: str, system: System) -> EdgeSeries:
     """Both frictionless edges of order ``order`` of ``system`` through ``m**terms``."""
     n, K = order, terms
     par = _parameters(system, K)
@@ -177,4 +136,4 @@ def family_edge_series(order: int, terms: int, units: str, system: System) -> Fa
         "per-edge factor of the family's normal form, solved by fixed-point steps on power series",
         "T/T0 = (n/2 + theta/pi)/w with the system's parameters expanded from their definitions",
     )
-    return FamilyEdgeSeries(n, K, units, system, in_T0, in_Tav, theta, notes)
+    return EdgeSeries(n, K, units, in_T0, in_Tav, theta, notes=notes, system=system)

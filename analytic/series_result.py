@@ -43,6 +43,8 @@ class EdgeSeries:
     threshold: dict | None = None
     notes: tuple[str, ...] = field(default=())
     scaled: dict | None = None
+    #: the member of the family (:mod:`analytic.system`); ``None``: the paper's pendulum
+    system: object = None
 
     @property
     def lower(self) -> sp.Expr:
@@ -54,6 +56,7 @@ class EdgeSeries:
 
     def as_json(self) -> dict:
         out = {
+            **({} if self.system is None else self.system.as_json()),
             "order": self.order,
             "terms": self.terms,
             "units": self.units,
