@@ -95,19 +95,6 @@ def build(ctx: Context) -> Part:
     out.append(
         Latex("\\begin{description}\n" + "\n".join(i.raw for i in items) + "\n\\end{description}")
     )
-    rows = []
-    for c in cl:
-        rows.append(
-            [
-                raw(f"${c.order}$"),
-                raw(f"${c.a}, {c.b}$"),
-                raw(f"${c.ratio}$") if c.lowest_terms else raw(f"${c.ratio} = {c.reduced_ratio}$"),
-                _fraction(c.m),
-                raw(f"${sp.latex(c.T_exact)}$"),
-                raw(r"\texttt{" + digit_groups(c.T) + "}"),
-                _sci(checks[(c.order, c.a)]),
-            ]
-        )
     out.append(
         paragraph(
             raw(
@@ -124,28 +111,17 @@ def build(ctx: Context) -> Part:
         )
     )
     out.append(
-        table(
-            [
-                raw("$n$"),
-                raw("$a,b$"),
-                raw("$T_1:T_2$"),
-                raw("$m$"),
-                raw("$T/T_0$ exact"),
-                raw("$T/T_0$ (certified digits)"),
-                raw(r"$|M-(-1)^nI|_{\max}$"),
-            ],
-            rows,
-            columns="rcccclr",
-            caption=raw(
+        closings_table(
+            cl,
+            checks,
+            raw(
                 r"Every closing of the intervals of order $n\le "
                 + str(MAX_ORDER)
                 + r"$: $\omega_1T/2 = a\pi$, $\omega_2T/2 = b\pi$, $m = (b^2-a^2)/(b^2+a^2)$, "
                 r"$T = ab\sqrt{2/(a^2+b^2)}\,T_0$."
             ),
-            label="tab:closings",
+            "tab:closings",
             long=True,
-            size="footnotesize",
-            colsep="2.5pt",
         )
     )
     paper_ratios = [(2, 1), (3, 1), (3, 2)]
@@ -173,6 +149,44 @@ def build(ctx: Context) -> Part:
         )
     )
     return Part(Latex("\n\n".join(b.raw for b in out)))
+
+
+def closings_table(cl, checks, caption, label: str, *, long: bool = False) -> Latex:
+    """The table of closings: order, phase counts, ``T1:T2``, exact depth, exact and certified
+    period, and the independent Floquet check ``checks[(order, a)]`` (this section and the
+    family chapter)."""
+    rows = []
+    for c in cl:
+        reduced = c.system.is_paper and not c.lowest_terms
+        rows.append(
+            [
+                raw(f"${c.order}$"),
+                raw(f"${c.a}, {c.b}$"),
+                raw(f"${c.ratio} = {c.reduced_ratio}$") if reduced else raw(f"${c.ratio}$"),
+                _fraction(c.m),
+                raw(f"${sp.latex(c.T_exact)}$"),
+                raw(r"\texttt{" + digit_groups(c.T) + "}"),
+                _sci(checks[(c.order, c.a)]),
+            ]
+        )
+    return table(
+        [
+            raw("$n$"),
+            raw("$a,b$"),
+            raw("$T_1:T_2$"),
+            raw("$m$"),
+            raw("$T/T_0$ exact"),
+            raw("$T/T_0$ (certified digits)"),
+            raw(r"$|M-(-1)^nI|_{\max}$"),
+        ],
+        rows,
+        columns="rcccclr",
+        caption=caption,
+        label=label,
+        long=long,
+        size="footnotesize",
+        colsep="2.5pt",
+    )
 
 
 def _sci(s: str) -> Latex:

@@ -17,7 +17,7 @@ from .. import figures
 from ..i18n import say
 from ..latex import Latex, figure, inline, math, paragraph, raw, table
 from . import Context, Part
-from .closings import _sci, digit_groups
+from .closings import closings_table
 
 TITLE = "The family of two-level oscillators"
 LABEL = "sec:family"
@@ -313,33 +313,11 @@ def build(ctx: Context) -> Part:
             ),
         ),
     ]
-    rows = []
-    for c in cl:
-        rows.append(
-            [
-                raw(f"${c.order}$"),
-                raw(f"${c.a}, {c.b}$"),
-                raw(f"${c.ratio}$"),
-                raw(f"${c.m.numerator}/{c.m.denominator}$"),
-                raw(f"${sp.latex(c.T_exact)}$"),
-                raw(r"\texttt{" + digit_groups(c.T) + "}"),
-                _sci(checks[(c.order, c.a)]),
-            ]
-        )
     out.append(
-        table(
-            [
-                raw("$n$"),
-                raw("$a,b$"),
-                raw("$T_1:T_2$"),
-                raw("$m$"),
-                raw("$T/T_0$ exact"),
-                raw("$T/T_0$ (certified digits)"),
-                raw(r"$|M-(-1)^nI|_{\max}$"),
-            ],
-            rows,
-            columns="rcccclr",
-            caption=raw(
+        closings_table(
+            cl,
+            checks,
+            raw(
                 say(
                     r"Every closing of the pendulum with $D = 1/3$ up to order "
                     + str(CLOSING_ORDER)
@@ -351,9 +329,7 @@ def build(ctx: Context) -> Part:
                     r"--- независимая проверка по Флоке при напечатанном периоде.",
                 )
             ),
-            label="tab:family-closings",
-            size="footnotesize",
-            colsep="2.5pt",
+            "tab:family-closings",
         )
     )
     return Part(Latex("\n\n".join(b.raw for b in out)), tuple(figs))
