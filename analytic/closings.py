@@ -54,6 +54,7 @@ __all__ = [
     "Closings",
     "Step",
     "closings",
+    "closings_of_order",
     "closing_pairs",
     "theorem_steps",
     "family_steps",
@@ -443,17 +444,27 @@ def family_steps(system: System) -> tuple[Step, ...]:
 
 
 def _family_closings(n_max: int, system: System) -> Closings:
-    items = []
-    for n in range(1, n_max + 1):
-        for a in range(1, n):
-            b = n - a
-            if system.uses_depth:
-                depths = _depths(system, a, b)
-            else:
-                W1, W2 = system.omega_sq
-                depths = [None] if W2 / W1 == _ratio_sq(system, a, b) else []
-            for mv in depths:
-                T = _family_decimal(system, a, mv, DIGITS)
-                items.append(Closing(n, a, b, mv, T, (-1) ** n, system))
-    items.sort(key=lambda c: (c.order, c.m or 0))
+    items = [c for n in range(1, n_max + 1) for c in closings_of_order(n, system)]
     return Closings(n_max, tuple(items), family_steps(system), FAMILY_STATEMENT, system)
+
+
+@cache
+def closings_of_order(n: int, system: System = PAPER) -> tuple[Closing, ...]:
+    """The closings of order ``n`` of ``system`` sorted by depth, without the derivation steps
+    (those are :func:`closings`' ``steps``): the pairs ``a + b = n`` of the theorem, each at the
+    depth its law gives (the paper's ``1 <= a < b``; any ``a, b >= 1`` for another duty)."""
+    if system.is_paper:
+        return tuple(sorted((_closing(n, a, b) for a, b in closing_pairs(n)), key=lambda c: c.m))
+    items = []
+    for a in range(1, n):
+        b = n - a
+        if system.uses_depth:
+            depths = _depths(system, a, b)
+        else:
+            W1, W2 = system.omega_sq
+            depths = [None] if W2 / W1 == _ratio_sq(system, a, b) else []
+        for mv in depths:
+            T = _family_decimal(system, a, mv, DIGITS)
+            items.append(Closing(n, a, b, mv, T, (-1) ** n, system))
+    items.sort(key=lambda c: c.m or 0)
+    return tuple(items)

@@ -85,8 +85,10 @@ def _nsym(n):
 
 
 @cache
-def _scaled_model(n, damping: str) -> dict[str, sp.Expr]:
+def _scaled_model(n, damping: str, system=None) -> dict[str, sp.Expr]:
     """``N``, ``dN/dtheta`` and ``T/T0`` with ``1/Q = lambda m^p`` substituted (sympy)."""
+    if system is not None:
+        return _family_model(n, damping, system)
     damping = Damping(damping)
     p = scaling_power(n)
     par = {k.name: v for k, v in parameters(damping).items()}
@@ -105,21 +107,28 @@ def _scaled_model(n, damping: str) -> dict[str, sp.Expr]:
     }
 
 
-def _gens(n, extra: tuple[str, ...] = ()) -> list[str]:
-    return ["pi"] + (["n"] if _symbolic(n) else []) + list(extra)
+#: generators for ``|f(A)|`` and ``f'(A)`` of another duty (see "any member of the family")
+_ANGLE_GENS = ("cA", "sA")
+
+
+def _gens(n, extra: tuple[str, ...] = (), system=None) -> list[str]:
+    family = [] if system is None else list(_angle_parts(n, system)[1])
+    return ["pi"] + (["n"] if _symbolic(n) else []) + family + list(extra)
 
 
 def _eval(expr, env, ring, prec):
     e = dict(env)
     e.setdefault(S.n, "n")
+    for name in _ANGLE_GENS:  # the family's constant-angle generators (absent for the paper)
+        e.setdefault(sp.Symbol(name), name)
     return evaluate(expr, e, ring, prec, var=S.m)
 
 
-def _leading_balance(n, damping: str, ring: LaurentRing) -> tuple[dict, dict]:
+def _leading_balance(n, damping: str, ring: LaurentRing, system=None) -> tuple[dict, dict]:
     """``A`` and ``B`` of the leading term ``-(A - B lam^2)`` of ``N/m^(2p)`` at ``theta = 0``
     (found by evaluating at ``lam = 0, 1, 2``, the last as a check of the quadratic form)."""
-    p = scaling_power(n)
-    model = _scaled_model(n, damping)
+    p = _power(n, system)
+    model = _scaled_model(n, damping, system)
     vals = []
     for lam in (0, 1, 2):
         env = {
@@ -162,9 +171,12 @@ class ThresholdSeries:
     T_Tav: sp.Expr
     T_T0: sp.Expr
     m_min_leading: sp.Expr
+    #: the member of the family (:mod:`analytic.system`); ``None``: the paper's pendulum
+    system: object = None
 
     def as_json(self) -> dict:
         return {
+            **({} if self.system is None else self.system.as_json()),
             "order": self.order,
             "terms": self.terms,
             "damping": self.damping,
@@ -179,12 +191,12 @@ class ThresholdSeries:
 
 
 @cache
-def _threshold_raw(n, damping: str, prec: int) -> tuple[Series, Series]:
+def _threshold_raw(n, damping: str, prec: int, system=None) -> tuple[Series, Series]:
     """``(lam(m), u(m))`` at the tangency through ``m**prec``."""
-    p = scaling_power(n)
-    ring = LaurentRing(_gens(n))
-    model = _scaled_model(n, damping)
-    A, B = _leading_balance(n, damping, ring)
+    p = _power(n, system)
+    ring = LaurentRing(_gens(n, (), system))
+    model = _scaled_model(n, damping, system)
+    A, B = _leading_balance(n, damping, ring, system)
     lam0 = ring.root(ring.mul(A, ring.inverse(B)), 1, 2)
     # leading Jacobian of (N/m^2p, N_theta/m^p) in (lam, u): diag(2 B lam0, 2)
     j11_inv = ring.inverse(ring.scale(ring.mul(B, lam0), 2))
@@ -209,31 +221,49 @@ def _check_terms(terms):
     return check(terms)
 
 
-def threshold_series(order, terms: int = 4, *, damping: str = "exact") -> ThresholdSeries:
+def threshold_series(
+    order, terms: int = 4, *, damping: str = "exact", system="pendulum", duty="1/2"
+) -> ThresholdSeries:
     """The threshold (tangency) of the interval of order ``order`` as series.
 
-    ``order``: an integer, or ``"odd"``/``"even"`` (symbol ``n``).  ``damping``: ``"paper"`` or
-    ``"exact"``.  See :class:`ThresholdSeries`.
+    ``order``: an integer, or ``"odd"``/``"even"`` (symbol ``n``, the paper's system only).
+    ``damping``: ``"paper"`` or ``"exact"``.  ``system``, ``duty``: the member of the family
+    (:mod:`analytic.system`; a :class:`~analytic.system.System` passes through), whose
+    threshold is derived from its parameter forms (:func:`analytic.family.parameter_forms`) in
+    the scaling ``1/Q = lam m^p`` with ``p`` read off the forms (:func:`family_scaling_power`).
+    A custom system has no depth and is refused.  See :class:`ThresholdSeries`.
     """
-    from paramres.inputs import as_damping
+    from paramres.inputs import InputError, as_damping, as_system
 
     from .series_result import _check_order
 
     order = _check_order(order)
     terms = _check_terms(terms)
+    sysv = as_system(system, duty)
+    if not sysv.is_paper:
+        if not sysv.uses_depth:
+            raise InputError(
+                f"{sysv.label} has no depth: there is no threshold depth m_min(Q) to expand"
+            )
+        if isinstance(order, str):
+            raise InputError(
+                "closed forms in n (order odd/even) are for the paper's system; give an integer "
+                f"order for {sysv.label}"
+            )
+        return _threshold(order, terms, as_damping(damping), sysv)
     return _threshold(order, terms, as_damping(damping))
 
 
 @cache
-def _threshold(order, terms: int, damping: str) -> ThresholdSeries:
+def _threshold(order, terms: int, damping: str, system=None) -> ThresholdSeries:
     n = order
-    p = scaling_power(n)
+    p = _power(n, system)
     # m_min (odd) through Q^-terms needs lam through m^(terms-1); m_min^2 (even) through Q^-terms
     # needs lam as a series in m^2 through (m^2)^(terms-1)
-    prec = max(terms, terms - 1 if p == 1 else 2 * terms - 2)
-    lam, u = _threshold_raw(n, damping, prec)
+    prec = max(terms, terms - 1 if p == 1 else p * terms - p)
+    lam, u = _threshold_raw(n, damping, prec, system)
     ring = lam.ring
-    syms = {"n": S.n}
+    syms = {"n": S.n, **_constants(n, system)}
     m = S.m
     lam_expr = lam.to_sympy(m, syms)
     Q_min = 1 / (m**p * lam_expr)
@@ -246,7 +276,7 @@ def _threshold(order, terms: int, damping: str) -> ThresholdSeries:
             raise AssertionError("threshold series shorter than asked for")
         m_min = g.to_sympy(eps, syms).subs(eps, 1 / Q_SYM)
         m_min2 = (g * g).to_sympy(eps, syms).subs(eps, 1 / Q_SYM)
-    else:
+    elif system is None or not any(lam.c[k] for k in range(1, len(lam.c), 2)):
         if any(lam.c[k] for k in range(1, len(lam.c), 2)):  # pragma: no cover - m -> -m symmetry
             raise AssertionError("even-order threshold series is not even in m")
         half = Series(ring, lam.c[::2])  # lam as a series in M = m^2
@@ -255,11 +285,20 @@ def _threshold(order, terms: int, damping: str) -> ThresholdSeries:
             raise AssertionError("threshold series shorter than asked for")
         m_min2 = g.to_sympy(eps, syms).subs(eps, 1 / Q_SYM)
         m_min = sp.sqrt(m_min2)
+    else:
+        # another member with p = 2: lam(m) has odd powers too, so m_min is a series in
+        # Q^(-1/2): revert lam m^2 = eps = 1/Q
+        g, lam0 = _revert_power(lam, p, terms)  # m as a series in delta = (eps/lam0)^(1/p)
+        delta = sp.Symbol("delta", positive=True)
+        dval = 1 / sp.sqrt(Q_SYM * ring.to_sympy(lam0, syms))
+        m_min = g.to_sympy(delta, syms).subs(delta, dval)
+        m_min2 = sp.expand((g * g).to_sympy(delta, syms).subs(delta, dval))
     theta = u.shift(p).truncate(terms)
     lam = lam.truncate(terms)
-    w0 = evaluate(_scaled_model(n, damping)["w0"], {}, ring, terms, var=m)
+    model = _scaled_model(n, damping, system)
+    w0 = evaluate(model["w0"], {}, ring, terms, var=m)
     T_env = {LAM: lam, S.theta: theta}
-    T0 = _eval(_scaled_model(n, damping)["T0"], T_env, ring, terms)
+    T0 = _eval(model["T0"], T_env, ring, terms)
     Tav = T0 * w0
     return ThresholdSeries(
         n,
@@ -274,26 +313,157 @@ def _threshold(order, terms: int, damping: str) -> ThresholdSeries:
         Tav.to_sympy(m, syms),
         T0.to_sympy(m, syms),
         (1 / (Q_SYM * ring.to_sympy(lam.c[0], syms))) ** sp.Rational(1, p),
+        system,
     )
+
+
+# ------------------------------------------------------------------------ any member of the family
+#
+# For another member or duty (:mod:`analytic.family`) the normal form keeps its shape, with the
+# system's ``r^2, u = 1 - r^2, beta, g, w`` from :func:`analytic.family.parameter_forms`.  For a
+# duty ``D != 1/2``, ``beta(0) = 1 - 2D`` does not vanish, so ``f(beta x)`` has the constant angle
+# ``A = beta(0) n pi/2``: ``f(A + t) = f(A) cos t + f'(A) sin t`` with the small ``t = (beta -
+# beta(0)) n pi/2 + beta theta``.  Irrational constants ``|f(A)|``, ``f'(A)`` become generators
+# ``c``, ``s`` of the coefficient ring (written out at the end); ``c`` is kept positive so that the
+# leading ``lam_0 = sqrt(A/B)`` (a monomial in ``c``) is too.  The scaling power ``p`` is the
+# order in ``m`` of ``r f(beta n pi/2)`` (1 unless ``n D`` is an integer, where ``f(A) = 0``).
+
+
+def _power(n, system) -> int:
+    return scaling_power(n) if system is None else family_scaling_power(n, system)
+
+
+@cache
+def _angle_parts(n: int, system) -> tuple[tuple, tuple]:
+    """``((fA, gA, sign), gens)``: ``f(A) = sign * fA`` and ``f'(A) = gA`` as sympy numbers or
+    generator names, and the generators used (``"cA"``, ``"sA"``)."""
+    from .family import parameter_forms
+
+    beta = parameter_forms(system, Damping.NONE).definitions["beta"]
+    b0 = sp.nsimplify(sp.limit(beta, S.m, 0))
+    A = b0 * n * sp.pi / 2
+    if n % 2:
+        fA, gA = sp.cos(A), -sp.sin(A)
+    else:
+        fA, gA = sp.sin(A), sp.cos(A)
+    fA, gA = sp.nsimplify(fA), sp.nsimplify(gA)
+    sign = -1 if fA.is_negative else 1
+    gens = []
+    f_part = abs(fA) if fA.is_Rational else "cA"
+    g_part = gA if gA.is_Rational else "sA"
+    gens += [x for x in (f_part, g_part) if isinstance(x, str)]
+    return (f_part, g_part, sign, abs(fA), gA, b0), tuple(gens)
+
+
+def _constants(n, system) -> dict:
+    """The generators' values (sympy) for writing the series out."""
+    if system is None:
+        return {}
+    (f_part, g_part, _sign, fval, gval, _b0), _ = _angle_parts(n, system)
+    out = {}
+    if f_part == "cA":
+        out["cA"] = fval
+    if g_part == "sA":
+        out["sA"] = gval
+    return out
+
+
+def _family_parameters(system, damping: Damping) -> dict:
+    from .family import parameter_forms
+
+    defs = parameter_forms(system, damping).definitions
+    r2e = defs["r2"] if "r2" in defs else defs["r"] ** 2
+    return {
+        "r2": r2e,
+        "u": defs["u"],
+        "beta": defs["beta"],
+        "g": defs.get("g", sp.Integer(0)),
+        "w": defs["w"],
+        "w0": defs["w0"],
+    }
+
+
+def family_scaling_power(n: int, system) -> int:
+    """``p`` of the distinguished scaling ``1/Q ~ m^p`` for order ``n`` of ``system``: the order
+    in ``m`` of the frictionless ``r f(beta n pi/2)`` (the leading half-width), from the
+    system's parameter forms.  1 unless ``n D`` is an integer (the n-th harmonic of the square
+    wave vanishes), then 2 for the built-in laws."""
+    return _family_power(int(n), system)
+
+
+@cache
+def _family_power(n: int, system) -> int:
+    (f_part, g_part, sign, _fv, _gv, b0), gens = _angle_parts(n, system)
+    ring = LaurentRing(["pi", *gens])
+    par = _family_parameters(system, Damping.NONE)
+    K = 8
+    env = {}
+    r = evaluate(par["r2"], env, ring, 2 * K, var=S.m)
+    t = evaluate((par["beta"] - b0) * n * sp.pi / 2, env, ring, K, var=S.m)
+    fA = ring.gen(f_part) if isinstance(f_part, str) else ring.const(f_part)
+    gA = ring.gen(g_part) if isinstance(g_part, str) else ring.const(g_part)
+    f = t.cos().scale_coeff(ring.scale(fA, sign)) + t.sin().scale_coeff(gA)
+    prod = r.truncate(K) * (f * f)
+    v = prod.valuation()
+    if v is None or v % 2:  # pragma: no cover - r^2 f^2 is a square: even order
+        raise ArithmeticError(f"no leading half-width of order {n} within m^{K // 2}")
+    return v // 2
+
+
+@cache
+def _family_model(n: int, damping: str, system) -> dict[str, sp.Expr]:
+    """:func:`_scaled_model` for another member of the family: ``N``, ``dN/dtheta`` and ``T/T0``
+    with ``1/Q = lambda m^p``, the angle ``A`` split off (generators ``cA``, ``sA``)."""
+    damping = Damping(damping)
+    p = family_scaling_power(n, system)
+    (f_part, g_part, sign, _fv, _gv, b0), _ = _angle_parts(n, system)
+    par = _family_parameters(system, damping)
+    sub = {Q_SYM: 1 / (LAM * S.m**p)}
+    c = sp.Symbol(f_part) if isinstance(f_part, str) else f_part
+    s_ = sp.Symbol(g_part) if isinstance(g_part, str) else g_part
+    th = S.theta
+    x = n * sp.pi / 2 + th
+    beta = par["beta"].subs(sub)
+    t = (beta - b0) * n * sp.pi / 2 + beta * th
+    fb = sign * c * sp.cos(t) + s_ * sp.sin(t)
+    N = sp.sin(th) ** 2 - par["r2"].subs(sub) * fb**2 + par["u"].subs(sub) * sp.sinh(
+        par["g"].subs(sub) * x
+    ) ** 2
+    T0 = x / (sp.pi * par["w"].subs(sub))
+    return {"N": N, "dN": sp.diff(N, th), "T0": T0, "w0": par["w0"]}
+
+
+def _revert_power(lam: Series, p: int, terms: int) -> tuple[Series, dict]:
+    """``m`` as a series in ``delta = (eps/lam_0)^(1/p)`` from ``eps = lam(m) m^p`` (``eps =
+    1/Q``): ``delta = m (lam(m)/lam_0)^(1/p)`` (leading coefficient 1, so the root is exact),
+    reverted.  Returns the series and ``lam_0``."""
+    ring = lam.ring
+    lam0 = lam.c[0]
+    unit = lam.truncate(terms).scale_coeff(ring.inverse(lam0))
+    root = unit.rational_power(sp.Rational(1, p))
+    g = reversion(root.shift(1).truncate(terms))
+    if g.prec != terms:  # pragma: no cover
+        raise AssertionError("threshold series shorter than asked for")
+    return g, lam0
 
 
 # ------------------------------------------------------------------------------------------ edges
 
 
 @cache
-def _near_raw(n, damping: str, prec: int) -> dict[str, Series]:
+def _near_raw(n, damping: str, prec: int, system=None) -> dict[str, Series]:
     """``theta(m)`` on both edges at fixed ``nu``, coefficients in ``pi, (n,) s, nu``, and the
     conversion series to ``T/T0`` and ``T/T_av``."""
-    p = scaling_power(n)
-    base = LaurentRing(_gens(n))
-    A, B = _leading_balance(n, damping, base)
+    p = _power(n, system)
+    base = LaurentRing(_gens(n, (), system))
+    A, B = _leading_balance(n, damping, base, system)
     lam0 = base.root(base.mul(A, base.inverse(B)), 1, 2)
-    gens = _gens(n, ("s", "nu"))
+    gens = _gens(n, ("s", "nu"), system)
     tmp = LaurentRing(gens)
     ring = LaurentRing(gens, relation=("nu", tmp.sub(tmp.one, tmp.gen("s", 2))))
     lift = _lift(base, ring)
     lam = Series.constant(ring, ring.mul(lift(lam0), ring.gen("nu")), prec + 2 * p)
-    model = _scaled_model(n, damping)
+    model = _scaled_model(n, damping, system)
     sqrtA = lift(base.root(A, 1, 2))
     out = {}
     for name, sign in (("lower", -1), ("upper", 1)):
@@ -339,26 +509,33 @@ def _lift(base: LaurentRing, ring: LaurentRing):
     return f
 
 
-def near_threshold_edges(order, terms: int, *, Q=None, damping: str = "exact", units: str = "T0"):
+def near_threshold_edges(
+    order, terms: int, *, Q=None, damping: str = "exact", units: str = "T0", system=None
+):
     """Both edges above the threshold in the distinguished scaling, as an
     :class:`analytic.series_result.EdgeSeries`.
 
     The series are in powers of ``m`` at fixed ``nu = (m_min0/m)^p``, with ``m_min0`` the leading
     threshold (``n pi/(6Q)`` odd, ``sqrt(2/(3Q))`` even); the returned expressions have ``nu``
     written out, so they are functions of ``m`` and ``Q`` (``Q`` left symbolic if ``Q is None``).
+    ``system``: another member of the family (:class:`analytic.system.System`, integer orders;
+    ``p`` from :func:`family_scaling_power`); ``None`` or the paper's: the pendulum.
     """
     from .series_result import EdgeSeries, _check_order
 
     n = _check_order(order)
     terms = _check_terms(terms)
-    p = scaling_power(n)
-    raw = _near_raw(n, damping, terms)
+    if system is not None and system.is_paper:
+        system = None
+    p = _power(n, system)
+    raw = _near_raw(n, damping, terms, system)
+    consts = _constants(n, system)
     base = raw["lam0"].ring
-    lam0 = base.to_sympy(raw["lam0"].c[0], {"n": S.n})
+    lam0 = base.to_sympy(raw["lam0"].c[0], {"n": S.n, **consts})
     Qs = Q_SYM if Q is None else _as_sympy_number(Q)
     nu = 1 / (Qs * lam0 * S.m**p)
     s = sp.sqrt(1 - nu**2)
-    syms = {"n": S.n, "s": s, "nu": nu}
+    syms = {"n": S.n, "s": s, "nu": nu, **consts}
     m = S.m
     in_T0, in_Tav, theta = {}, {}, {}
     for name in ("lower", "upper"):
@@ -367,7 +544,7 @@ def near_threshold_edges(order, terms: int, *, Q=None, damping: str = "exact", u
         in_Tav[name] = raw[name]["Tav"].to_sympy(m, syms)
     mmin0 = (1 / (Qs * lam0)) ** sp.Rational(1, p)
     s_sym = sp.Symbol("s", positive=True)
-    ssyms = {"n": S.n, "s": s_sym, "nu": sp.sqrt(1 - s_sym**2)}
+    ssyms = {"n": S.n, "s": s_sym, "nu": sp.sqrt(1 - s_sym**2), **consts}
     scaled = {
         "s": sp.Eq(s_sym, sp.sqrt(1 - (sp.Symbol("m_min0", positive=True) / m) ** (2 * p))),
         "m_min0": mmin0,
@@ -391,6 +568,7 @@ def near_threshold_edges(order, terms: int, *, Q=None, damping: str = "exact", u
         threshold={"m_min_leading": mmin0},
         notes=notes,
         scaled=scaled,
+        system=system,
     )
 
 

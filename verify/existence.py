@@ -31,14 +31,17 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, fields
 from fractions import Fraction
+from functools import cache
 
 import mpmath
 import numpy as np
 from flint import arb, ctx
 
-from .certify import CertificationError, bits_for_digits, certified_root, prove_sign, to_mpf
+from analytic.system import PAPER, System
+
+from .certify import CertificationError, Jet, bits_for_digits, certified_root, prove_sign, to_mpf
 from .derived import backend
-from .inputs import InputError, as_damping, as_digits, as_order, as_quality
+from .inputs import InputError, as_damping, as_digits, as_order, as_quality, as_system
 from .params import NEAR_CRITICAL, exact_fraction, form_for, normal_params, trace_params
 
 __all__ = [
@@ -49,6 +52,7 @@ __all__ = [
     "absence_reason",
     "max_indicator",
     "closing_depths",
+    "family_hump_box",
 ]
 
 
@@ -87,6 +91,8 @@ class Existence:
     open_to_one: bool
     undecided: tuple = ()
     segments: tuple = ()
+    #: the member of the family (:mod:`analytic.system`); the paper's pendulum by default
+    system: System = PAPER
 
     def _ranges(self) -> list[tuple]:
         """``[(start, end), ...]`` of the ranges where the interval exists, each end a
@@ -172,14 +178,15 @@ class Existence:
             if not after:
                 return f"above the last range, which ends at m = {self._text(before[-1][1])}"
             a, b = self._text(before[-1][1]), self._text(after[0][0])
-            closing = _closing_in(self.order, self.Q, self.damping, _mpf(lo), _mpf(hi))
+            closing = _closing_in(
+                self.order, self.Q, self.damping, _mpf(lo), _mpf(hi), self.system
+            )
             around = ""
-            if closing:
-                b_, a_ = (int(x) for x in closing.split(":"))
-                mc = Fraction(b_ * b_ - a_ * a_, b_ * b_ + a_ * a_)
+            if closing is not None:
+                mc = closing.m
                 around = (
-                    f" around the closing T1:T2 = {closing} (m = {mc.numerator}/{mc.denominator} "
-                    "without friction)"
+                    f" around the closing T1:T2 = {closing.ratio} (m = {mc.numerator}/"
+                    f"{mc.denominator} without friction)"
                 )
             return f"in the gap {a} < m < {b}{around}, where friction swallows the interval"
         return "the depth is beyond the range the proof covers"
@@ -187,6 +194,7 @@ class Existence:
     def as_json(self) -> dict:
         q = self.Q
         return {
+            **self.system.as_json(),
             "order": self.order,
             "Q": str(q.numerator) if q.denominator == 1 else f"{q.numerator}/{q.denominator}",
             "damping": self.damping,
@@ -205,6 +213,8 @@ class Existence:
 
     def __str__(self) -> str:
         head = f"order {self.order}, Q = {self.as_json()['Q']} ({self.damping} model)"
+        if not self.system.is_paper:
+            head = f"{self.system.label}: {head}"
         lines = []
         ranges = self.interval_texts()
         if not ranges:
@@ -227,65 +237,89 @@ class Existence:
         return "\n".join(lines)
 
 
-def _closing_in(n: int, Q, damping: str, lo, hi) -> str:
-    """``"b:a"`` (``T1:T2``) of the closing of order ``n`` whose depth lies in ``[lo, hi]``."""
-    for a in range(1, n):
-        b = n - a
-        if a >= b:
-            continue
-        if Q is None or damping == "paper":
-            mc = Fraction(b * b - a * a, b * b + a * a)
-            if lo <= _mpf(mc) <= hi:
-                return f"{b}:{a}"
-    if damping == "exact":
-        for mc in closing_depths(n, Q, damping):
-            if lo <= mc <= hi:
-                return _nearest_ratio(n, mc)
-    return ""
+def _closing_in(n: int, Q, damping: str, lo, hi, system: System = PAPER):
+    """The frictionless closing (:class:`analytic.closings.Closing`) of order ``n`` whose gap with
+    friction lies in ``[lo, hi]`` (``None``: none): without friction and in the paper model at
+    its depth, in the exact model at the depth where the damped phases close
+    (:func:`closing_depths`, matched in order)."""
+    found = _closings_of(n, system)
+    depths = closing_depths(n, Q, damping, system)
+    for c, mc in zip(found, depths, strict=False):
+        if lo <= mc <= hi:
+            return c
+    return None
 
 
-def _nearest_ratio(n: int, mc: float) -> str:
-    best = min(
-        ((n - a, a) for a in range(1, n) if a < n - a),
-        key=lambda ba: abs((ba[0] ** 2 - ba[1] ** 2) / (ba[0] ** 2 + ba[1] ** 2) - mc),
-    )
-    return f"{best[0]}:{best[1]}"
+def _closings_of(n: int, system: System) -> tuple:
+    """The frictionless closings of order ``n`` of ``system``, ordered by depth
+    (:func:`analytic.closings.closings`: derived for every member and duty)."""
+    from analytic.closings import closings_of_order
+
+    return closings_of_order(n, system)
 
 
 # ---------------------------------------------------------------------------------------------
 # the scan
 
 
-def closing_depths(n: int, Q: Fraction | None, damping: str) -> list[float]:
-    """Depths where the friction-free form of order ``n`` closes (``f(x) = f(y) = 0``):
-    ``a Omega2 = b Omega1`` with ``a + b = n``, ``1 <= a < b`` -- ``m = (b^2 - a^2)/(b^2 + a^2)``
-    without friction and in the paper model; in the exact model with the damped frequencies."""
+def closing_depths(
+    n: int, Q: Fraction | None, damping: str, system: System = PAPER
+) -> list[float]:
+    """Depths where the friction-free form of order ``n`` closes (``f(x) = f(y) = 0``), in the
+    order of :func:`_closings_of`: both phases turn through whole multiples of ``pi``, ``Omega1 D
+    T = a pi``, ``Omega2 (1 - D) T = b pi`` with ``a + b = n`` (:mod:`analytic.closings`).
+    Without friction and in the paper model the exact depths of :func:`analytic.closings.closings`
+    (the paper's ``(b^2 - a^2)/(b^2 + a^2)``); in the exact model with the damped frequencies,
+    where ``a (1 - D) Omega2 = b D Omega1``."""
+    found = _closings_of(n, system)
+    if Q is None or damping == "paper":
+        return [float(c.m) for c in found]
     out = []
-    for a in range(1, n):
-        b = n - a
-        if a >= b:
-            continue
-        if Q is None or damping == "paper":
-            out.append((b * b - a * a) / (b * b + a * a))
-            continue
-        q2 = 4 * float(Q) ** 2
-
-        def h(m, a=a, b=b):
-            # the damped frequencies (units of gamma) from the one definition in verify.params:
-            # the phases close where a Omega2 = b Omega1
-            tp = trace_params(Fraction(m), Fraction(Q), backend("math"))
-            return a * tp.nu2 - b * tp.nu1
-
-        # both damped frequencies are real only for 1 - 4Q^2 < m < 4Q^2 - 1 (none if Q <= 1/2:
-        # half 1 is then over-damped at every depth and does not rotate, so nothing closes)
-        lo, hi = max(0.0, 1 - q2), min(1.0, q2 - 1)
-        if not lo < hi or not (h(lo) < 0 < h(hi * (1 - 1e-15))):
-            continue
-        for _ in range(80):
-            mid = 0.5 * (lo + hi)
-            lo, hi = (mid, hi) if h(mid) < 0 else (lo, mid)
-        out.append(0.5 * (lo + hi))
+    for c in found:
+        mc = _damped_closing(c.a, c.b, Fraction(Q), system)
+        if mc is not None:
+            out.append(mc)
     return out
+
+
+def _damped_closing(a: int, b: int, Q: Fraction, system: System) -> float | None:
+    """The depth where ``a (1 - D) Omega2 = b D Omega1`` with the damped frequencies (float
+    bisection; the scaled frequencies of :func:`verify.params.trace_params` are ``nu1 = 2 D
+    Omega1/gamma`` and ``nu2 = 2 (1 - D) Omega2/gamma`` for every member, so the condition is
+    ``a nu2 = b nu1``).  ``None`` if the phases do not close while both rotate."""
+    from analytic.system import phase_regimes
+
+    def rotating(m: Fraction) -> bool:
+        return phase_regimes(system, m, Q, "exact") == ("under", "under")
+
+    def h(m: float) -> float:
+        tp = trace_params(Fraction(m), Q, backend("math"), system)
+        return a * float(tp.nu2) - b * float(tp.nu1)
+
+    # the depths where both phases rotate: an interval from 0 (the laws are monotone in m)
+    if not rotating(Fraction(0)):
+        return None
+    lo, hi = Fraction(0), Fraction(1)
+    if not rotating(Fraction(1) - Fraction(1, 2**50)):
+        for _ in range(60):
+            mid = (lo + hi) / 2
+            lo, hi = (mid, hi) if rotating(mid) else (lo, mid)
+        hi = lo
+    else:
+        hi = Fraction(1) - Fraction(1, 2**50)
+    flo, fhi = 0.0, float(hi)
+    if not fhi > 0:
+        return None
+    h_lo, h_hi = h(flo), h(fhi)
+    if not h_lo * h_hi < 0:
+        return None
+    for _ in range(80):
+        mid = 0.5 * (flo + fhi)
+        if (h(mid) < 0) == (h_lo < 0):
+            flo = mid
+        else:
+            fhi = mid
+    return 0.5 * (flo + fhi)
 
 
 def _scan_points(n: int, Q, damping: str) -> np.ndarray:
@@ -491,11 +525,11 @@ def existence_scan(order, Q, *, damping="exact", digits=15) -> Existence:
 BUDGET_PER_BIT = 50
 
 
-def _form_of(m: Fraction, Q: Fraction, damping: str):
-    return form_for(m, Q, damping)
+def _form_of(m: Fraction, Q: Fraction, damping: str, system: System = PAPER):
+    return form_for(m, Q, damping, system)
 
 
-def _float_stages(n: int, boxes, Q: Fraction, damping: str) -> list:
+def _float_stages(n: int, boxes, Q: Fraction, damping: str, system: System = PAPER) -> list:
     """The float stage (maximiser, edges, bracket) at the middle of each range whose equations
     are the normal form, in one vectorised call (``None`` for the others).  The float parameters
     come from the exact middle (right also next to ``m = 1`` and to critical damping)."""
@@ -506,10 +540,10 @@ def _float_stages(n: int, boxes, Q: Fraction, damping: str) -> list:
     out: list = [None] * len(boxes)
     idx, rows = [], []
     for j, x in enumerate(mids):
-        if _form_of(x, Q, damping)[0] != "normal":
+        if _form_of(x, Q, damping, system)[0] != "normal":
             continue
         idx.append(j)
-        rows.append(normal_params(x, Q, damping, backend("math")))
+        rows.append(normal_params(x, Q, damping, backend("math"), system))
     if not idx:
         return out
     names = [f.name for f in fields(NormalParams)]
@@ -525,23 +559,36 @@ def _float_stages(n: int, boxes, Q: Fraction, damping: str) -> list:
 
 
 def _decide(
-    n: int, lo: Fraction, hi: Fraction, Q: Fraction, damping: str, bits: int, fl=None
-) -> int:
+    n: int,
+    lo: Fraction,
+    hi: Fraction,
+    Q: Fraction,
+    damping: str,
+    bits: int,
+    fl=None,
+    system: System = PAPER,
+) -> int | None:
     """``+1``: the interval exists at every depth of ``[lo, hi]`` (a point ``T`` with ``D > 0`` in
     the order's window, the same for all of them); ``-1``: at none (``D < 0`` on the whole window
     for all of them); ``0``: not decided on this range.  ``D`` is evaluated with the parameters as
     balls that hold every depth of the range (:func:`verify.solve.depth_ball`); ``fl`` is the
-    float stage at the middle (:func:`_float_stages`), only a starting point."""
+    float stage at the middle (:func:`_float_stages`), only a starting point.  ``None``: not
+    decided and not to be split (another member of the family in the trace form, whose proofs over
+    depth ranges are not implemented)."""
     from .solve import hump_box, hump_trace
 
     mid = (lo + hi) / 2
-    kinds = {_form_of(x, Q, damping) for x in (lo, mid, hi)}
+    kinds = {_form_of(x, Q, damping, system) for x in (lo, mid, hi)}
     if len(kinds) != 1:
         return 0  # a change of equations inside: split there
     kind, regimes = kinds.pop()
+    if kind != "normal" and not system.is_paper:
+        return None
     try:
-        if kind == "normal":
+        if kind == "normal" and system.is_paper:
             h = hump_box(n, lo, hi, Q, damping, float_stage=fl)
+        elif kind == "normal":
+            h = family_hump_box(n, lo, hi, Q, damping, system, float_stage=fl)
         else:
             h, why = hump_trace(n, mid, Q, regimes, m_box=(lo, hi))
             if h is None and n == 1 and regimes[1] != "under":
@@ -584,6 +631,97 @@ def _decide(
     except (ValueError, ZeroDivisionError, OverflowError):  # pragma: no cover - guard
         return 0
     return 0
+
+
+def family_hump_box(
+    n: int, lo: Fraction, hi: Fraction, Q: Fraction, damping: str, system: System, float_stage=None
+):
+    """:func:`verify.solve.hump_box` for any member of the family: ``D``, ``D'``, ``D''`` of the
+    normal form for every depth of ``[lo, hi]`` at once, by the mean-value form in ``m`` with the
+    slopes from jets (:class:`verify.certify.Jet`) of the system's generated parameters
+    (:func:`verify.system_params.normal_jets`).  The middle is :func:`verify.solve.hump_normal`
+    at the exact middle depth; the bracket is the whole window."""
+    from analytic.stitching import Parity
+
+    from .derived import indicator
+    from .params import NormalParams
+    from .solve import (
+        NEAR_ONE,
+        _AtPrecision,
+        _Hump,
+        _hump_near_one,
+        box_prec,
+        depth_ball,
+        hump_normal,
+    )
+    from .system_params import normal_jets
+
+    mid = (lo + hi) / 2
+    if float_stage is None:
+        float_stage = _float_stages(n, [(mid, mid)], Q, damping, system)[0]
+    fl = float_stage
+    hm, _ = hump_normal(n, mid, Q, damping, 64, m_box=(mid, mid), float_stage=fl, system=system)
+    box = (lo, hi)
+
+    def jets():
+        Qb = arb(Q.numerator) / Q.denominator
+        return NormalParams(**normal_jets(system, Jet(depth_ball(box), 1), Jet(Qb), damping))
+
+    P = _AtPrecision(jets, box_prec(box))
+    C = _AtPrecision(lambda: arb.pi() * n / 2)
+    if fl["bm"] < NEAR_ONE:
+        hj = _hump_near_one(n, P, fl, math.pi / 2, C, None, check=False)
+    else:
+        form = indicator(Parity.of(n))
+        D0, D1, D2 = (form.compiled("arb", k) for k in (0, 1, 2))
+
+        def args():
+            p = P()
+            return (C(), p.r2, p.u, p.beta, p.g)
+
+        hj = _Hump(
+            D=lambda t: D0(t, *args()),
+            dD=lambda t: D1(t, *args()),
+            d2D=lambda t: D2(t, *args()),
+            a=hm.a,
+            b=hm.b,
+            top=hm.top,
+            dtop=hm.dtop,
+            lo=hm.lo,
+            hi=hm.hi,
+            floor=hm.floor,
+        )
+    if hj.variable != hm.variable:  # pragma: no cover - both follow the float stage's bm
+        raise CertificationError("the middle and the jets use different variables")
+    dM = _AtPrecision(lambda: depth_ball(box) - arb(mid.numerator) / mid.denominator, box_prec(box))
+
+    def mv(f0, f1):
+        def g(t):
+            v = f1(t)
+            slope = v.d if isinstance(v, Jet) else 0
+            return f0(t) + slope * dM()
+
+        return g
+
+    if hm.variable == "y":
+        a, b = 0.0, math.nextafter(math.pi, 4.0)
+    else:
+        a, b = math.nextafter(-math.pi / 2, -2.0), math.nextafter(math.pi / 2, 2.0)
+    return _Hump(
+        D=mv(hm.D, hj.D),
+        dD=mv(hm.dD, hj.dD),
+        d2D=mv(hm.d2D, hj.d2D),
+        a=a,
+        b=b,
+        top=hm.top,
+        dtop=hm.dtop,
+        lo=hm.lo,
+        hi=hm.hi,
+        floor=hm.floor,
+        shifts=hm.shifts,
+        variable=hm.variable,
+        point=hm,
+    )
 
 
 def _box_trace_params(lo, hi, Q):
@@ -705,7 +843,9 @@ def ball_of(x: float) -> arb:
     return arb(x)
 
 
-def _breakpoints(n: int, Q: Fraction, damping: str, top: Fraction) -> list[Fraction]:
+def _breakpoints(
+    n: int, Q: Fraction, damping: str, top: Fraction, system: System = PAPER
+) -> list[Fraction]:
     """Where the depth axis is first cut: geometric towards both ends, even in between, at every
     closing (a gap is centred there) and where the equations change (critical damping)."""
     pts = {Fraction(0), top}
@@ -715,24 +855,61 @@ def _breakpoints(n: int, Q: Fraction, damping: str, top: Fraction) -> list[Fract
     while Fraction(1) - Fraction(1, 2**k) < top:
         pts.add(1 - Fraction(1, 2**k))
         k += 1
-    for mc in closing_depths(n, Q, damping):
+    for mc in closing_depths(n, Q, damping, system):
         pts.add(Fraction(mc))
     if damping == "exact":
-        q2 = 4 * Q * Q
-        eps2 = Fraction(NEAR_CRITICAL) ** 2
-        for x in (q2 - 1, 1 - q2, (q2 - 1 - eps2) / (1 + eps2)):
-            pts.add(x)
+        pts.update(_regime_changes(Q, system))
     return sorted(x for x in pts if 0 <= x <= top)
 
 
-def _segments(n: int, Q: Fraction, damping: str, digits: int, budget: int):
+def _regime_changes(Q: Fraction, system: System) -> set[Fraction]:
+    """Depths where the equations change in the exact model: a phase critically damped
+    (``omega_i^2 = gamma^2``) and phase 1 at :data:`verify.params.NEAR_CRITICAL` of it, from the
+    roots of the system's laws (:func:`_regime_roots`; the paper's ``4 Q^2 - 1 = +-m``, ...)."""
+    import sympy as sp
+
+    g2v = sp.Rational(1, 4) / sp.Rational(Q.numerator, Q.denominator) ** 2
+    g2, roots = _regime_roots(system)
+    out = set()
+    for expr in roots:
+        root = sp.nsimplify(expr.subs(g2, g2v))
+        if root.is_Rational and 0 < root < 1:
+            out.add(Fraction(int(root.p), int(root.q)))
+        elif root.is_real and 0 < root < 1:  # irrational: a nearby rational cut serves
+            out.add(Fraction(str(sp.N(root, 30))))
+    return out
+
+
+@cache
+def _regime_roots(system: System) -> tuple:
+    """``(g2, roots)``: the depths where ``omega_1^2``, ``omega_2^2`` or ``omega_1^2 / (1 +
+    NEAR_CRITICAL^2)`` equal ``g2 = gamma^2/omega0^2``, solved by sympy once per system (a
+    custom system has none: its phases do not depend on ``m``)."""
+    import sympy as sp
+
+    from analytic.model import S
+
+    g2 = sp.Symbol("g2", positive=True)
+    if not system.uses_depth:
+        return g2, ()
+    eps2 = sp.Rational(Fraction(NEAR_CRITICAL) ** 2)
+    w1, w2, _ = (sp.sympify(v) for v in system.values(S.m))
+    roots = []
+    for eq in (w1 - g2, w2 - g2, w1 - g2 * (1 + eps2)):
+        roots.extend(sp.solve(sp.numer(sp.together(eq)), S.m))
+    return g2, tuple(roots)
+
+
+def _segments(
+    n: int, Q: Fraction, damping: str, digits: int, budget: int, system: System = PAPER
+):
     """The depth axis ``[0, 1 - 2^-K]`` cut into closed ranges, each with its sign
     (:func:`_decide`), adjacent ranges of one sign merged; ``K`` is such that ``2^-K`` is below
     the resolution of ``digits`` digits at ``m = 1``.  Undecided ranges are bisected down to
     that relative resolution, and left undecided past ``budget`` decisions."""
     bits = bits_for_digits(digits + 3)
     top = 1 - Fraction(1, 2 ** (bits + 2))
-    cuts = _breakpoints(n, Q, damping, top)
+    cuts = _breakpoints(n, Q, damping, top, system)
     pending = [(cuts[j], cuts[j + 1]) for j in range(len(cuts) - 1)]
     done: list[tuple] = []
     count = 0
@@ -744,7 +921,7 @@ def _segments(n: int, Q: Fraction, damping: str, digits: int, budget: int):
             break
         # a narrow range takes its parent's float stage (the maximiser is polished in arb)
         fresh = [j for j, b in enumerate(pending) if b not in inherited]
-        stages_f = _float_stages(n, [pending[j] for j in fresh], Q, damping)
+        stages_f = _float_stages(n, [pending[j] for j in fresh], Q, damping, system)
         stages = [inherited.get(b) for b in pending]
         for j, fl in zip(fresh, stages_f, strict=True):
             stages[j] = fl
@@ -757,7 +934,10 @@ def _segments(n: int, Q: Fraction, damping: str, digits: int, budget: int):
                 continue
             count += 1
             tail_count += tail
-            sign = _decide(n, lo, hi, Q, damping, bits, fl)
+            sign = _decide(n, lo, hi, Q, damping, bits, fl, system)
+            if sign is None:  # undecided for good
+                done.append((lo, hi, 0))
+                continue
             splittable = hi - lo > max(lo, Fraction(1, 2**1000)) / 2 ** (bits + 2)
             if sign == 0 and splittable:
                 mid = _round_fraction((lo + hi) / 2, lo, hi)
@@ -785,7 +965,9 @@ def _round_fraction(mid: Fraction, lo: Fraction, hi: Fraction) -> Fraction:
     return x if lo < x < hi else mid
 
 
-def existence(order, Q, *, damping="exact", digits=15, budget=None) -> Existence:
+def existence(
+    order, Q, *, system="pendulum", duty="1/2", damping="exact", digits=15, budget=None
+) -> Existence:
     """The depth ranges ``0 < a < m < b <= 1`` where the ``order``-th interval of instability
     exists with friction ``Q`` in the given damping model, proven on the whole depth axis.
 
@@ -799,11 +981,24 @@ def existence(order, Q, *, damping="exact", digits=15, budget=None) -> Existence
     ``budget`` range decisions (or at the resolution, e.g. next to critical damping, where the
     equations change) is reported in ``.undecided``, never guessed.
 
+    ``system`` and ``duty`` choose the member of the family (:mod:`analytic.system`; a
+    :class:`~analytic.system.System` passes through): the equations, the closings around which
+    the gaps open and the regime changes are derived from its description.  For another member
+    than the paper's pendulum the exact model's trace form (a phase critically or over-damped, or
+    phase 1 near it) is reported as undecided: its proofs over depth ranges are derived for the
+    paper's system only.  A custom system has no depth and is refused.
+
     Returns an :class:`Existence`: ``.intervals`` (pairs of mpmath numbers, ``b = 1`` when the
     range is open towards ``m -> 1``), ``.thresholds`` (with enclosures), ``.undecided``,
     ``.as_json()``.
     """
     n = as_order(order)
+    sysv = as_system(system, duty)
+    if not sysv.uses_depth:
+        raise InputError(
+            f"existence ranges are over the depth m, and {sysv.label} has none: decide its one "
+            "point with boundary(order, system=..., Q=...)"
+        )
     QQ = as_quality(Q)
     if QQ is None:
         raise InputError("existence needs friction: give a quality factor Q > 0")
@@ -811,11 +1006,11 @@ def existence(order, Q, *, damping="exact", digits=15, budget=None) -> Existence
     d = as_digits(digits)
     Qx = exact_fraction(QQ)
     cap = BUDGET_PER_BIT * bits_for_digits(d + 3) if budget is None else int(budget)
-    segs, _count = _segments(n, Qx, model, d, cap)
-    return _assemble(n, Qx, model, d, segs)
+    segs, _count = _segments(n, Qx, model, d, cap, sysv)
+    return _assemble(n, Qx, model, d, segs, sysv)
 
 
-def _assemble(n, Q, model, digits, segs) -> Existence:
+def _assemble(n, Q, model, digits, segs, system: System = PAPER) -> Existence:
     """Thresholds from the undecided ranges that separate the two signs within the resolution;
     every other undecided range is reported as such."""
     # undecided slivers within the resolution of m = 1 belong to the unproven tail towards 1
@@ -847,12 +1042,13 @@ def _assemble(n, Q, model, digits, segs) -> Existence:
         bool(segs and segs[-1][2] == 1),
         undecided=tuple(undecided),
         segments=tuple(pieces),
+        system=system,
     )
 
 
-def absence_reason(order, m, Q, *, damping="exact") -> str:
+def absence_reason(order, m, Q, *, damping="exact", system=PAPER) -> str:
     """Why the ``order``-th interval does not exist at depth ``m`` with friction ``Q``, from the
     proven existence ranges: below the threshold, in a gap around a closing, above the last
     range, or in a range that could not be decided (see :meth:`Existence.where`)."""
-    ex = existence(order, Q, damping=damping)
+    ex = existence(order, Q, damping=damping, system=system)
     return ex.where(exact_fraction(m))

@@ -25,7 +25,7 @@ from analytic.system import System
 
 from .derived import Backend, _printer
 
-__all__ = ["canonical", "normal_values", "trace_values"]
+__all__ = ["canonical", "normal_values", "normal_jets", "trace_values"]
 
 
 def canonical(system: System) -> System:
@@ -162,6 +162,48 @@ def normal_values(system: System, m, Q, damping: str, B: Backend, om=None) -> di
         "dinv": dinv if Q is not None and damping == "exact" else zero,
         "bm": bm,
     }
+
+
+def normal_jets(system: System, m, Q, damping: str) -> dict:
+    """:func:`normal_values` for jets (:class:`verify.certify.Jet`) or balls of ``m`` and ``Q`` in
+    ``arb`` whose signs may be undecided over the range (a depth ball reaching ``m = 0``): ``r``
+    is the signed ``(q - 1)/(q + 1)`` (``None`` in the exact model, which gives ``r^2``), ``beta``
+    is ``|beta|`` where its sign is decided and the signed ``beta`` otherwise (the normal form is
+    even in ``beta``), ``bm = 1 - |beta|`` (the branch of the middle's sign).  ``dinv`` is 0 (not
+    needed by the indicator)."""
+    from .derived import backend
+
+    B = backend("arb")
+    v = _evaluate(system, m, Q, damping, B)
+    r = v.get("r")
+    r2 = v["r2"] if "r2" in v else r * r
+    beta = v["beta"]
+    sign = _sign(beta)
+    bm = v["bm_neg"] if sign < 0 else v["bm_pos"]
+    if sign < 0:
+        beta = -beta
+    zero = r2 * 0
+    return {
+        "r": r,
+        "r2": r2,
+        "u": v["u"],
+        "beta": beta,
+        "w": v["w"],
+        "g": v.get("g", zero),
+        "w0": v["w0"],
+        "dinv": zero,
+        "bm": bm,
+    }
+
+
+def _sign(x) -> int:
+    """``+1``/``-1`` where the sign of a ball or jet value is decided, else 0."""
+    val = getattr(x, "v", x)
+    if val > 0:
+        return 1
+    if val < 0:
+        return -1
+    return 0
 
 
 def _select(beta, pos, neg, B: Backend):
