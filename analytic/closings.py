@@ -394,9 +394,10 @@ def _family_decimal(system: System, a: int, m, digits: int) -> str:
     D = system.duty
     for extra in (20, 60, 200):
         with ctx.workdps(digits + extra):
-            ball = arb(fmpq(a * D.denominator, 2 * D.numerator)) / arb(
-                fmpq(W1.numerator, W1.denominator)
-            ).sqrt()
+            ball = (
+                arb(fmpq(a * D.denominator, 2 * D.numerator))
+                / arb(fmpq(W1.numerator, W1.denominator)).sqrt()
+            )
             texts = {_round_exact(e, digits) for e in (ball.lower(), ball.upper())}
         if len(texts) == 1:
             return texts.pop()

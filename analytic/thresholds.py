@@ -426,9 +426,11 @@ def _family_model(n: int, damping: str, system) -> dict[str, sp.Expr]:
     beta = par["beta"].subs(sub)
     t = (beta - b0) * n * sp.pi / 2 + beta * th
     fb = sign * c * sp.cos(t) + s_ * sp.sin(t)
-    N = sp.sin(th) ** 2 - par["r2"].subs(sub) * fb**2 + par["u"].subs(sub) * sp.sinh(
-        par["g"].subs(sub) * x
-    ) ** 2
+    N = (
+        sp.sin(th) ** 2
+        - par["r2"].subs(sub) * fb**2
+        + par["u"].subs(sub) * sp.sinh(par["g"].subs(sub) * x) ** 2
+    )
     T0 = x / (sp.pi * par["w"].subs(sub))
     return {"N": N, "dN": sp.diff(N, th), "T0": T0, "w0": par["w0"]}
 

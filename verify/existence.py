@@ -178,9 +178,7 @@ class Existence:
             if not after:
                 return f"above the last range, which ends at m = {self._text(before[-1][1])}"
             a, b = self._text(before[-1][1]), self._text(after[0][0])
-            closing = _closing_in(
-                self.order, self.Q, self.damping, _mpf(lo), _mpf(hi), self.system
-            )
+            closing = _closing_in(self.order, self.Q, self.damping, _mpf(lo), _mpf(hi), self.system)
             around = ""
             if closing is not None:
                 mc = closing.m
@@ -262,9 +260,7 @@ def _closings_of(n: int, system: System) -> tuple:
 # the scan
 
 
-def closing_depths(
-    n: int, Q: Fraction | None, damping: str, system: System = PAPER
-) -> list[float]:
+def closing_depths(n: int, Q: Fraction | None, damping: str, system: System = PAPER) -> list[float]:
     """Depths where the friction-free form of order ``n`` closes (``f(x) = f(y) = 0``), in the
     order of :func:`_closings_of`: both phases turn through whole multiples of ``pi``, ``Omega1 D
     T = a pi``, ``Omega2 (1 - D) T = b pi`` with ``a + b = n`` (:mod:`analytic.closings`).
@@ -872,7 +868,7 @@ def _regime_changes(Q: Fraction, system: System) -> set[Fraction]:
     g2, roots = _regime_roots(system)
     out = set()
     for expr in roots:
-        root = sp.nsimplify(expr.subs(g2, g2v))
+        root = sp.radsimp(expr.subs(g2, g2v))
         if root.is_Rational and 0 < root < 1:
             out.add(Fraction(int(root.p), int(root.q)))
         elif root.is_real and 0 < root < 1:  # irrational: a nearby rational cut serves
@@ -900,9 +896,7 @@ def _regime_roots(system: System) -> tuple:
     return g2, tuple(roots)
 
 
-def _segments(
-    n: int, Q: Fraction, damping: str, digits: int, budget: int, system: System = PAPER
-):
+def _segments(n: int, Q: Fraction, damping: str, digits: int, budget: int, system: System = PAPER):
     """The depth axis ``[0, 1 - 2^-K]`` cut into closed ranges, each with its sign
     (:func:`_decide`), adjacent ranges of one sign merged; ``K`` is such that ``2^-K`` is below
     the resolution of ``digits`` digits at ``m = 1``.  Undecided ranges are bisected down to

@@ -1,6 +1,7 @@
 """``paramres existence``: the depths at which an interval of instability exists with friction.
 
     paramres existence --order N --Q Q [--damping exact|paper] [--digits D] [--json]
+                       [--system pendulum|torsion|meissner] [--duty D]
 
 Prints the ranges ``a < m < b`` (``b = 1``: open towards ``m -> 1``) with proven ends: the threshold
 and the gaps where friction swallows the interval near a closing.  The whole depth axis is proven
@@ -15,7 +16,7 @@ import argparse
 from reports.output import dump_json
 from verify.existence import existence
 
-from ._arguments import add_friction, add_json, add_order
+from ._arguments import add_friction, add_json, add_order, add_system, system_of
 
 __all__ = ["register", "run"]
 
@@ -38,16 +39,20 @@ def register(subparsers) -> None:
     p.add_argument(
         "--digits", default="15", metavar="D", help="digits of each end, 5 to 10000 (default 15)"
     )
+    add_system(p)
     add_json(p)
     p.set_defaults(func=run)
 
 
 def run(args) -> int:
-    result = existence(args.order, args.Q, damping=args.damping, digits=args.digits)
+    sysv = system_of(args)
+    result = existence(args.order, args.Q, system=sysv, damping=args.damping, digits=args.digits)
     if args.json:
         data = result.as_json()
         dump_json(
             {
+                "system": data["system"],
+                "duty": data["duty"],
                 "order": data["order"],
                 "Q": data["Q"],
                 "damping": data["damping"],

@@ -6,6 +6,8 @@ Without ``--Q``: both edges ``T-/T0`` and ``T+/T0`` (and in units of ``T_av``) t
 any order ``N`` (``odd``/``even`` give the closed forms in the symbol ``n``).  With ``--Q``: the
 threshold depth ``m_min(Q)`` (tangency of the normal form) and the edges above it in the
 distinguished scaling (``1/Q ~ m`` for odd orders, ``m**2`` for even), in the chosen damping model.
+``--system``/``--duty`` take another member of the family (integer orders): there the scaling is
+``1/Q ~ m^p`` with ``p = 2`` where ``n D`` is an integer and ``1`` otherwise.
 """
 
 from __future__ import annotations
@@ -78,7 +80,13 @@ def run(args) -> int:
     damping = as_damping(args.damping)
     Q = as_quality(args.Q)
     sysv = system_of(args)
-    es = edge_series(order, terms, Q=Q, damping=damping, system=sysv)
+    if Q is not None and not sysv.is_paper:
+        from analytic.thresholds import near_threshold_edges, threshold_series
+
+        threshold_series(order, terms, damping=damping, system=sysv)  # refuses what has no m
+        es = near_threshold_edges(order, terms, Q=Q, damping=damping, system=sysv)
+    else:
+        es = edge_series(order, terms, Q=Q, damping=damping, system=sysv)
     payload = es.as_json()
     payload["lower"] = _s(es.in_T0["lower"])
     payload["upper"] = _s(es.in_T0["upper"])
@@ -87,7 +95,7 @@ def run(args) -> int:
     if Q is not None:
         payload["threshold"] = {
             **payload.get("threshold", {}),
-            **_threshold_payload(order, terms, Q, damping),
+            **_threshold_payload(order, terms, Q, damping, sysv),
         }
     if args.json:
         dump_json(payload)
@@ -100,10 +108,12 @@ def _s(expr) -> str:
     return sp.sstr(expr, order="rev-lex")
 
 
-def _threshold_payload(order, terms: int, Q, damping: str) -> dict:
+def _threshold_payload(order, terms: int, Q, damping: str, sysv=None) -> dict:
     from analytic.thresholds import threshold_series
 
-    th = threshold_series(order, terms, damping=damping)
+    th = threshold_series(
+        order, terms, damping=damping, **({} if sysv is None else {"system": sysv})
+    )
     # the series in the symbol Q (parse with sympify(text, locals={"Q": Symbol("Q")}): sympy's own
     # name Q is its assumptions object)
     out = {
@@ -111,6 +121,7 @@ def _threshold_payload(order, terms: int, Q, damping: str) -> dict:
         "m_min_squared_series": _s(th.m_min2),
         "Q_min_series": _s(th.Q_min),
         "theta_at_threshold": _s(th.theta),
+        "scaling_power": th.p,
     }
     if isinstance(order, int):
         from analytic.model import S
@@ -136,8 +147,8 @@ def render_text(es, payload: dict) -> str:
         lines.append(f"Edges of the interval of {what}{where}, no friction, through m^{es.terms}:")
     else:
         lines.append(
-            f"Edges of the interval of {what} with friction Q = {es.Q} ({es.damping} model), "
-            f"through m^{es.terms} in the distinguished scaling:"
+            f"Edges of the interval of {what}{where} with friction Q = {es.Q} ({es.damping} "
+            f"model), through m^{es.terms} in the distinguished scaling:"
         )
     O = f" + O(m^{es.terms + 1})"
     src = payload
@@ -145,7 +156,9 @@ def render_text(es, payload: dict) -> str:
         src = {u: {k: _s(v) for k, v in es.scaled[u].items()} for u in ("T0", "Tav")}
         src = {"in_T0": src["T0"], "in_Tav": src["Tav"]}
         mm = es.scaled["m_min0"]
-        p = 1 if (es.order % 2 if isinstance(es.order, int) else es.order == "odd") else 2
+        p = (payload.get("threshold") or {}).get("scaling_power")
+        if p is None:
+            p = 1 if (es.order % 2 if isinstance(es.order, int) else es.order == "odd") else 2
         lines.append(
             f"  with s = sqrt(1 - (m_min0/m)^{2 * p}), m_min0 = {_s(mm)} = {sp.N(mm, 12)} "
             "(the leading threshold); the --json output has s written out"
