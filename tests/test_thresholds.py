@@ -312,3 +312,107 @@ def test_bad_input():
         threshold_series(1, damping="viscous")
     with pytest.raises(InputError):
         edge_series(1, 2, Q="-3")
+
+
+# ------------------------------------------------------------------ the other members of the family
+
+
+FAMILY_CASES = [
+    # (system, duty, order, model, Q): p = 1 unless n D is an integer
+    ("torsion", "1/2", 1, "exact", 200),
+    ("meissner", "1/3", 2, "paper", 200),
+    ("pendulum", "1/3", 3, "exact", 20000),  # n D = 1: p = 2, m_min a series in Q^(-1/2)
+    ("torsion", "1/50", 1, "paper", 5000),  # extreme duty: f(A) = cos(12 pi/25) is small
+]
+
+
+@pytest.mark.parametrize("name, duty, n, model, QQ", FAMILY_CASES)
+def test_family_threshold_series_against_the_floquet_tangency(name, duty, n, model, QQ):
+    """``m_min(Q)`` through ``K`` terms against the depth where the Floquet route's ``det(M - sigma
+    I)`` has a double root in ``T`` (``tests/floquet_tangency.py``, mpmath at 40 digits): the error
+    falls like ``m*^(K+1)`` (constant below 20 in every case; measured 0.003 to 8.6)."""
+    from fractions import Fraction
+
+    from floquet_tangency import tangency
+
+    from analytic.system import system
+    from verify.solve import boundary
+
+    sysv = system(name, duty=duty)
+    values = []
+    for K in (1, 2, 3):
+        th = threshold_series(n, K, damping=model, system=sysv)
+        assert th.system == sysv and th.as_json()["system"] == name
+        values.append(mpmath.mpf(str(sp.N(th.m_min.subs(Q, QQ), 30))))
+    # a start for the tangency: the centre of the interval just above the series' threshold
+    mm = Fraction(mpmath.nstr(values[-1] * (1 + mpmath.mpf(10) ** -3), 20))
+    b = boundary(n, mm, Q=QQ, damping=model, system=sysv, digits=15)
+    m_ref, _T = tangency(n, QQ, values[-1], (b.lower + b.upper) / 2, **_sys(name, duty, model))
+    for K, v in zip((1, 2, 3), values, strict=True):
+        assert abs(v - m_ref) < 20 * m_ref ** (K + 1), (K, v, m_ref)
+    assert abs(values[-1] - m_ref) < abs(values[0] - m_ref)
+
+
+def _sys(name, duty, model):
+    return {"system": name, "duty": duty, "damping": model}
+
+
+def test_family_scaling_power_follows_the_vanishing_harmonic():
+    """``p = 2`` exactly where the frictionless width is ``O(m^2)``, read off the family's edge
+    series (:mod:`analytic.family_series`, the per-edge factor): the m^1 coefficient of the width
+    vanishes iff ``n D`` is an integer."""
+    from analytic.family_series import family_edge_series
+    from analytic.system import system
+    from analytic.thresholds import family_scaling_power
+
+    for name, duty in (("pendulum", "1/3"), ("torsion", "1/2"), ("meissner", "1/4")):
+        sysv = system(name, duty=duty)
+        for n in (1, 2, 3, 4):
+            es = family_edge_series(n, 2, "T0", sysv)
+            width1 = sp.simplify(sp.expand(es.in_T0["upper"] - es.in_T0["lower"]).coeff(m, 1))
+            p = family_scaling_power(n, sysv)
+            assert p == (2 if width1 == 0 else 1), (name, duty, n)
+            assert (p == 2) == ((n * sysv.duty).denominator == 1)
+
+
+def test_family_leading_threshold_duty_one_third():
+    """Pendulum at D = 1/3, order 1: ``r ~ 3m/2`` and ``f(A) = cos(pi/6)``, so the leading balance
+    gives ``m_min0 = pi/(4 (3/2) cos(pi/6) Q) = sqrt(3) pi/(9 Q)``; at D = 1/2 the paper's
+    ``pi/(6Q)`` (eq. 38) is kept."""
+    th = threshold_series(1, 2, damping="paper", system="pendulum", duty="1/3")
+    assert sp.simplify(th.m_min_leading - sp.sqrt(3) * pi / (9 * Q)) == 0
+    assert sp.simplify(threshold_series(1, 2, damping="paper").m_min_leading - pi / (6 * Q)) == 0
+
+
+def test_family_threshold_refusals():
+    from analytic.system import custom
+
+    with pytest.raises(InputError, match="no depth"):
+        threshold_series(1, 2, system=custom(("4/5", "6/5")))
+    with pytest.raises(InputError, match="integer order"):
+        threshold_series("odd", 2, system="torsion")
+    with pytest.raises(InputError, match="duty"):
+        threshold_series(1, 2, system="torsion", duty="3/2")
+
+
+def test_cli_series_threshold_for_the_family(capsys):
+    import json
+
+    from reports.cli import main
+
+    code = main(
+        ["series", "--order", "1", "--terms", "2", "--Q", "50", "--system", "torsion",
+         "--duty", "1/3", "--damping", "paper", "--json"]
+    )  # fmt: skip
+    out, err = capsys.readouterr()
+    assert code == 0 and err == ""
+    data = json.loads(out)
+    assert data["system"] == "torsion" and data["duty"] == "1/3"
+    ref = threshold_series(1, 2, damping="paper", system="torsion", duty="1/3")
+    assert (
+        sp.simplify(sp.sympify(data["threshold"]["m_min_series"], locals={"Q": Q}) - ref.m_min) == 0
+    )
+    assert data["threshold"]["scaling_power"] == 1
+    code = main(["series", "--order", "1", "--Q", "5", "--system", "custom", "--omega-sq", "1,2"])
+    out, err = capsys.readouterr()
+    assert code == 2 and out == "" and err.startswith("paramres: error:")
