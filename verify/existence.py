@@ -525,10 +525,13 @@ def _form_of(m: Fraction, Q: Fraction, damping: str, system: System = PAPER):
     return form_for(m, Q, damping, system)
 
 
-def _float_stages(n: int, boxes, Q: Fraction, damping: str, system: System = PAPER) -> list:
+def _float_stages(
+    n: int, boxes, Q: Fraction, damping: str, system: System = PAPER, kinds=None
+) -> list:
     """The float stage (maximiser, edges, bracket) at the middle of each range whose equations
     are the normal form, in one vectorised call (``None`` for the others).  The float parameters
-    come from the exact middle (right also next to ``m = 1`` and to critical damping)."""
+    come from the exact middle (right also next to ``m = 1`` and to critical damping).  ``kinds``:
+    the equations of each range where known already (:func:`_uniform_form`), else ``None``."""
     from .grid import damped_normal
     from .params import NormalParams
 
@@ -536,7 +539,8 @@ def _float_stages(n: int, boxes, Q: Fraction, damping: str, system: System = PAP
     out: list = [None] * len(boxes)
     idx, rows = [], []
     for j, x in enumerate(mids):
-        if _form_of(x, Q, damping, system)[0] != "normal":
+        kind = kinds[j] if kinds is not None and kinds[j] is not None else None
+        if (kind or _form_of(x, Q, damping, system))[0] != "normal":
             continue
         idx.append(j)
         rows.append(normal_params(x, Q, damping, backend("math"), system))
@@ -563,6 +567,7 @@ def _decide(
     bits: int,
     fl=None,
     system: System = PAPER,
+    form=None,
 ) -> int | None:
     """``+1``: the interval exists at every depth of ``[lo, hi]`` (a point ``T`` with ``D > 0`` in
     the order's window, the same for all of them); ``-1``: at none (``D < 0`` on the whole window
@@ -570,14 +575,17 @@ def _decide(
     balls that hold every depth of the range (:func:`verify.solve.depth_ball`); ``fl`` is the
     float stage at the middle (:func:`_float_stages`), only a starting point.  ``None``: not
     decided and not to be split (another member of the family in the trace form, whose proofs over
-    depth ranges are not implemented)."""
+    depth ranges are not implemented).  ``form``: the equations of the whole range, where known
+    already (:func:`_uniform_form` of a range holding it)."""
     from .solve import hump_box, hump_trace
 
     mid = (lo + hi) / 2
-    kinds = {_form_of(x, Q, damping, system) for x in (lo, mid, hi)}
-    if len(kinds) != 1:
-        return 0  # a change of equations inside: split there
-    kind, regimes = kinds.pop()
+    if form is None:
+        kinds = {_form_of(x, Q, damping, system) for x in (lo, mid, hi)}
+        if len(kinds) != 1:
+            return 0  # a change of equations inside: split there
+        form = kinds.pop()
+    kind, regimes = form
     if kind != "normal" and not system.is_paper:
         return None
     try:
@@ -905,6 +913,9 @@ def _segments(n: int, Q: Fraction, damping: str, digits: int, budget: int, syste
     top = 1 - Fraction(1, 2 ** (bits + 2))
     cuts = _breakpoints(n, Q, damping, top, system)
     pending = [(cuts[j], cuts[j + 1]) for j in range(len(cuts) - 1)]
+    # every depth where the equations change is a cut, so a first range whose ends and middle
+    # share the equations has them throughout; its sub-ranges inherit them
+    forms = {b: _uniform_form(b, Q, damping, system) for b in pending}
     done: list[tuple] = []
     count = 0
     inherited: dict = {}
@@ -915,7 +926,9 @@ def _segments(n: int, Q: Fraction, damping: str, digits: int, budget: int, syste
             break
         # a narrow range takes its parent's float stage (the maximiser is polished in arb)
         fresh = [j for j, b in enumerate(pending) if b not in inherited]
-        stages_f = _float_stages(n, [pending[j] for j in fresh], Q, damping, system)
+        stages_f = _float_stages(
+            n, [pending[j] for j in fresh], Q, damping, system, [forms[pending[j]] for j in fresh]
+        )
         stages = [inherited.get(b) for b in pending]
         for j, fl in zip(fresh, stages_f, strict=True):
             stages[j] = fl
@@ -928,7 +941,8 @@ def _segments(n: int, Q: Fraction, damping: str, digits: int, budget: int, syste
                 continue
             count += 1
             tail_count += tail
-            sign = _decide(n, lo, hi, Q, damping, bits, fl, system)
+            form = forms.pop((lo, hi))
+            sign = _decide(n, lo, hi, Q, damping, bits, fl, system, form)
             if sign is None:  # undecided for good
                 done.append((lo, hi, 0))
                 continue
@@ -936,6 +950,7 @@ def _segments(n: int, Q: Fraction, damping: str, digits: int, budget: int, syste
             if sign == 0 and splittable:
                 mid = _round_fraction((lo + hi) / 2, lo, hi)
                 nxt.extend([(lo, mid), (mid, hi)])
+                forms[(lo, mid)] = forms[(mid, hi)] = form
                 if fl is not None and hi - lo < max(lo, Fraction(1, 2**1000)) / 2**24:
                     inherited[(lo, mid)] = inherited[(mid, hi)] = fl
             else:
@@ -949,6 +964,14 @@ def _segments(n: int, Q: Fraction, damping: str, digits: int, budget: int, syste
         else:
             out.append([lo, hi, sign])
     return [tuple(x) for x in out], count
+
+
+def _uniform_form(box, Q: Fraction, damping: str, system: System):
+    """The equations (:func:`verify.params.form_for`) of a first range if its ends and middle
+    share them, else ``None`` (decided per sub-range)."""
+    lo, hi = box
+    kinds = {_form_of(x, Q, damping, system) for x in (lo, (lo + hi) / 2, hi)}
+    return kinds.pop() if len(kinds) == 1 else None
 
 
 def _round_fraction(mid: Fraction, lo: Fraction, hi: Fraction) -> Fraction:
