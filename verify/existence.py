@@ -239,11 +239,13 @@ def _closing_in(n: int, Q, damping: str, lo, hi, system: System = PAPER):
     """The frictionless closing (:class:`analytic.closings.Closing`) of order ``n`` whose gap with
     friction lies in ``[lo, hi]`` (``None``: none): without friction and in the paper model at
     its depth, in the exact model at the depth where the damped phases close
-    (:func:`closing_depths`, matched in order)."""
-    found = _closings_of(n, system)
-    depths = closing_depths(n, Q, damping, system)
-    for c, mc in zip(found, depths, strict=False):
-        if lo <= mc <= hi:
+    (:func:`_damped_closing`)."""
+    for c in _closings_of(n, system):
+        if Q is None or damping == "paper":
+            mc = float(c.m)
+        else:
+            mc = _damped_closing(c.a, c.b, Fraction(Q), system)
+        if mc is not None and lo <= mc <= hi:
             return c
     return None
 
