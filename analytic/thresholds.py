@@ -398,12 +398,12 @@ def _family_power(n: int, system) -> int:
     par = _family_parameters(system, Damping.NONE)
     K = 8
     env = {}
-    r = evaluate(par["r2"], env, ring, 2 * K, var=S.m)
+    r2 = evaluate(par["r2"], env, ring, 2 * K, var=S.m)
     t = evaluate((par["beta"] - b0) * n * sp.pi / 2, env, ring, K, var=S.m)
     fA = ring.gen(f_part) if isinstance(f_part, str) else ring.const(f_part)
     gA = ring.gen(g_part) if isinstance(g_part, str) else ring.const(g_part)
     f = t.cos().scale_coeff(ring.scale(fA, sign)) + t.sin().scale_coeff(gA)
-    prod = r.truncate(K) * (f * f)
+    prod = r2.truncate(K) * (f * f)  # r^2 f^2: of order m^(2p)
     v = prod.valuation()
     if v is None or v % 2:  # pragma: no cover - r^2 f^2 is a square: even order
         raise ArithmeticError(f"no leading half-width of order {n} within m^{K // 2}")
