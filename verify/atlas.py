@@ -56,6 +56,7 @@ __all__ = [
     "Estimate",
     "request",
     "estimate",
+    "edge_seconds",
     "atlas",
     "EDGE_CHUNK",
     "GROWTH_CHUNK_POINTS",
@@ -74,9 +75,9 @@ ZARR_FORMAT = 2
 LIMITS = {"cpu_seconds": 1e7, "memory_bytes": 2 << 30, "store_bytes": 1 << 40}
 
 #: CPU seconds per certified edge at ``d`` digits (measured by benchmarks/bench_atlas.py; friction
-#: roughly triples it), per growth point, per threshold proof
-_EDGE_SECONDS = (2e-4, 1.5e-6)
-_FRICTION_FACTOR = 3.0
+#: costs about 8 times as much), per growth point, per threshold proof
+_EDGE_SECONDS = (5e-4, 4e-6)
+_FRICTION_FACTOR = 8.0
 _GROWTH_SECONDS = 1e-7
 _THRESHOLD_SECONDS = 5.0
 
@@ -293,6 +294,12 @@ def _size(b: float) -> str:
     return f"{int(b)} bytes"
 
 
+def edge_seconds(digits: int, friction: bool) -> float:
+    """Estimated CPU seconds of one certified edge pair at ``digits`` digits."""
+    base = _EDGE_SECONDS[0] + _EDGE_SECONDS[1] * digits
+    return base * (_FRICTION_FACTOR if friction else 1.0)
+
+
 def estimate(req: Request) -> Estimate:
     """The cost of ``req`` from the measured cost per edge, per growth point and per threshold
     (``benchmarks/bench_atlas.py``), and the size of its result."""
@@ -300,9 +307,10 @@ def estimate(req: Request) -> Estimate:
     edges = cells * len(req.orders) * len(req.m)
     growth = cells * len(req.m) * len(req.T)
     nthr = len(req.threshold_tasks())
-    per_edge = _EDGE_SECONDS[0] + _EDGE_SECONDS[1] * req.digits
-    friction = len(req.friction) / len(req.Q)
-    cpu = edges * per_edge * (1 + (_FRICTION_FACTOR - 1) * friction)
+    frac = len(req.friction) / len(req.Q)
+    cpu = edges * (
+        (1 - frac) * edge_seconds(req.digits, False) + frac * edge_seconds(req.digits, True)
+    )
     cpu += growth * _GROWTH_SECONDS + nthr * _THRESHOLD_SECONDS * (1 + req.digits / 30)
     edge_bytes = 8 * (len(_EDGE_VARS) + 1) + 2 * (req.digits + 60)
     size = edges * edge_bytes + growth * 8 + nthr * 2000
@@ -332,16 +340,24 @@ def check_size(req: Request, store: str | None) -> Estimate:
 # the tasks (run on the workers)
 
 
-def _down(x: mpmath.mpf) -> float:
-    """The largest double ``<= x``."""
+def _down(x) -> float:
+    """The largest double ``<= x`` (an exact mpf or a Fraction; the comparison is exact)."""
     f = float(x)
-    return float(np.nextafter(f, -np.inf)) if mpmath.mpf(f) > x else f
+    return (
+        float(np.nextafter(f, -np.inf))
+        if (Fraction(f) if isinstance(x, Fraction) else mpmath.mpf(f)) > x
+        else f
+    )
 
 
-def _up(x: mpmath.mpf) -> float:
-    """The smallest double ``>= x``."""
+def _up(x) -> float:
+    """The smallest double ``>= x`` (an exact mpf or a Fraction; the comparison is exact)."""
     f = float(x)
-    return float(np.nextafter(f, np.inf)) if mpmath.mpf(f) < x else f
+    return (
+        float(np.nextafter(f, np.inf))
+        if (Fraction(f) if isinstance(x, Fraction) else mpmath.mpf(f)) < x
+        else f
+    )
 
 
 def edge_task(args) -> dict:
@@ -395,8 +411,7 @@ def threshold_task(args) -> dict:
     if first is not None:
         lo, hi = first.enclosure
         out["threshold"] = float(first.value)
-        out["threshold_min"] = _down(mpmath.mpf(lo.numerator) / lo.denominator)
-        out["threshold_max"] = _up(mpmath.mpf(hi.numerator) / hi.denominator)
+        out["threshold_min"], out["threshold_max"] = _down(Fraction(lo)), _up(Fraction(hi))
         out["threshold_text"] = first.text()
     return out
 
@@ -567,6 +582,8 @@ def _template(req: Request, command: str | None, lazy: bool):
 
     data = {}
     for name, (dims, shape, dtype, chunks) in _shapes(req).items():
+        if name.endswith("_done") and not lazy:
+            continue  # the completion marks belong to a Zarr store being filled
         if lazy:
             import dask.array as da
 

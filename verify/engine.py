@@ -48,19 +48,22 @@ def default_workers() -> int:
 
 @contextmanager
 def cluster(
-    scheduler=None, workers: int | None = None, *, processes: bool = True, work_seconds=None
+    scheduler=None,
+    workers: int | None = None,
+    *,
+    processes: bool = True,
+    work_seconds=None,
+    small_here: bool = False,
 ):
     """A :class:`distributed.Client`: to ``scheduler`` (an address or a ``Client``, used as is and
     left open), or to a new local cluster of ``workers`` processes (default: one per core), closed
     on exit.  ``None`` (run in this process) when no scheduler is given and either ``workers`` is
-    1 or, with ``workers`` left to the default, the work is estimated (``work_seconds``) below
-    :data:`STARTUP_SECONDS`."""
+    1 or the work is estimated (``work_seconds``) below :data:`STARTUP_SECONDS` -- with
+    ``workers`` left to the default, or with any ``workers`` if ``small_here``."""
     import logging
 
-    if scheduler is None and (
-        workers == 1
-        or (workers is None and work_seconds is not None and work_seconds < STARTUP_SECONDS)
-    ):
+    small = work_seconds is not None and work_seconds < STARTUP_SECONDS
+    if scheduler is None and (workers == 1 or (small and (workers is None or small_here))):
         yield None
         return
     from distributed import Client, LocalCluster
