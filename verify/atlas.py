@@ -43,8 +43,10 @@ import numpy as np
 from .inputs import (
     InputError,
     as_damping,
+    as_depth,
     as_digits,
     as_orders,
+    as_period,
     as_quality,
     as_range,
     as_system,
@@ -212,18 +214,14 @@ def _duty(d):
 
 
 def _range(spec, name, **kw):
+    """``START:STOP:STEP`` (exact decimals, as for ``table``) or a sequence of values."""
     if isinstance(spec, str):
         return tuple(as_range(spec, name=name, **kw))
-    return _list(spec, name, lambda v: exact_fraction(_one(v, name, **kw)))
-
-
-def _one(v, name, low=Fraction(0), high=Fraction(1), **_):
-    from paramres.inputs import as_number
-
-    val = as_number(v, name=name, allowed=f"{low} < {name} < {high}")
-    if not low < val < high:
-        raise InputError(f"{name} = {v} is outside the allowed range {low} < {name} < {high}")
-    return val
+    items = list(spec) if np.iterable(spec) else [spec]
+    if len(items) > kw.get("max_points", 1_000_000):
+        raise InputError(f"{name}: {len(items)} values; at most {kw['max_points']} allowed")
+    one = as_depth if name == "m" else as_period
+    return _list(items, name, lambda v: exact_fraction(one(v)))
 
 
 def request(
