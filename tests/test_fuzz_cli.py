@@ -6,8 +6,8 @@ traceback, never a hang: each call runs in-process under a time limit (SIGALRM).
 
 The options that set how much work a valid call does (digits, periods, orders, terms, table
 size) get their cheap valid values and every kind of invalid one, so that the examples stay
-fast; ``bench`` and ``report`` (tens of seconds per valid run, tested elsewhere) always get an
-output path that must be refused before any work.
+fast; ``bench``, ``report`` and ``atlas`` (seconds to minutes per valid run: a cluster starts,
+tested elsewhere) always get an output path that must be refused before any work.
 """
 
 from __future__ import annotations
@@ -152,6 +152,8 @@ def _bad_path(tmp: Path, suffix: str):
 
 
 _SUBCOMMANDS = None
+#: commands whose valid runs are long: their output is always one that must be refused
+_SLOW = ("bench", "report", "atlas")
 
 
 def _subcommands():
@@ -184,12 +186,19 @@ def argv_for(draw, tmp: Path):
         dest = action.dest
         if dest in ("output", "plot", "out", "cache"):
             suffixes = [".csv", ".json", ".png", ".pdf", ".svg", ".txt", ""]
-            if name in ("bench", "report") and dest in ("output", "plot", "out"):
-                value = draw(_bad_path(tmp, ".png" if dest == "plot" else ".json"))
+            if name in _SLOW and dest in ("output", "plot", "out"):
+                suffix = {"plot": ".png"}.get(dest, ".json")
+                if name == "atlas":
+                    suffix = draw(st.sampled_from([".nc", ".zarr", ".json"]))
+                value = draw(_bad_path(tmp, suffix))
             else:
                 value = draw(_path(tmp, suffixes))
         else:
-            key = {("table", "m"): "table_m", ("existence", "Q"): "existence_Q"}.get((name, dest))
+            key = {
+                ("table", "m"): "table_m",
+                ("atlas", "m"): "table_m",
+                ("existence", "Q"): "existence_Q",
+            }.get((name, dest))
             key = key or {("existence", "order"): "small_order"}.get((name, dest), dest)
             valid = _cheap_valid(key)
             if action.choices:
@@ -200,8 +209,9 @@ def argv_for(draw, tmp: Path):
             argv.append(f"{flag}={value}")
         else:
             argv += [flag, value]
-    if name in ("bench", "report") and not any(a.startswith(("--out", "--plot")) for a in argv):
-        argv += ["--out" if name == "report" else "--plot", "/proc/x.png"]
+    if name in _SLOW and not any(a.startswith(("--out", "--plot")) for a in argv):
+        flag = {"report": "--out", "atlas": "--output"}.get(name, "--plot")
+        argv += [flag, "/proc/x.png" if name != "atlas" else "/proc/x.nc"]
     if draw(st.integers(0, 15)) == 0:
         argv.insert(draw(st.integers(1, len(argv))), draw(any_value))  # a stray token
     return argv

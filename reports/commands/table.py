@@ -5,8 +5,10 @@
 
 Without ``--digits`` the vectorised double-precision grid is used (:func:`verify.boundary_grid`
 at the exact depths of the rows, relative error below 1e-14; 13 significant digits are printed).
-With ``--digits D`` every entry is certified to ``D`` digits (:func:`verify.boundary`), in
-``--jobs`` processes, with a progress bar.
+With ``--digits D`` every entry is certified to ``D`` digits (:func:`verify.boundary`), on
+``--jobs`` worker processes of a local dask cluster (:mod:`verify.engine`, the engine of
+``paramres atlas``; a table too small to pay for starting one runs in this process), with a
+progress bar.
 With ``--tol TOL`` every entry is proven within the relative tolerance by the cheapest method that
 meets it at that order and depth (:func:`verify.auto.boundaries_tol`), named in a ``method`` column.
 ``--output`` is written atomically (nothing is written if anything fails).
@@ -18,7 +20,6 @@ import argparse
 import csv
 import io
 import json
-import multiprocessing
 import os
 from fractions import Fraction
 
@@ -136,10 +137,13 @@ def _tol_rows(orders, ms, Q, damping, tol, label):
     return out
 
 
-def rows(orders, ms, Q, damping, digits, jobs=1, label="table", tol=None, system=None):
+def rows(
+    orders, ms, Q, damping, digits, jobs=1, label="table", tol=None, system=None, scheduler=None
+):
     """Table rows ``(order, m, lower, upper[, delta_lower, delta_upper, error_bound[, method]])``
     as text (``method`` with a tolerance ``tol``), for ``system`` (default: the paper's
-    pendulum)."""
+    pendulum).  Certified rows run on :mod:`verify.engine`: ``jobs`` local worker processes, or
+    the dask cluster ``scheduler`` (an address or a ``distributed.Client``)."""
     from analytic.system import PAPER
 
     system = PAPER if system is None else system
@@ -166,13 +170,20 @@ def rows(orders, ms, Q, damping, digits, jobs=1, label="table", tol=None, system
             for j, m in enumerate(ms):
                 out.append((n, m, fmt(grid[i, 0, j]), fmt(grid[i, 1, j])))
         return out
+    from verify.atlas import edge_seconds
+    from verify.engine import cluster, ordered
+
     tasks = [(n, m, Q, damping, digits, system) for n in orders for m in ms]
-    if jobs > 1 and len(tasks) > 1:
-        ctx = multiprocessing.get_context("spawn" if os.name == "nt" else "fork")
-        with ctx.Pool(jobs) as pool:
-            it = pool.imap(_certified, tasks, chunksize=max(1, len(tasks) // (8 * jobs)))
-            return list(progress(it, total=len(tasks), label=label))
-    return [_certified(t) for t in progress(tasks, total=len(tasks), label=label)]
+    # the engine of the atlas: a local dask cluster of ``jobs`` processes (or ``scheduler``);
+    # work too small to pay for starting one runs here
+    work = len(tasks) * edge_seconds(digits, Q is not None)
+    with cluster(scheduler, jobs if jobs > 1 else 1, work_seconds=work, small_here=True) as client:
+        return ordered(
+            client,
+            _certified,
+            tasks,
+            progress=lambda it: progress(it, total=len(tasks), label=label),
+        )
 
 
 def run(args) -> int:
