@@ -64,7 +64,7 @@ class Threshold:
     digits: int
 
     def text(self) -> str:
-        from .solve import proven_text
+        from .result import proven_text
 
         lo, hi = self.enclosure
         return proven_text(self.value, _mpf(hi - lo), self.digits)
@@ -341,7 +341,7 @@ def max_indicator(n: int, ms, Q: Fraction, damping: str) -> np.ndarray:
 
 
 def _hump(n: int, m: Fraction, Q: Fraction, damping: str, bits: int):
-    from .solve import hump_normal, hump_trace
+    from .hump import hump_normal, hump_trace
 
     kind, regimes = form_for(m, Q, damping)
     if kind == "normal":
@@ -370,7 +370,7 @@ def _g_ball(n: int, m: Fraction, Q: Fraction, damping: str, bits: int) -> arb | 
 
 def _prove_side(n, m: Fraction, Q, damping, bits, positive: bool) -> bool:
     """Prove ``max D > 0`` (``positive``) or ``max D < 0`` on the window at depth ``m``."""
-    from .solve import _prove_negative
+    from .hump import prove_negative
 
     h = _hump(n, m, Q, damping, bits)
     if h is None:
@@ -378,7 +378,7 @@ def _prove_side(n, m: Fraction, Q, damping, bits, positive: bool) -> bool:
     if positive:
         g = _g_ball(n, m, Q, damping, bits)
         return bool(g is not None and g > 0)
-    return _prove_negative(h, bits)
+    return prove_negative(h, bits)
 
 
 def _refine(n, Q, damping, m_neg: float, m_pos: float, digits: int) -> Threshold:
@@ -532,7 +532,7 @@ def _decide(
     for all of them); ``0``: not decided on this range.  ``D`` is evaluated with the parameters as
     balls that hold every depth of the range (:func:`verify.solve.depth_ball`); ``fl`` is the
     float stage at the middle (:func:`_float_stages`), only a starting point."""
-    from .solve import hump_box, hump_trace
+    from .hump import hump_box, hump_trace
 
     mid = (lo + hi) / 2
     kinds = {_form_of(x, Q, damping) for x in (lo, mid, hi)}
@@ -587,20 +587,21 @@ def _decide(
 
 
 def _box_trace_params(lo, hi, Q):
-    from .solve import _AtPrecision, box_prec, depth_ball
+    from .enclosure import AtPrecision
+    from .hump import box_prec, depth_ball
 
     def make():
         Qb = arb(Q.numerator) / Q.denominator
         return trace_params(depth_ball((lo, hi)), Qb, backend("arb"))
 
-    return _AtPrecision(make, box_prec((lo, hi)))
+    return AtPrecision(make, box_prec((lo, hi)))
 
 
 def _in_trace_window(n, lo, hi, Q, regimes, z) -> bool:
     """``|Phi(z) - n pi| < pi/2`` for every depth of the range (half 2 under-damped), so that a
     point with ``D > 0`` there belongs to order ``n``; with both halves over-damped only order 1
     has a window."""
-    from .solve import trace_phase
+    from .hump import trace_phase
 
     if regimes[1] != "under":
         return n == 1
@@ -618,7 +619,7 @@ def _in_trace_window(n, lo, hi, Q, regimes, z) -> bool:
 
 def _no_window_on_box(n, lo, hi, Q, regimes) -> bool:
     from .grid import trace_window_ends  # noqa: F401  (the float tail bound below is its rule)
-    from .solve import prove_no_window
+    from .hump import prove_no_window
 
     if regimes[1] != "under":
         return n > 1

@@ -59,6 +59,7 @@ __all__ = [
     "halves",
     "form_for",
     "NEAR_CRITICAL",
+    "NEAR_ONE",
     "normal_params",
     "trace_params",
     "omega_av",
@@ -111,6 +112,11 @@ class Halves:
         """Whether the normal form applies (no half critically or over-damped)."""
         return self.half1 in ("undamped", "under") and self.half2 in ("undamped", "under")
 
+
+#: below this ``1 - beta`` (``m > 0.995``) the certified solvers use the forms for ``m -> 1``
+#: (:func:`verify.derived.near_one_forms`, :func:`verify.derived.order1_forms`), whose terms are
+#: of the size of the result; the standard forms cancel to ``1 - beta`` there
+NEAR_ONE = 0.05
 
 #: below this ``nu1 = Omega1/gamma`` (half 1 close to critical damping) the normal form
 #: degenerates (``r, beta -> 1``: every term of ``D`` is O(1) while ``D`` is O(nu1)); the trace form

@@ -6,7 +6,8 @@ What a user reads is a *rounded* decimal ``p`` of ``x``, so the honest bound of 
 computes that bound exactly (rational arithmetic) and :func:`bound_text` writes a bound rounded
 *up* to two significant digits, so the printed bound is never smaller than the true one.
 
->>> from fractions import Fraction
+>>> from decimal import Decimal
+from fractions import Fraction
 >>> import mpmath
 >>> x = mpmath.mpf(1) / 3
 >>> bound_text(printed_error("0.3333", x, mpmath.mpf(2) ** -60))
@@ -15,6 +16,7 @@ computes that bound exactly (rational arithmetic) and :func:`bound_text` writes 
 
 from __future__ import annotations
 
+from decimal import Decimal
 from fractions import Fraction
 
 import mpmath
@@ -35,7 +37,21 @@ def printed_error(text: str | None, x, radius) -> Fraction | None:
     nothing printed or no radius (an uncertified value)."""
     if text is None or radius is None or x is None:
         return None
-    return abs(Fraction(text) - exact(x)) + exact(radius)
+    if not (isinstance(x, mpmath.mpf) and isinstance(radius, mpmath.mpf)):
+        return abs(Fraction(text) - exact(x)) + exact(radius)
+    # the same in integers on one common scale 2^-a 10^-b (one reduction at the end)
+    sign, digits, k = Decimal(text).as_tuple()
+    D = int("".join(map(str, digits))) * (-1 if sign else 1)
+    xs, xm, xe, _ = x._mpf_
+    _, rm, re, _ = radius._mpf_
+    X = -xm if xs else xm
+    e2 = min(xe, re, 0)
+    k10 = min(k, 0)
+    scale10 = 10 ** (-k10)
+    A = D * 10 ** (k - k10) << (-e2)
+    B = (X << (xe - e2)) * scale10
+    C = (rm << (re - e2)) * scale10
+    return Fraction(abs(A - B) + C, scale10 << (-e2))
 
 
 def bound_text(bound: Fraction | None, digits: int = 2) -> str | None:
