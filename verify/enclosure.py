@@ -5,6 +5,7 @@ accuracy each unknown needs, and :func:`edges_result`, which turns the two enclo
 from __future__ import annotations
 
 import math
+from functools import lru_cache
 
 from flint import arb, ctx
 
@@ -50,6 +51,7 @@ def theta_scale(theta: float, n: int, bits: int):
     return max(min(abs(theta), abs(n * math.pi / 2 + theta)), theta_floor(bits, n))
 
 
+@lru_cache(maxsize=256)
 def theta_floor(bits: int, n: int):
     """Absolute scale for a ``theta`` that may be exactly zero (closings): ``2**-max(2 bits,
     200)`` of about ``n pi/2`` (``3n/2``, exactly), an exact ``arb`` (a float would underflow to

@@ -65,7 +65,7 @@ def make_request(order, m, Q, damping, digits, method, tol, system, duty) -> tup
             raise InputError("method 'auto' needs a tolerance tol")
         tt, method = as_tolerance(tol), "auto"
     QF = None if QQ is None else exact_fraction(QQ)
-    if sysv.is_paper:
+    if sysv is PAPER or sysv.is_paper:
         return Request(n, exact_fraction(mm), QF, model, d, mm, tt), method
     if method != "certified":
         raise InputError(
