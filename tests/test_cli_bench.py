@@ -13,8 +13,8 @@ from fractions import Fraction
 
 import pytest
 
-from reports.cli import main
 from reports import benchmark as bench
+from reports.cli import main
 
 TINY = [bench.Scene(2, Fraction(1, 10))]
 

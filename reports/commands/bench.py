@@ -2,7 +2,8 @@
 
     paramres bench [--quick] [--json] [--plot FILE] [--output FILE]
 
-Runs :func:`reports.benchmark.run`: the series of each order ``K``, the paper's fixed-point iteration,
+Runs :func:`reports.benchmark.run`: the series of each order ``K``, the paper's fixed-point
+iteration,
 the double-precision paths, mpmath and the certified solver at 15 to 1000 digits, plain
 ``mpmath.findroot`` on the printed equation, and the automatic choice with a tolerance, on orders
 1-6 over a grid of depths and the hard cases; each timed (median of warm runs, per edge) and
