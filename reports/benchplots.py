@@ -4,9 +4,10 @@
 median CPU time per edge, largest relative error) for one or more panels -- typically all
 scenes, and the small depths where the series shine -- and draws them on log-log axes, one
 marker per family of methods, the Pareto front (the methods no other one beats in both speed
-and error) joined by a step line and labelled.  Errors below the reference's resolution are drawn at that floor (a dashed
-line).  :func:`save_figure` writes it as vector PDF, PNG or SVG (by the file name's
-ending), atomically; :func:`reports.figures.pdf_bytes` gives the bytes the report embeds.
+and error) joined by a step line and labelled.  Errors below the reference's resolution are
+drawn at that floor (a dashed line).  :func:`save_figure` writes it as vector PDF, PNG or SVG
+(by the file name's ending), atomically; :func:`reports.figures.pdf_bytes` gives the bytes the
+report embeds.
 """
 
 from __future__ import annotations
