@@ -394,9 +394,7 @@ def _prove(order: int, m: Fraction, values, tol, max_bits=None):
 def _prove_at(n: int, m: Fraction, values, tol, bits: int) -> tuple[int, tuple]:
     """One attempt of :func:`prove_within` at ``bits``: 1 proven, -1 disproven, 0 undecided;
     and ``(w, t, balls)``."""
-    from analytic.stitching import Parity
-
-    F = edge_equation(Parity.of(n)).compiled("arb", 0)
+    F = edge_equation(-1 if n % 2 else 1).compiled("arb", 0)
     sgn = _sgn(n)
     with ctx.workprec(bits):
         p = normal_params(m, None, "exact", _ARB)

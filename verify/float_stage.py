@@ -24,9 +24,7 @@ __all__ = ["float_edge", "normal_float_stage", "bisect_newton"]
 
 @cache
 def _forms(odd: bool):
-    from analytic.stitching import Parity
-
-    parity = Parity.of(1 if odd else 2)
+    parity = -1 if odd else 1  # the multiplier (analytic.stitching.Parity)
     form = indicator(parity)
     return (
         edge_equation(parity).compiled("math", (0, 1, 2)),

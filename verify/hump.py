@@ -296,9 +296,7 @@ def hump_normal(
     for every depth of that range at once (the parameters are balls that contain them all); the
     float stage is that of ``m`` (``float_stage``: computed already, a dict as
     :func:`verify.float_stage.normal_float_stage` returns, plus ``"bm"``)."""
-    from analytic.stitching import Parity
-
-    parity = Parity.of(n)
+    parity = -1 if n % 2 else 1  # the multiplier (analytic.stitching.Parity)
     if float_stage is None:
         # float parameters from the exact rationals (right also next to critical damping)
         pm = normal_params(m, Q, damping, _MATH, system)

@@ -38,9 +38,7 @@ _MATH = backend("math")
 def _forms(odd: bool):
     """The edge equation of one parity compiled: floats with two derivatives (the start), and
     arb ``F``, ``F'`` and both at once (shared subexpressions)."""
-    from analytic.stitching import Parity
-
-    form = edge_equation(Parity.of(1 if odd else 2))
+    form = edge_equation(-1 if odd else 1)  # the parity's multiplier (analytic.stitching.Parity)
     return (
         form.compiled("math", (0, 1, 2)),
         form.compiled("arb", 0),
