@@ -18,7 +18,6 @@ import argparse
 import csv
 import io
 import json
-import multiprocessing
 import os
 from fractions import Fraction
 
@@ -168,6 +167,8 @@ def rows(orders, ms, Q, damping, digits, jobs=1, label="table", tol=None, system
         return out
     tasks = [(n, m, Q, damping, digits, system) for n in orders for m in ms]
     if jobs > 1 and len(tasks) > 1:
+        import multiprocessing
+
         ctx = multiprocessing.get_context("spawn" if os.name == "nt" else "fork")
         with ctx.Pool(jobs) as pool:
             it = pool.imap(_certified, tasks, chunksize=max(1, len(tasks) // (8 * jobs)))
