@@ -21,7 +21,7 @@ from flint import arb, ctx
 M = Fraction(3, 10)
 ORDER = 3
 DIGITS = (15, 50, 100, 1000, 5000, 10000, 20000, 100000)
-QUICK_DIGITS = (15, 100, 1000, 10000)
+QUICK_DIGITS = (15, 50, 1000, 10000)
 
 
 def _params(m: Fraction):
@@ -79,9 +79,32 @@ def floor_edges(m: Fraction, digits: int):
     return out
 
 
+def previous() -> dict:
+    """Seconds per call (both edges) of the certified solver in the previous release, by digits
+    (``benchmarks/results.json``: per edge, median over its scenes)."""
+    import json
+    from pathlib import Path
+
+    path = Path(__file__).with_name("results.json")
+    try:
+        doc = json.loads(path.read_text())
+    except (OSError, ValueError):
+        return {}
+    out = {}
+    for row in doc.get("methods", []):
+        name = row.get("method", "")
+        if name.startswith("certified ") and name.split()[1].isdigit():
+            out[int(name.split()[1])] = 2 * row["seconds"]
+    for row in doc.get("targets", []):  # the same job as here: order 3 at m = 0.3, both edges
+        if row.get("name", "").startswith("certified 50 digits, n = 3, m = 0.3"):
+            out[50] = row["seconds"]
+    return out
+
+
 def scenes(quick: bool) -> list[dict]:
     import paramres
 
+    prev = previous()
     out = []
     for d in QUICK_DIGITS if quick else DIGITS:
         out.append(
@@ -91,6 +114,7 @@ def scenes(quick: bool) -> list[dict]:
                 "ours": lambda d=d: paramres.boundary(ORDER, "3/10", digits=d),
                 "floor": lambda d=d: floor_edges(M, d),
                 "note": "plain arb interval Newton with precision doubling, both edges",
+                "baseline": prev.get(d),
             }
         )
     # friction: the Q = 7 boundary against the frictionless one (the floor here is ours at Q=None)
@@ -104,4 +128,20 @@ def scenes(quick: bool) -> list[dict]:
                 "note": "the friction boundary against the frictionless one",
             }
         )
+    return out
+
+
+def summary(rows: list[dict]) -> list[str]:
+    """How the certified time grows with the digits: the exponent ``a`` of ``time ~ D^a``
+    between successive measured precisions from 1000 digits on (target: ``a <= 1.7``)."""
+    pts = sorted(
+        (int(r["name"].split()[1]), r["ours_seconds"])
+        for r in rows
+        if r["name"].startswith("certified ") and r["name"].split()[1].isdigit()
+    )
+    pts = [(d, t) for d, t in pts if d >= 1000]
+    out = []
+    for (d1, t1), (d2, t2) in zip(pts, pts[1:], strict=False):
+        a = math.log(t2 / t1) / math.log(d2 / d1)
+        out.append(f"certified time ~ D^{a:.2f} from {d1} to {d2} digits (target <= 1.7)")
     return out

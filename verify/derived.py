@@ -235,7 +235,7 @@ class Form:
         text = inspect.getsource(fn)
         names = {}
         return re.sub(
-            r"_Dummy_\d+", lambda mt: names.setdefault(mt.group(0), f"_d{len(names)}"), text
+            r"_?Dummy_\d+", lambda mt: names.setdefault(mt.group(0), f"_d{len(names)}"), text
         )
 
 
