@@ -6,8 +6,7 @@ What a user reads is a *rounded* decimal ``p`` of ``x``, so the honest bound of 
 computes that bound exactly (rational arithmetic) and :func:`bound_text` writes a bound rounded
 *up* to two significant digits, so the printed bound is never smaller than the true one.
 
->>> from decimal import Decimal
-from fractions import Fraction
+>>> from fractions import Fraction
 >>> import mpmath
 >>> x = mpmath.mpf(1) / 3
 >>> bound_text(printed_error("0.3333", x, mpmath.mpf(2) ** -60))
@@ -16,7 +15,6 @@ from fractions import Fraction
 
 from __future__ import annotations
 
-from decimal import Decimal
 from fractions import Fraction
 
 import mpmath
@@ -40,8 +38,7 @@ def printed_error(text: str | None, x, radius) -> Fraction | None:
     if not (isinstance(x, mpmath.mpf) and isinstance(radius, mpmath.mpf)):
         return abs(Fraction(text) - exact(x)) + exact(radius)
     # the same in integers on one common scale 2^-a 10^-b (one reduction at the end)
-    sign, digits, k = Decimal(text).as_tuple()
-    D = int("".join(map(str, digits))) * (-1 if sign else 1)
+    D, k = _decimal(text)
     xs, xm, xe, _ = x._mpf_
     _, rm, re, _ = radius._mpf_
     X = -xm if xs else xm
@@ -52,6 +49,14 @@ def printed_error(text: str | None, x, radius) -> Fraction | None:
     B = (X << (xe - e2)) * scale10
     C = (rm << (re - e2)) * scale10
     return Fraction(abs(A - B) + C, scale10 << (-e2))
+
+
+def _decimal(text: str) -> tuple[int, int]:
+    """``(D, k)`` with ``value(text) = D 10**k`` exactly, for the decimals the engine prints
+    (``"-1.2345e-7"``, ``"0.00123"``, ``"12"``)."""
+    mant, _, ex = text.lower().partition("e")
+    whole, _, frac = mant.partition(".")
+    return int(whole + frac), (int(ex) if ex else 0) - len(frac)
 
 
 def bound_text(bound: Fraction | None, digits: int = 2) -> str | None:
