@@ -220,7 +220,7 @@ def quick_root(
     x0: float,
     *,
     bits: int,
-    start_bits: int = 48,
+    start_bits: int = 50,
     floor: float = 0.0,
     bracket: tuple | None = None,
     scale: float | Callable[[float], float] | None = None,
@@ -237,7 +237,7 @@ def quick_root(
     meet the radius that :func:`certified_root` promises (``2**-bits`` relative to ``scale`` or
     ``max(|root|, floor)``)."""
     work = bits + 30
-    need = (bits + 24) // 2
+    need = (bits + 12) // 2 + 1
     x = arb(x0)
     acc = start_bits
     lo = hi = None
