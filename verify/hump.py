@@ -33,7 +33,15 @@ from flint import arb, ctx
 
 from analytic.system import PAPER
 
-from .certify import CertificationError, Jet, ball, bits_for_digits, certified_root, prove_sign
+from .certify import (
+    CertificationError,
+    Jet,
+    ball,
+    bits_for_digits,
+    certified_root,
+    prove_sign,
+    quick_root,
+)
 from .derived import (
     backend,
     edge_equation,
@@ -242,14 +250,29 @@ def _solve_hump(req: Request, h: _Hump, bits: int):
     def scale(t):
         return max(min(abs(t + sh) for sh in h.shifts), h.floor, 1e-300)
 
-    lo_root = certified_root(
-        h.D, h.dD, lo0, bits=bits, floor=h.floor, bracket=(h.a, top), scale=scale
-    )
     neg = lambda t: -h.D(t)  # noqa: E731
     dneg = lambda t: -h.dD(t)  # noqa: E731
-    hi_root = certified_root(
-        neg, dneg, hi0, bits=bits, floor=h.floor, bracket=(top, h.b), scale=scale
-    )
+    roots = []
+    for F, dF, x0, (a, b), fine in (
+        (h.D, h.dD, lo0, (h.a, top), math.isfinite(h.lo)),
+        (neg, dneg, hi0, (top, h.b), math.isfinite(h.hi)),
+    ):
+        root = None
+        if fine:  # a float edge from the float stage: the fast path (None where it fails)
+            root = quick_root(
+                lambda t, F=F, dF=dF: (F(t), dF(t)),
+                F,
+                dF,
+                x0,
+                bits=bits,
+                floor=h.floor,
+                bracket=(ball(a), ball(b)),
+                scale=scale,
+            )
+        if root is None:
+            root = certified_root(F, dF, x0, bits=bits, floor=h.floor, bracket=(a, b), scale=scale)
+        roots.append(root)
+    lo_root, hi_root = roots
     return True, lo_root, hi_root, _prove_shape(h, lo_root, hi_root)
 
 
