@@ -29,13 +29,16 @@ __all__ = [
     "as_range",
     "as_tolerance",
     "as_period",
-    "as_system",
     "DIGITS_RANGE",
+    "BOUNDARY_DIGITS_RANGE",
     "MAX_ORDER",
 ]
 
 #: digits a high-precision result may be asked for (inclusive)
 DIGITS_RANGE = (5, 10000)
+#: digits of a certified boundary (:func:`verify.solve.boundary`; the solver's time grows about
+#: as ``D^1.6``: 100000 digits take seconds)
+BOUNDARY_DIGITS_RANGE = (5, 100000)
 #: the largest resonance order accepted
 MAX_ORDER = 10000
 #: the smallest depth accepted (text: ``1e-1000``)
@@ -209,9 +212,11 @@ def as_quality(Q) -> Fraction | mpmath.mpf | None:
     return val
 
 
-def as_digits(d) -> int:
-    """Decimal digits for a high-precision result, ``DIGITS_RANGE[0] <= d <= DIGITS_RANGE[1]``."""
-    return as_integer(d, name="digits", low=DIGITS_RANGE[0], high=DIGITS_RANGE[1])
+def as_digits(d, allowed: tuple[int, int] = DIGITS_RANGE) -> int:
+    """Decimal digits for a high-precision result, ``allowed[0] <= d <= allowed[1]``
+    (:data:`DIGITS_RANGE` unless the caller allows more, as the certified boundary does with
+    :data:`BOUNDARY_DIGITS_RANGE`)."""
+    return as_integer(d, name="digits", low=allowed[0], high=allowed[1])
 
 
 def as_damping(model) -> str:
@@ -293,12 +298,3 @@ def as_period(T, *, name: str = "period T/T0") -> Fraction | mpmath.mpf:
     if not 0 < val <= MAX_PERIOD:
         raise InputError(f"{name} = {_show(T)} is outside the allowed range {allowed}")
     return val
-
-
-def as_system(system="pendulum", duty="1/2", omega_sq=None, jump=None):
-    """A member of the family (:class:`analytic.system.System`): a name (``pendulum``,
-    ``torsion``, ``meissner``, ``custom`` with ``omega_sq`` and ``jump``) or a ``System``, with the
-    duty ``0 < D < 1``."""
-    from analytic.system import system as make
-
-    return make(system, duty=duty, omega_sq=omega_sq, jump=jump)

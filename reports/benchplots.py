@@ -1,12 +1,13 @@
 """The speed-against-error picture of ``paramres bench``: time per edge against error, per method.
 
-:func:`pareto_figure` takes the points of :func:`verify.bench.pareto` (one per method: median CPU
-time per edge, largest relative error) for one or more panels -- typically all scenes, and the
-small depths where the series shine -- and draws them on log-log axes, one marker per family of
-methods, the Pareto front (the methods no other one beats in both speed and error) joined by a
-step line and labelled.  Errors below the reference's resolution are drawn at that floor (a dashed
-line).  :func:`save_figure` writes it as vector PDF, PNG or SVG (by the file name's
-ending), atomically; :func:`reports.figures.pdf_bytes` gives the bytes the report embeds.
+:func:`pareto_figure` takes the points of :func:`reports.benchmark.pareto` (one per method:
+median CPU time per edge, largest relative error) for one or more panels -- typically all
+scenes, and the small depths where the series shine -- and draws them on log-log axes, one
+marker per family of methods, the Pareto front (the methods no other one beats in both speed
+and error) joined by a step line and labelled.  Errors below the reference's resolution are
+drawn at that floor (a dashed line).  :func:`save_figure` writes it as vector PDF, PNG or SVG
+(by the file name's ending), atomically; :func:`reports.figures.pdf_bytes` gives the bytes the
+report embeds.
 """
 
 from __future__ import annotations
@@ -42,7 +43,8 @@ FLOOR = 1e-58
 
 def pareto_figure(panels: Sequence[tuple[str, Sequence[dict]]], *, subtitle: str = "") -> Figure:
     """One panel per ``(title, points)``; each point a dict with ``method``, ``family``,
-    ``seconds`` (per edge), ``error`` and ``front`` (as :func:`verify.bench.pareto` returns)."""
+    ``seconds`` (per edge), ``error`` and ``front`` (as :func:`reports.benchmark.pareto`
+    returns)."""
     with style():
         fig, axes = new_figure(height=3.6, ncols=len(panels), sharey=True)
         axes = axes if isinstance(axes, tuple) else (axes,)

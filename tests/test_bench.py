@@ -15,7 +15,7 @@ from fractions import Fraction
 import mpmath
 import pytest
 
-from verify import bench
+from reports import benchmark as bench
 from verify.solve import boundary
 
 SCENE = bench.Scene(3, Fraction(3, 10))

@@ -1,4 +1,4 @@
-"""``paramres bench``: the command around :func:`verify.bench.run`, on a tiny run.
+"""``paramres bench``: the command around :func:`reports.benchmark.run`, on a tiny run.
 
 The measurement itself is replaced by a run on one scene with three methods (the full run takes a
 minute; ``tests/test_bench.py`` checks the machinery).  Checked: the text, ``--json``, the files
@@ -13,8 +13,8 @@ from fractions import Fraction
 
 import pytest
 
+from reports import benchmark as bench
 from reports.cli import main
-from verify import bench
 
 TINY = [bench.Scene(2, Fraction(1, 10))]
 

@@ -145,7 +145,7 @@ def test_table_csv_file_is_stdout_and_metadata_beside_it(tmp_path, capsys):
         ["boundary", "--order", "1", "--m", "1.5"],
         ["boundary", "--order", "1", "--m", "nan"],
         ["boundary", "--order", "1", "--m", "0.3", "--Q", "-2"],
-        ["boundary", "--order", "1", "--m", "0.3", "--digits", "20000"],
+        ["boundary", "--order", "1", "--m", "0.3", "--digits", "200000"],
         ["boundary", "--order", "1", "--m", "0.3", "--damping", "viscous"],
         ["boundary", "--order", "1", "--m", "0.3", "--method", "magic"],
         ["existence", "--order", "3", "--Q", "0"],

@@ -88,6 +88,7 @@ from flint import arb, ctx
 from .certify import ball
 from .derived import backend, edge_equation
 from .inputs import DIGITS_RANGE, as_damping, as_depth, as_orders, as_quality, as_tolerance
+from .methods import register_method
 from .params import exact_fraction, normal_params
 
 __all__ = [
@@ -225,7 +226,7 @@ def series_validity(order: int) -> dict[int, float]:
     the references resolve (``1e-40``: the asymptotic regime, where the estimate is the leading
     term of the error).  ``m_max`` is the largest depth up to which every depth passes.
     """
-    from .solve import boundary
+    from .certified import boundary
 
     refs = {}
     result = {}
@@ -393,9 +394,7 @@ def _prove(order: int, m: Fraction, values, tol, max_bits=None):
 def _prove_at(n: int, m: Fraction, values, tol, bits: int) -> tuple[int, tuple]:
     """One attempt of :func:`prove_within` at ``bits``: 1 proven, -1 disproven, 0 undecided;
     and ``(w, t, balls)``."""
-    from analytic.stitching import Parity
-
-    F = edge_equation(Parity.of(n)).compiled("arb", 0)
+    F = edge_equation(-1 if n % 2 else 1).compiled("arb", 0)
     sgn = _sgn(n)
     with ctx.workprec(bits):
         p = normal_params(m, None, "exact", _ARB)
@@ -460,7 +459,7 @@ def _bracket_status(F, left, right, c, sgn, eps, p, half_pi) -> int:
 
 
 def _double_values(order: int, m: Fraction) -> tuple[float, float]:
-    from .solve import float_edges
+    from .undamped import float_edges
 
     return float_edges(order, m)
 
@@ -475,7 +474,7 @@ def _from_values(req, choice: Choice, values, tol, proof, notes) -> object:
     offsets from ``n T_av/2`` computed in ball arithmetic (their radius adds that of ``T_av``),
     and as many digits as the tolerance supports."""
     from .certify import to_mpf, upper_mpf
-    from .solve import Boundary
+    from .result import Boundary
 
     n = req.order
     bits, w, t, vb = proof
@@ -521,7 +520,8 @@ def _from_values(req, choice: Choice, values, tol, proof, notes) -> object:
 
 def _certified(req, tol, notes=()):
     """The certified route at just enough digits, its radius checked against ``tol``."""
-    from .solve import METHODS, Request
+    from .methods import METHODS
+    from .request import Request
 
     digits = certified_digits(tol)
     while True:
@@ -591,7 +591,7 @@ def boundaries_tol(orders, ms, *, Q=None, damping="exact", tol, progress=None) -
     """:func:`boundary_auto` for every order and depth (a table: rows ordered by order, then
     depth); the double values of all points come from one call of the vectorised grid.
     ``progress`` wraps the iteration (e.g. :func:`reports.output.progress`)."""
-    from .solve import Request
+    from .request import Request
 
     orders = as_orders(orders)
     QQ = as_quality(Q)
@@ -612,3 +612,6 @@ def boundaries_tol(orders, ms, *, Q=None, damping="exact", tol, progress=None) -
         double = None if grid is None else (float(grid[i, 0, j]), float(grid[i, 1, j]))
         out.append(boundary_auto(req, double=double))
     return out
+
+
+register_method("auto")(lambda req: boundary_auto(req))

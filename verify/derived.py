@@ -47,6 +47,7 @@ structure sympy returns.
 from __future__ import annotations
 
 import math
+import re
 from dataclasses import dataclass, field
 from functools import cache
 
@@ -209,23 +210,86 @@ class Form:
         key = (name, orders)
         fn = self._cache.get(key)
         if fn is None:
-            import sympy as sp
-
-            many = isinstance(orders, tuple)
-            exprs = [self.exprs[k] for k in orders] if many else self.exprs[orders]
-            fn = sp.lambdify(
-                self.args,
-                exprs,
-                modules=[backend(name).namespace],
-                printer=_printer(),
-                cse=many,
-                docstring_limit=0,
-            )
-            if many:
-                inner = fn
-                fn = lambda *a: tuple(inner(*a))  # noqa: E731
+            fn = load_source(self.source(name, orders), name, orders)
             self._cache[key] = fn
         return fn
+
+    def source(self, name: str, orders=0) -> str:
+        """The Python text of ``compiled(name, orders)`` as :func:`sympy.lambdify` writes it
+        (sympy's dummy names renumbered in order of appearance, so that the text is the same in
+        every process)."""
+        import inspect
+
+        import sympy as sp
+
+        many = isinstance(orders, tuple)
+        exprs = [self.exprs[k] for k in orders] if many else self.exprs[orders]
+        fn = sp.lambdify(
+            self.args,
+            exprs,
+            modules=[backend(name).namespace],
+            printer=_printer(),
+            cse=many,
+            docstring_limit=0,
+        )
+        text = inspect.getsource(fn)
+        names = {}
+        return re.sub(
+            r"_?Dummy_\d+", lambda mt: names.setdefault(mt.group(0), f"_d{len(names)}"), text
+        )
+
+
+def load_source(text: str, name: str, orders=0):
+    """The function a form's text (:meth:`Form.source`) defines, in back end ``name``'s
+    namespace; one giving a tuple for several ``orders``."""
+    ns = dict(backend(name).namespace)
+    exec(compile(text, f"<form {name} {orders}>", "exec"), ns)  # noqa: S102 - derived text
+    inner = ns["_lambdifygenerated"]
+    if isinstance(orders, tuple):
+        return lambda *a: tuple(inner(*a))
+    return inner
+
+
+class LazyForm:
+    """A :class:`Form` derived only when something needs more than its compiled functions.
+
+    ``key`` names the form (the builder and its argument); a compilation whose text is in
+    :data:`verify.forms_generated.SOURCES` is loaded from there without sympy, any other request
+    derives the form (``build()``) and delegates to it.  ``tests/test_forms_generated.py``
+    checks that the stored texts are what the derivation gives today."""
+
+    def __init__(self, key: str, build):
+        self.key = key
+        self._build = build
+        self._real = None
+        self._fns = {}
+
+    @property
+    def real(self) -> Form:
+        if self._real is None:
+            self._real = self._build()
+        return self._real
+
+    def compiled(self, name: str, orders=0):
+        k = (name, orders)
+        fn = self._fns.get(k)
+        if fn is None:
+            from .forms_generated import SOURCES
+
+            text = SOURCES.get(generated_key(self.key, name, orders))
+            fn = load_source(text, name, orders) if text else self.real.compiled(name, orders)
+            self._fns[k] = fn
+        return fn
+
+    def __getattr__(self, attr):
+        if attr.startswith("__") or attr in ("_build", "_real", "_fns", "key"):
+            raise AttributeError(attr)
+        return getattr(self.real, attr)
+
+
+def generated_key(key: str, name: str, orders) -> str:
+    """The key of one compilation in :data:`verify.forms_generated.SOURCES`."""
+    return f"{key} | {name} | {orders}"
 
 
 def term_sizes(form: Form) -> Form:
@@ -287,7 +351,21 @@ def _symbols():
 
 
 @cache
-def edge_equation(parity) -> Form:
+def edge_equation(parity) -> LazyForm:
+    """The undamped per-edge equation of ``parity`` (see :func:`_edge_equation`), derived when
+    first needed beyond its pregenerated compilations."""
+    p = int(parity)
+    return LazyForm(f"edge_equation({p})", lambda: _edge_equation(_parity(p)))
+
+
+def _parity(p: int):
+    from analytic.stitching import Parity
+
+    return Parity(p)
+
+
+@cache
+def _edge_equation(parity) -> Form:
     """The undamped per-edge equation in ``theta`` (:func:`analytic.normal_form.edge_factor`).
 
     ``x = c + theta``: ``f(x)`` is expanded by sympy and ``cos(c)``, ``sin(c)`` replaced by their
@@ -499,7 +577,15 @@ def near_one_forms() -> tuple[Form, Form, Form]:
 
 
 @cache
-def indicator(parity) -> Form:
+def indicator(parity) -> LazyForm:
+    """``D`` of the normal form for ``parity`` (see :func:`_indicator`), derived when first
+    needed beyond its pregenerated compilations."""
+    p = int(parity)
+    return LazyForm(f"indicator({p})", lambda: _indicator(_parity(p)))
+
+
+@cache
+def _indicator(parity) -> Form:
     """``D = R - sin^2(theta)`` of the normal form (:func:`analytic.normal_form.order_form`),
     positive inside the interval, with ``n pi/2 -> c`` and ``1 - r^2 -> u``; and its first three
     ``theta``-derivatives."""
@@ -541,7 +627,16 @@ def half_period_forms(regime) -> tuple:
 
 
 @cache
-def trace_indicator(regime1, regime2) -> Form:
+def trace_indicator(regime1, regime2) -> LazyForm:
+    """The trace-form indicator for the halves' regimes (see :func:`_trace_indicator`), derived
+    when first needed beyond its pregenerated compilations."""
+    return LazyForm(
+        f"trace_indicator({regime1}, {regime2})", lambda: _trace_indicator(regime1, regime2)
+    )
+
+
+@cache
+def _trace_indicator(regime1, regime2) -> Form:
     """``sigma tr(M) e^(gamma T) - 2 cosh(gamma T)`` in ``zeta = gamma T/2`` for the exact model
     with the halves in the given regimes (``2 C1 C2 - kappa S1 S2`` with the half-period functions
     of :func:`half_period_forms`); positive inside an interval."""
@@ -557,7 +652,14 @@ def trace_indicator(regime1, regime2) -> Form:
 
 
 @cache
-def trace_window(regime1) -> Form:
+def trace_window(regime1) -> LazyForm:
+    """``(C1, S1)`` of half 1 (see :func:`_trace_window`), derived when first needed beyond its
+    pregenerated compilations."""
+    return LazyForm(f"trace_window({regime1})", lambda: _trace_window(regime1))
+
+
+@cache
+def _trace_window(regime1) -> Form:
     """``(C1, S1)`` of half 1 as a form of ``(zeta, sigma, kappa, nu1, nu2)`` (for the phase
     ``Phi = nu2 zeta + atan2(kappa S1, 2 nu2 C1)`` that numbers the orders)."""
     s = _symbols()

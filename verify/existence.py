@@ -68,7 +68,7 @@ class Threshold:
     digits: int
 
     def text(self) -> str:
-        from .solve import proven_text
+        from .result import proven_text
 
         lo, hi = self.enclosure
         return proven_text(self.value, _mpf(hi - lo), self.digits)
@@ -373,7 +373,7 @@ def max_indicator(n: int, ms, Q: Fraction, damping: str) -> np.ndarray:
 
 
 def _hump(n: int, m: Fraction, Q: Fraction, damping: str, bits: int):
-    from .solve import hump_normal, hump_trace
+    from .hump import hump_normal, hump_trace
 
     kind, regimes = form_for(m, Q, damping)
     if kind == "normal":
@@ -402,7 +402,7 @@ def _g_ball(n: int, m: Fraction, Q: Fraction, damping: str, bits: int) -> arb | 
 
 def _prove_side(n, m: Fraction, Q, damping, bits, positive: bool) -> bool:
     """Prove ``max D > 0`` (``positive``) or ``max D < 0`` on the window at depth ``m``."""
-    from .solve import _prove_negative
+    from .hump import prove_negative
 
     h = _hump(n, m, Q, damping, bits)
     if h is None:
@@ -410,7 +410,7 @@ def _prove_side(n, m: Fraction, Q, damping, bits, positive: bool) -> bool:
     if positive:
         g = _g_ball(n, m, Q, damping, bits)
         return bool(g is not None and g > 0)
-    return _prove_negative(h, bits)
+    return prove_negative(h, bits)
 
 
 def _refine(n, Q, damping, m_neg: float, m_pos: float, digits: int) -> Threshold:
@@ -579,7 +579,7 @@ def _decide(
     decided and not to be split (another member of the family in the trace form, whose proofs over
     depth ranges are not implemented).  ``form``: the equations of the whole range, where known
     already (:func:`_uniform_form` of a range holding it)."""
-    from .solve import hump_box, hump_trace
+    from .hump import hump_box, hump_trace
 
     mid = (lo + hi) / 2
     if form is None:
@@ -650,16 +650,9 @@ def family_hump_box(
     from analytic.stitching import Parity
 
     from .derived import indicator
-    from .params import NormalParams
-    from .solve import (
-        NEAR_ONE,
-        _AtPrecision,
-        _Hump,
-        _hump_near_one,
-        box_prec,
-        depth_ball,
-        hump_normal,
-    )
+    from .enclosure import AtPrecision
+    from .hump import _Hump, _hump_near_one, box_prec, depth_ball, hump_normal
+    from .params import NEAR_ONE, NormalParams
     from .system_params import normal_jets
 
     mid = (lo + hi) / 2
@@ -673,8 +666,8 @@ def family_hump_box(
         Qb = arb(Q.numerator) / Q.denominator
         return NormalParams(**normal_jets(system, Jet(depth_ball(box), 1), Jet(Qb), damping))
 
-    P = _AtPrecision(jets, box_prec(box))
-    C = _AtPrecision(lambda: arb.pi() * n / 2)
+    P = AtPrecision(jets, box_prec(box))
+    C = AtPrecision(lambda: arb.pi() * n / 2)
     if fl["bm"] < NEAR_ONE:
         hj = _hump_near_one(n, P, fl, math.pi / 2, C, None, check=False)
     else:
@@ -699,7 +692,7 @@ def family_hump_box(
         )
     if hj.variable != hm.variable:  # pragma: no cover - both follow the float stage's bm
         raise CertificationError("the middle and the jets use different variables")
-    dM = _AtPrecision(lambda: depth_ball(box) - arb(mid.numerator) / mid.denominator, box_prec(box))
+    dM = AtPrecision(lambda: depth_ball(box) - arb(mid.numerator) / mid.denominator, box_prec(box))
 
     def mv(f0, f1):
         def g(t):
@@ -731,20 +724,21 @@ def family_hump_box(
 
 
 def _box_trace_params(lo, hi, Q):
-    from .solve import _AtPrecision, box_prec, depth_ball
+    from .enclosure import AtPrecision
+    from .hump import box_prec, depth_ball
 
     def make():
         Qb = arb(Q.numerator) / Q.denominator
         return trace_params(depth_ball((lo, hi)), Qb, backend("arb"))
 
-    return _AtPrecision(make, box_prec((lo, hi)))
+    return AtPrecision(make, box_prec((lo, hi)))
 
 
 def _in_trace_window(n, lo, hi, Q, regimes, z) -> bool:
     """``|Phi(z) - n pi| < pi/2`` for every depth of the range (half 2 under-damped), so that a
     point with ``D > 0`` there belongs to order ``n``; with both halves over-damped only order 1
     has a window."""
-    from .solve import trace_phase
+    from .hump import trace_phase
 
     if regimes[1] != "under":
         return n == 1
@@ -762,7 +756,7 @@ def _in_trace_window(n, lo, hi, Q, regimes, z) -> bool:
 
 def _no_window_on_box(n, lo, hi, Q, regimes) -> bool:
     from .grid import trace_window_ends  # noqa: F401  (the float tail bound below is its rule)
-    from .solve import prove_no_window
+    from .hump import prove_no_window
 
     if regimes[1] != "under":
         return n > 1

@@ -46,6 +46,7 @@ import numpy as np
 
 from .derived import backend, fixed_point_map
 from .inputs import as_damping, as_orders, as_quality
+from .methods import register_method
 
 __all__ = [
     "FixedPointError",
@@ -122,7 +123,7 @@ def boundary_fixedpoint(req):
     """``boundary(..., method="fixedpoint")``: the paper's iteration at ``digits`` digits in mpmath,
     with the paper's labels (``s = -1`` lower, ``s = +1`` upper).  Not certified."""
     from .params import halves, normal_params
-    from .solve import Boundary
+    from .result import Boundary
 
     if req.Q is not None and not halves(req.m, req.Q, req.damping).normal:
         raise FixedPointError("the paper's iteration needs both halves under-damped", "imaginary")
@@ -239,3 +240,6 @@ def failure_map(orders, ms, *, Q=None, damping="exact", max_iter=5000) -> FixedP
             kinds[i, e] = kind
             iters[i, e] = k
     return FixedPointMap(orders, ms, QQ, model, kinds, iters)
+
+
+register_method("fixedpoint")(boundary_fixedpoint)

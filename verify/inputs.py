@@ -1,9 +1,24 @@
 """The checks of user input, re-exported from :mod:`paramres.inputs` (the one implementation,
-which :mod:`analytic` uses too, so that :mod:`analytic` never imports :mod:`verify`)."""
+which :mod:`analytic` uses too, so that :mod:`analytic` never imports :mod:`verify`), and
+:func:`as_system`, the check of the oscillator (a member of :mod:`analytic.system`)."""
 
 from paramres import inputs as _inputs
 from paramres.inputs import *  # noqa: F401,F403
-from paramres.inputs import __all__  # noqa: F401
+from paramres.inputs import __all__ as _all
+
+__all__ = [*_all, "as_system"]
+
+
+def as_system(system="pendulum", duty="1/2", omega_sq=None, jump=None):
+    """A member of the family (:class:`analytic.system.System`): a name (``pendulum``,
+    ``torsion``, ``meissner``, ``custom`` with ``omega_sq`` and ``jump``) or a ``System``, with the
+    duty ``0 < D < 1``."""
+    from analytic.system import PAPER
+    from analytic.system import system as make
+
+    if system == "pendulum" and duty == "1/2" and omega_sq is None and jump is None:
+        return PAPER  # the default, without parsing it again
+    return make(system, duty=duty, omega_sq=omega_sq, jump=jump)
 
 
 def __getattr__(name: str):

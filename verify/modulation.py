@@ -13,7 +13,6 @@ from __future__ import annotations
 from fractions import Fraction
 
 from .inputs import InputError, as_quality
-from .ramp import as_switch_time
 
 __all__ = ["MODULATIONS", "check_modulation", "boundary", "multipliers"]
 
@@ -41,6 +40,8 @@ def check_modulation(modulation, switch_time, system="pendulum", Q=None) -> Frac
         return None
     if switch_time is None:
         raise InputError("the ramp modulation needs a switching time S >= 0 (--switch-time S)")
+    from .ramp import as_switch_time
+
     S = as_switch_time(switch_time)
     name = getattr(system, "name", system)
     if name != "pendulum":

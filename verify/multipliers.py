@@ -35,8 +35,8 @@ from .inputs import (
     as_system,
 )
 from .params import exact_fraction
+from .result import proven_text
 from .rounding import bound_text, printed_error
-from .solve import proven_text
 
 __all__ = ["Multipliers", "multipliers"]
 

@@ -44,6 +44,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 from fractions import Fraction
+from functools import lru_cache
 
 import mpmath
 
@@ -59,6 +60,7 @@ __all__ = [
     "halves",
     "form_for",
     "NEAR_CRITICAL",
+    "NEAR_ONE",
     "normal_params",
     "trace_params",
     "omega_av",
@@ -112,6 +114,11 @@ class Halves:
         return self.half1 in ("undamped", "under") and self.half2 in ("undamped", "under")
 
 
+#: below this ``1 - beta`` (``m > 0.995``) the certified solvers use the forms for ``m -> 1``
+#: (:func:`verify.derived.near_one_forms`, :func:`verify.derived.order1_forms`), whose terms are
+#: of the size of the result; the standard forms cancel to ``1 - beta`` there
+NEAR_ONE = 0.05
+
 #: below this ``nu1 = Omega1/gamma`` (half 1 close to critical damping) the normal form
 #: degenerates (``r, beta -> 1``: every term of ``D`` is O(1) while ``D`` is O(nu1)); the trace form
 #: is used instead, whose terms stay of the size of ``D``
@@ -126,7 +133,7 @@ def form_for(
     The normal form without friction, in the paper model, and in the exact model with both halves
     under-damped and half 1 (the low-frequency phase) not within :data:`NEAR_CRITICAL` of critical
     damping (``Omega1^2 / gamma^2 < NEAR_CRITICAL^2``); the trace form otherwise."""
-    if not system.is_paper:
+    if system is not PAPER and not system.is_paper:
         from .system_params import canonical
 
         system = canonical(system)
@@ -212,7 +219,7 @@ def normal_params(
     itself enters only through ``1 + m`` and ``m`` (rounding it changes the result by a relative
     2^-53).  Omitted, it is ``1 - m``.
     """
-    if not system.is_paper:
+    if system is not PAPER and not system.is_paper:
         from .system_params import normal_values
 
         return NormalParams(**normal_values(system, m, Q, damping, B, om))
@@ -223,25 +230,51 @@ def normal_params(
         return NormalParams(r, r2, u, beta, w0, zero, w0, zero, bm)
     if damping == "paper":
         return NormalParams(r, r2, u, beta, w0, 1 / (2 * _lift(Q, B) * w0), w0, zero, bm)
-    q2 = 4 * Q * Q
-    nu1 = _root((q2 - 1 - m) / (1 + m), B)
-    nu2 = _root((q2 - 1 + m) / om, B)
-    om2 = _lift(om * (1 + m), B)
-    a, b = _lift((1 + m) * (1 + m), B), _lift(om * om, B)
+    if isinstance(m, Fraction) and isinstance(Q, Fraction) and om == 1 - m:
+        # the rational parts once per (m, Q): the same at every working precision
+        u1, u2, om2, a, b, Un, d4, b8 = _exact_parts(m, Q)
+    else:
+        q2 = 4 * Q * Q
+        u1, u2, om2 = (q2 - 1 - m) / (1 + m), (q2 - 1 + m) / om, om * (1 + m)
+        a, b = (1 + m) * (1 + m), om * om
+        Un, d4, b8 = 2 * m * ((q2 - 1) * (3 + m * m) - (1 + 3 * m * m)), 4 * m, 8 * m * Q * Q
+    nu1 = _root(u1, B)
+    nu2 = _root(u2, B)
+    om2 = _lift(om2, B)
+    a, b = _lift(a, B), _lift(b, B)
     V = (a * nu1 + b * nu2) / om2
-    U = _lift(2 * m * ((q2 - 1) * (3 + m * m) - (1 + 3 * m * m)), B) / (om2 * om2 * V)
-    d = _lift(4 * m, B) / om2
+    U = _lift(Un, B) / (om2 * om2 * V)
+    d = _lift(d4, B) / om2
     den = V * V + d * d
     r2 = (U * U + d * d) / den
     u = 4 * nu1 * nu2 / den
     nsum = nu1 + nu2
     Qb = _lift(Q, B)
     w = nsum / (4 * Qb)
-    beta = _lift(8 * m * Q * Q, B) / (om2 * nsum * nsum)
+    beta = _lift(b8, B) / (om2 * nsum * nsum)
     g = 2 / nsum
     # w0 - w = (omega1 - Omega1 + omega2 - Omega2)/(4 pi), omega - Omega = gamma^2/(omega + Omega)
     diff = (1 / (2 * Qb / _root(1 + m, B) + nu1) + 1 / (2 * Qb / _root(om, B) + nu2)) / (4 * Qb)
     return NormalParams(B.sqrt(r2), r2, u, beta, w, g, w0, diff / (w * w0), 2 * nu1 / nsum)
+
+
+@lru_cache(maxsize=64)
+def _exact_parts(m: Fraction, Q: Fraction) -> tuple:
+    """The rational parts of the exact model's normal-form parameters (see the module text):
+    ``u1 = nu1^2``, ``u2 = nu2^2``, ``1 - m^2``, ``(1+m)^2``, ``(1-m)^2``, the numerator of ``U``,
+    ``4m`` and ``8 m Q^2``."""
+    q2 = 4 * Q * Q
+    om = 1 - m
+    return (
+        (q2 - 1 - m) / (1 + m),
+        (q2 - 1 + m) / om,
+        om * (1 + m),
+        (1 + m) * (1 + m),
+        om * om,
+        2 * m * ((q2 - 1) * (3 + m * m) - (1 + 3 * m * m)),
+        4 * m,
+        8 * m * Q * Q,
+    )
 
 
 def trace_params(m, Q, B: Backend, system: System = PAPER) -> TraceParams:
@@ -251,7 +284,7 @@ def trace_params(m, Q, B: Backend, system: System = PAPER) -> TraceParams:
     ``nu_i = 0`` exactly (its forms do not use it).  Other members of the family and duties:
     :func:`verify.system_params.trace_values` (phase lengths folded into ``kappa, nu_i``).
     """
-    if not system.is_paper:
+    if system is not PAPER and not system.is_paper:
         from .system_params import normal_values, trace_values
 
         tv = trace_values(system, m, Q, B)

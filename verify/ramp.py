@@ -245,7 +245,7 @@ _ENTRY = {"G11": 0, "G12": 1, "G21": 2, "G22": 3}
 
 
 def _jump(order: int, m: Fraction, duty: Fraction, digits: int):
-    from .solve import boundary
+    from .certified import boundary
 
     return boundary(order, m, digits=digits, system="pendulum", duty=duty)
 
@@ -316,7 +316,7 @@ def _follow(m, S, duty, e, T0: float, spacing: float, bits: int = 96) -> float:
 def ramp_boundary(order, m, S, *, duty="1/2", digits=30, _jump_result=None) -> RampEdges:
     """The certified edges of the ``order``-th interval with linear ramps of duration ``S``
     (``0 <= S <= min(D, 1 - D) T`` at the lower edge; a longer ramp is refused)."""
-    from .solve import Boundary
+    from .result import Boundary
 
     n = as_order(order)
     sysv = as_system("pendulum", duty)
@@ -598,7 +598,7 @@ class Validity:
 
 def _ball_text(x: arb, k: int = 10) -> str:
     """``x`` with at most ``k`` digits, only those its radius proves (``0`` if it holds 0)."""
-    from .solve import proven_text
+    from .result import proven_text
 
     with mpmath.workdps(k + 20):
         return proven_text(to_mpf(x), upper_mpf(arb(x.rad())), k)

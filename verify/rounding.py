@@ -35,7 +35,28 @@ def printed_error(text: str | None, x, radius) -> Fraction | None:
     nothing printed or no radius (an uncertified value)."""
     if text is None or radius is None or x is None:
         return None
-    return abs(Fraction(text) - exact(x)) + exact(radius)
+    if not (isinstance(x, mpmath.mpf) and isinstance(radius, mpmath.mpf)):
+        return abs(Fraction(text) - exact(x)) + exact(radius)
+    # the same in integers on one common scale 2^-a 10^-b (one reduction at the end)
+    D, k = _decimal(text)
+    xs, xm, xe, _ = x._mpf_
+    _, rm, re, _ = radius._mpf_
+    X = -xm if xs else xm
+    e2 = min(xe, re, 0)
+    k10 = min(k, 0)
+    scale10 = 10 ** (-k10)
+    A = D * 10 ** (k - k10) << (-e2)
+    B = (X << (xe - e2)) * scale10
+    C = (rm << (re - e2)) * scale10
+    return Fraction(abs(A - B) + C, scale10 << (-e2))
+
+
+def _decimal(text: str) -> tuple[int, int]:
+    """``(D, k)`` with ``value(text) = D 10**k`` exactly, for the decimals the engine prints
+    (``"-1.2345e-7"``, ``"0.00123"``, ``"12"``)."""
+    mant, _, ex = text.lower().partition("e")
+    whole, _, frac = mant.partition(".")
+    return int(whole + frac), (int(ex) if ex else 0) - len(frac)
 
 
 def bound_text(bound: Fraction | None, digits: int = 2) -> str | None:

@@ -2,7 +2,8 @@
 
     paramres bench [--quick] [--json] [--plot FILE] [--output FILE]
 
-Runs :func:`verify.bench.run`: the series of each order ``K``, the paper's fixed-point iteration,
+Runs :func:`reports.benchmark.run`: the series of each order ``K``, the paper's fixed-point
+iteration,
 the double-precision paths, mpmath and the certified solver at 15 to 1000 digits, plain
 ``mpmath.findroot`` on the printed equation, and the automatic choice with a tolerance, on orders
 1-6 over a grid of depths and the hard cases; each timed (median of warm runs, per edge) and
@@ -39,6 +40,14 @@ def register(subparsers) -> None:
         formatter_class=argparse.RawDescriptionHelpFormatter,
     )
     p.add_argument("--quick", action="store_true", help="fewer scenes and runs (seconds)")
+    p.add_argument(
+        "--floors",
+        action="store_true",
+        help=(
+            "instead: each hot path against a floor written in the benchmark, timed alternately "
+            "(benchmarks/floor_*.py of a source checkout); prints the ratios against targets"
+        ),
+    )
     p.add_argument("--json", action="store_true", help="print all measurements as JSON")
     p.add_argument(
         "--plot", metavar="FILE", help="write the time-against-error plot (.pdf, .png or .svg)"
@@ -79,9 +88,9 @@ def plot_bytes(result, path) -> bytes:
     """The Pareto picture of ``result`` rendered in the format ``path``'s suffix names."""
     from pathlib import Path
 
+    from reports.benchmark import pareto
     from reports.benchplots import pareto_figure
     from reports.figures import figure_bytes
-    from verify.bench import pareto
 
     m = result.machine
     fig = pareto_figure(
@@ -94,8 +103,48 @@ def plot_bytes(result, path) -> bytes:
     return figure_bytes(fig, Path(path).suffix, what="bench")
 
 
+def run_floors(args) -> int:
+    """``paramres bench --floors``: the runner of ``benchmarks/floors.py`` (source checkout)."""
+    import importlib.util
+    from pathlib import Path
+
+    from reports.output import check_writable
+    from verify.inputs import InputError
+
+    path = Path(__file__).resolve().parents[2] / "benchmarks" / "floors.py"
+    if not path.is_file():
+        raise InputError(
+            "--floors runs benchmarks/floors.py of a source checkout, which this installation "
+            "does not have"
+        )
+    if args.output:
+        check_writable(args.output, "--output")
+    spec = importlib.util.spec_from_file_location("_paramres_floors", path)
+    floors = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(floors)
+
+    def bar(items):
+        return progress(items, total=len(items), label="floors")
+
+    doc = floors.run(quick=args.quick, progress=bar)
+    if args.output:
+        atomic_write(args.output, json.dumps(doc, indent=2) + "\n")
+    if args.json:
+        dump_json(doc)
+    else:
+        print(floors.render(doc), end="")
+    return 0
+
+
 def run(args) -> int:
     from reports.output import check_writable
+
+    if getattr(args, "floors", False):
+        if args.plot:
+            from verify.inputs import InputError
+
+            raise InputError("--plot draws the method comparison; it does not go with --floors")
+        return run_floors(args)
 
     # refuse a bad file name before the work
     if args.plot:
@@ -105,7 +154,7 @@ def run(args) -> int:
     if args.output:
         check_writable(args.output, "--output")
 
-    from verify.bench import run as bench_run
+    from reports.benchmark import run as bench_run
 
     def bar(items):
         return progress(items, total=len(items), label="bench")

@@ -14,8 +14,6 @@ from __future__ import annotations
 
 import argparse
 
-import sympy as sp
-
 from reports.output import dump_json
 from verify.inputs import InputError, as_damping, as_quality
 
@@ -105,10 +103,14 @@ def run(args) -> int:
 
 
 def _s(expr) -> str:
+    import sympy as sp
+
     return sp.sstr(expr, order="rev-lex")
 
 
 def _threshold_payload(order, terms: int, Q, damping: str, sysv=None) -> dict:
+    import sympy as sp
+
     from analytic.thresholds import threshold_series
 
     th = threshold_series(
@@ -136,6 +138,8 @@ def _threshold_payload(order, terms: int, Q, damping: str, sysv=None) -> dict:
 
 
 def render_text(es, payload: dict) -> str:
+    import sympy as sp
+
     lines = []
     what = f"order {es.order}" if isinstance(es.order, int) else f"every {es.order} order n"
     where = (

@@ -71,8 +71,8 @@ from functools import cache
 import mpmath
 import numpy as np
 
-from .derived import backend
-from .params import normal_params
+from verify.derived import backend
+from verify.params import normal_params
 
 __all__ = [
     "Scene",
@@ -219,7 +219,7 @@ def methods(quick: bool = False) -> list[Method]:
 
 def _series(scene: Scene, K: int, quick: bool):
     if scene.Q is None:
-        from .auto import series_value
+        from verify.auto import series_value
 
         m, n = float(scene.m), scene.order
         series_value(n, K, m)  # coefficients derived and cached here, not in the timing
@@ -244,8 +244,7 @@ def _friction_series(order: int, K: int, Q: Fraction, damping: str):
 
     from analytic.expansions import edge_series
     from analytic.model import S
-
-    from .derived import Form
+    from verify.derived import Form
 
     es = edge_series(order, K, Q=Q, damping=damping)
     P = sp.Symbol("P", positive=True)
@@ -254,8 +253,8 @@ def _friction_series(order: int, K: int, Q: Fraction, damping: str):
 
 
 def _fixed_point(scene: Scene):
-    from .fixedpoint import iterate
-    from .params import halves
+    from verify.fixedpoint import iterate
+    from verify.params import halves
 
     if scene.Q is not None and not halves(scene.m, scene.Q, scene.damping).normal:
         raise NotApplicable("the paper's iteration needs both halves under-damped")
@@ -279,11 +278,11 @@ def _fixed_point(scene: Scene):
 
 def _double(scene: Scene):
     if scene.Q is None:
-        from .solve import float_edges
+        from verify.undamped import float_edges
 
         n, m = scene.order, scene.m
         return lambda: float_edges(n, m)
-    from .grid import boundary_grid
+    from verify.grid import boundary_grid
 
     args = ([scene.order], [float(scene.m)])
     kw = {"Q": scene.Q, "damping": scene.damping}
@@ -295,7 +294,7 @@ def _grid_placeholder(scene: Scene):  # pragma: no cover - the grid is timed per
 
 
 def _certified(scene: Scene, digits: int):
-    from .solve import boundary
+    from verify.solve import boundary
 
     def call():
         b = boundary(scene.order, scene.m, Q=scene.Q, damping=scene.damping, digits=digits)
@@ -307,7 +306,7 @@ def _certified(scene: Scene, digits: int):
 
 
 def _auto(scene: Scene, tol: str):
-    from .solve import boundary
+    from verify.solve import boundary
 
     def call():
         b = boundary(scene.order, scene.m, Q=scene.Q, damping=scene.damping, tol=tol)
@@ -319,7 +318,7 @@ def _auto(scene: Scene, tol: str):
 
 
 def _start(scene: Scene) -> tuple[float, float]:
-    from .grid import boundary_grid
+    from verify.grid import boundary_grid
 
     Q = scene.Q
     lo, hi = boundary_grid([scene.order], [float(scene.m)], Q=Q, damping=scene.damping)[0, :, 0]
@@ -334,9 +333,8 @@ def _newton(scene: Scene, digits: int):
     each edge equation is solved for its own root (the start decides which equation belongs to
     which double edge); with friction the indicator from each double edge."""
     from analytic.stitching import Parity
-
-    from .derived import edge_equation, indicator
-    from .params import form_for
+    from verify.derived import edge_equation, indicator
+    from verify.params import form_for
 
     n = scene.order
     if scene.Q is not None and form_for(scene.m, scene.Q, scene.damping)[0] != "normal":
@@ -391,7 +389,7 @@ def _newton(scene: Scene, digits: int):
 
 
 def _float_start(scene: Scene):
-    from .solve import float_edges
+    from verify.undamped import float_edges
 
     if float(scene.m) > 0.95:
         return _start(scene)
@@ -771,7 +769,7 @@ def run(
     :func:`reports.output.progress`); ``runs`` timed runs per pair (default 7, quick 3);
     ``grid_depths``: depths of the grid target (6 orders); ``table``: also measure the automatic
     choice against the certified route, interleaved (:func:`auto_ratios`)."""
-    from .solve import boundary
+    from verify.solve import boundary
 
     began = time.perf_counter()
     sc = list(scene_list) if scene_list is not None else scenes(quick)
@@ -839,7 +837,7 @@ def run(
 
 def _grid_group(meth: Method, group: list[Scene], refs, runs: int, budget: float):
     """The grid for all scenes of one friction setting in one call: orders x depths."""
-    from .grid import boundary_grid
+    from verify.grid import boundary_grid
 
     s0 = group[0]
     orders = sorted({s.order for s in group})
@@ -867,7 +865,7 @@ def _grid_group(meth: Method, group: list[Scene], refs, runs: int, budget: float
 
 
 def _grid_target(depths: int, runs: int) -> dict:
-    from .grid import boundary_grid
+    from verify.grid import boundary_grid
 
     ms = np.linspace(0.001, 0.999, depths)
     orders = list(range(1, 7))
@@ -923,9 +921,9 @@ def auto_ratios(quick: bool = False) -> list[dict]:
     :data:`TABLE_DEPTHS`, tolerance 1e-8: the grid gives all double values at once)."""
     from collections import Counter
 
-    from .auto import boundaries_tol, certified_digits
-    from .inputs import as_tolerance
-    from .solve import boundary
+    from verify.auto import boundaries_tol, certified_digits
+    from verify.inputs import as_tolerance
+    from verify.solve import boundary
 
     rounds = 15 if quick else 40
     out = []

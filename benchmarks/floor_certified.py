@@ -1,0 +1,147 @@
+"""Certified edges against a plain arb interval Newton with precision doubling.
+
+The floor is the least a certified edge can cost: the per-edge equation of order 3 (eq. 13 with
+its sign, in ``theta = x - 3 pi/2``: ``F = sin(theta) - eps r cos(beta (3 pi/2 + theta))``; for
+``eps = +-1`` the two edges) written out here with python-flint ``arb``; the parameters ``beta =
+m/(1 + s)``, ``s = sqrt(1 - m^2)``, ``r = beta (3 + beta^2)/(1 + 3 beta^2)``, ``w = sqrt((1 +
+s)/2)/s``; a float Newton start, Newton on midpoints doubling the precision each step, one interval
+Newton test ``x - F(x)/F'(X)`` inside ``X`` at the target precision, and ``T/T0 = (3/2 +
+theta/pi)/w`` as a ball.  No safeguards, no offsets, no formatting.  Ours is
+``paramres.boundary(3, "3/10", digits=D)`` (both edges, every digit proven, offsets and radii
+included), through the whole public path.
+"""
+
+from __future__ import annotations
+
+import math
+from fractions import Fraction
+
+from flint import arb, ctx
+
+M = Fraction(3, 10)
+ORDER = 3
+DIGITS = (15, 50, 100, 1000, 5000, 10000, 20000, 100000)
+QUICK_DIGITS = (15, 50, 1000, 10000)
+
+
+def _params(m: Fraction):
+    mb = arb(m.numerator) / m.denominator
+    s = (1 - mb * mb).sqrt()
+    beta = mb / (1 + s)
+    b2 = beta * beta
+    r = beta * (3 + b2) / (1 + 3 * b2)
+    w = ((1 + s) / 2).sqrt() / s
+    return r, beta, w
+
+
+def _float_root(eps: int, r: float, beta: float) -> float:
+    c = 1.5 * math.pi
+    th = 0.0
+    for _ in range(30):
+        f = math.sin(th) - eps * r * math.cos(beta * (c + th))
+        d = math.cos(th) + eps * r * beta * math.sin(beta * (c + th))
+        step = f / d
+        th -= step
+        if abs(step) < 1e-15:
+            break
+    return th
+
+
+def floor_edges(m: Fraction, digits: int):
+    """Both edges ``T/T0`` of order 3 at depth ``m`` as proven balls (the floor)."""
+    bits = int(math.ceil(digits * math.log2(10))) + 10
+    rf, bf, _ = (float(x) for x in _params(m))
+    out = []
+    for eps in (1, -1):
+        x = arb(_float_root(eps, rf, bf))
+        prec = 53
+        while prec < bits:
+            prec = min(2 * prec, bits)
+            with ctx.workprec(prec + 10):
+                r, beta, _ = _params(m)
+                c = 3 * arb.pi() / 2
+                s, co = x.sin_cos()
+                sb, cb = (beta * (c + x)).sin_cos()
+                x = (x - (s - eps * r * cb) / (co + eps * r * beta * sb)).mid()
+        with ctx.workprec(bits + 10):
+            r, beta, w = _params(m)
+            pi = arb.pi()
+            c = 3 * pi / 2
+            X = arb(x, arb(2) ** (-bits + 4) * abs(x))
+            s, co = x.sin_cos()
+            fx = s - eps * r * (beta * (c + x)).cos()
+            Xs, Xc = X.sin_cos()
+            dX = Xc + eps * r * beta * (beta * (c + X)).sin()
+            N = x - fx / dX
+            if not X.contains_interior(N):  # pragma: no cover - the start is always good here
+                raise ArithmeticError("interval Newton failed")
+            out.append((arb(ORDER) / 2 + N / pi) / w)
+    return out
+
+
+def previous() -> dict:
+    """Seconds per call (both edges) of the certified solver in the previous release, by digits
+    (``benchmarks/results.json``: per edge, median over its scenes)."""
+    import json
+    from pathlib import Path
+
+    path = Path(__file__).with_name("results.json")
+    try:
+        doc = json.loads(path.read_text())
+    except (OSError, ValueError):
+        return {}
+    out = {}
+    for row in doc.get("methods", []):
+        name = row.get("method", "")
+        if name.startswith("certified ") and name.split()[1].isdigit():
+            out[int(name.split()[1])] = 2 * row["seconds"]
+    for row in doc.get("targets", []):  # the same job as here: order 3 at m = 0.3, both edges
+        if row.get("name", "").startswith("certified 50 digits, n = 3, m = 0.3"):
+            out[50] = row["seconds"]
+    return out
+
+
+def scenes(quick: bool) -> list[dict]:
+    import paramres
+
+    prev = previous()
+    out = []
+    for d in QUICK_DIGITS if quick else DIGITS:
+        out.append(
+            {
+                "name": f"certified {d} digits",
+                "target": 1.5,
+                "ours": lambda d=d: paramres.boundary(ORDER, "3/10", digits=d),
+                "floor": lambda d=d: floor_edges(M, d),
+                "note": "plain arb interval Newton with precision doubling, both edges",
+                "baseline": prev.get(d),
+            }
+        )
+    # friction: the Q = 7 boundary against the frictionless one (the floor here is ours at Q=None)
+    for d in (15, 50):
+        out.append(
+            {
+                "name": f"friction Q=7 / none, {d} digits",
+                "target": 2.0,
+                "ours": lambda d=d: paramres.boundary(ORDER, "3/10", Q=7, digits=d),
+                "floor": lambda d=d: paramres.boundary(ORDER, "3/10", digits=d),
+                "note": "the friction boundary against the frictionless one",
+            }
+        )
+    return out
+
+
+def summary(rows: list[dict]) -> list[str]:
+    """How the certified time grows with the digits: the exponent ``a`` of ``time ~ D^a``
+    between successive measured precisions from 1000 digits on (target: ``a <= 1.7``)."""
+    pts = sorted(
+        (int(r["name"].split()[1]), r["ours_seconds"])
+        for r in rows
+        if r["name"].startswith("certified ") and r["name"].split()[1].isdigit()
+    )
+    pts = [(d, t) for d, t in pts if d >= 1000]
+    out = []
+    for (d1, t1), (d2, t2) in zip(pts, pts[1:], strict=False):
+        a = math.log(t2 / t1) / math.log(d2 / d1)
+        out.append(f"certified time ~ D^{a:.2f} from {d1} to {d2} digits (target <= 1.7)")
+    return out

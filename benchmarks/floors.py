@@ -1,0 +1,224 @@
+"""Each hot path against a floor written beside it, timed side by side in one run.
+
+    python benchmarks/floors.py [--quick] [--only NAME] [--output FILE]
+    paramres bench --floors [--quick] [--output FILE]
+
+Every module ``benchmarks/floor_*.py`` defines ``scenes(quick: bool) -> list[dict]``; a scene has
+
+``name``
+    what is timed (unique over all modules);
+``target``
+    the largest ratio ``ours / floor`` that passes;
+``ours``, ``floor``
+    zero-argument callables: the engine's path, and the best plain code written for the same job
+    in the benchmark module itself (no engine code in it);
+``note``
+    one line: what the floor is;
+
+and optionally ``kind`` (``"cpu"``, the default: CPU time of this process, or ``"wall"``: wall
+time, for scenes that run a subprocess) and ``baseline`` (seconds per call of the same job in the
+previous release, from ``benchmarks/results.json``: the table shows ``ours / baseline`` beside
+the ratio, so that nothing gets slower unnoticed -- measured on another day, so the load of the
+machine differs; the load of this run is printed).
+
+The two callables are timed **alternately** (ours, floor, ours, floor, ...), each sample a batch
+long enough for the clock, so that the drifts of a shared machine fall on both; the ratio is that
+of the medians.  Each callable is called once before timing (warm caches: compiled forms,
+imports).  The table printed has one row per scene with both medians, the ratio, the target and
+``pass``/``FAIL``; :func:`run` returns the same as a JSON-ready dict (``--output`` writes it).
+"""
+
+from __future__ import annotations
+
+import argparse
+import datetime
+import importlib.util
+import json
+import os
+import platform
+import statistics
+import sys
+import time
+from pathlib import Path
+
+__all__ = ["discover", "measure", "run", "render", "main"]
+
+HERE = Path(__file__).resolve().parent
+
+
+def discover(only: str | None = None) -> list:
+    """The ``floor_*`` modules of this directory (loaded from their files), sorted by name."""
+    mods = []
+    root = str(HERE.parent)
+    if root not in sys.path:  # the engine's packages, when run as a script from a checkout
+        sys.path.insert(0, root)
+    for path in sorted(HERE.glob("floor_*.py")):
+        if only and only not in path.stem:
+            continue
+        spec = importlib.util.spec_from_file_location(f"_paramres_{path.stem}", path)
+        mod = importlib.util.module_from_spec(spec)
+        spec.loader.exec_module(mod)
+        mods.append(mod)
+    return mods
+
+
+def _clock(kind: str):
+    return time.perf_counter if kind == "wall" else time.process_time
+
+
+def _batch(fn, clock, min_time: float) -> int:
+    """Calls per sample so that one sample lasts about ``min_time``."""
+    t = clock()
+    fn()
+    dt = clock() - t
+    if dt <= 0:
+        dt = 1e-7
+    return max(1, min(10_000, int(min_time / dt)))
+
+
+def measure(ours, floor, *, samples: int = 9, kind: str = "cpu", min_time: float = 0.02):
+    """Medians (seconds per call) of ``ours`` and ``floor``, timed alternately."""
+    clock = _clock(kind)
+    ours()
+    floor()  # warm
+    k_ours = _batch(ours, clock, min_time)
+    k_floor = _batch(floor, clock, min_time)
+    t_ours, t_floor = [], []
+    for _ in range(samples):
+        for fn, k, out in ((ours, k_ours, t_ours), (floor, k_floor, t_floor)):
+            t = clock()
+            for _ in range(k):
+                fn()
+            out.append((clock() - t) / k)
+    return statistics.median(t_ours), statistics.median(t_floor)
+
+
+def _machine() -> dict:
+    import flint
+    import mpmath
+    import numpy
+
+    cpu = platform.processor() or platform.machine()
+    try:
+        for line in Path("/proc/cpuinfo").read_text().splitlines():
+            if line.startswith("model name"):
+                cpu = line.split(":", 1)[1].strip()
+                break
+    except OSError:
+        pass
+    return {
+        "cpu": cpu,
+        "cores": os.cpu_count(),
+        "load": round(os.getloadavg()[0], 1) if hasattr(os, "getloadavg") else None,
+        "python": platform.python_version(),
+        "numpy": numpy.__version__,
+        "mpmath": mpmath.__version__,
+        "python-flint": flint.__version__,
+    }
+
+
+def run(quick: bool = False, only: str | None = None, progress=None) -> dict:
+    """Every scene of every ``floor_*`` module, measured; a JSON-ready dict."""
+    t0 = time.perf_counter()
+    scenes = []
+    mods = discover(only)
+    for mod in mods:
+        for sc in mod.scenes(quick):
+            scenes.append((mod.__name__.removeprefix("_paramres_"), sc))
+    rows = []
+    items = progress(scenes) if progress else scenes
+    for module, sc in items:
+        kind = sc.get("kind", "cpu")
+        ours_s, floor_s = measure(
+            sc["ours"],
+            sc["floor"],
+            samples=5 if quick else 9,
+            kind=kind,
+            min_time=0.01 if quick else 0.03,
+        )
+        ratio = ours_s / floor_s
+        rows.append(
+            {
+                "module": module,
+                "name": sc["name"],
+                "ours_seconds": ours_s,
+                "floor_seconds": floor_s,
+                "ratio": ratio,
+                "target": sc["target"],
+                "passed": ratio <= sc["target"],
+                "clock": kind,
+                "note": sc.get("note", ""),
+                "baseline_seconds": sc.get("baseline"),
+                "vs_previous": None if not sc.get("baseline") else ours_s / sc["baseline"],
+                **({"extra": sc["extra"]()} if callable(sc.get("extra")) else {}),
+            }
+        )
+    notes = []
+    for mod in mods:  # a module may sum up its own rows (e.g. how time grows with digits)
+        if hasattr(mod, "summary"):
+            name = mod.__name__.removeprefix("_paramres_")
+            notes += mod.summary([r for r in rows if r["module"] == name])
+    return {
+        "generated_by": "generated by paramres bench --floors -- do not edit",
+        "notes": notes,
+        "date": datetime.datetime.now(datetime.timezone.utc).strftime("%Y-%m-%d %H:%M UTC"),
+        "machine": _machine(),
+        "quick": quick,
+        "seconds": time.perf_counter() - t0,
+        "time_unit": "seconds per call, median of alternate samples",
+        "scenes": rows,
+    }
+
+
+def _fmt_time(s: float) -> str:
+    for unit, f in (("s", 1), ("ms", 1e-3), ("us", 1e-6)):
+        if s >= f:
+            return f"{s / f:.3g} {unit}"
+    return f"{s / 1e-9:.3g} ns"
+
+
+def render(doc: dict) -> str:
+    """The table of ratios, one line per scene."""
+    m = doc["machine"]
+    head = (
+        f"paramres floors{' --quick' if doc['quick'] else ''}: {doc['date']}, {m['cpu']}, "
+        f"{m['cores']} cores (load {m['load']}), Python {m['python']}; "
+        f"{doc['seconds']:.0f} s\n"
+        "ours and the floor timed alternately; medians per call (CPU time unless marked wall)\n"
+    )
+    w = max([len(r["name"]) for r in doc["scenes"]] + [5])
+    lines = [
+        f"{'scene':<{w}}  {'ours':>10}  {'floor':>10}  {'ratio':>6}  {'target':>6}  result"
+        "   vs previous"
+    ]
+    for r in doc["scenes"]:
+        mark = " (wall)" if r["clock"] == "wall" else ""
+        lines.append(
+            f"{r['name']:<{w}}  {_fmt_time(r['ours_seconds']):>10}  "
+            f"{_fmt_time(r['floor_seconds']):>10}  {r['ratio']:>6.2f}  {r['target']:>6.2f}  "
+            f"{'pass' if r['passed'] else 'FAIL'}{mark:7}"
+            + ("" if r.get("vs_previous") is None else f"  {r['vs_previous']:.2f}")
+        )
+    failed = sum(not r["passed"] for r in doc["scenes"])
+    tail = f"\n{len(doc['scenes']) - failed} of {len(doc['scenes'])} scenes within target\n"
+    tail += "".join(f"{line}\n" for line in doc.get("notes", []))
+    return head + "\n".join(lines) + tail
+
+
+def main(argv=None) -> int:
+    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    ap.add_argument("--quick", action="store_true")
+    ap.add_argument("--only", help="only the floor_* modules whose name contains this")
+    ap.add_argument("--output", help="write the JSON here")
+    a = ap.parse_args(argv)
+    doc = run(a.quick, a.only)
+    print(render(doc), end="")
+    if a.output:
+        tmp = Path(a.output).with_suffix(".tmp")
+        tmp.write_text(json.dumps(doc, indent=2) + "\n")
+        os.replace(tmp, a.output)
+    return 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())

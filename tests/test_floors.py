@@ -1,0 +1,92 @@
+"""The floor benchmarks (``benchmarks/floors.py``, ``paramres bench --floors``): the runner's
+mechanics on made-up scenes, the scene modules' format, and the certified floor itself as an
+independent computation of the edges (a plain arb interval Newton written in the benchmark,
+compared with :func:`verify.solve.boundary` to all 60 digits)."""
+
+from __future__ import annotations
+
+import importlib.util
+from fractions import Fraction
+from pathlib import Path
+
+import mpmath
+import pytest
+from flint import arb, ctx
+
+from reports.cli import main
+from verify.solve import boundary
+
+BENCH = Path(__file__).resolve().parent.parent / "benchmarks"
+
+
+def _load(name):
+    spec = importlib.util.spec_from_file_location(f"_test_{name}", BENCH / f"{name}.py")
+    mod = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(mod)
+    return mod
+
+
+def test_measure_times_both_and_render_marks_failures():
+    floors = _load("floors")
+    calls = []
+    ours, floor = floors.measure(
+        lambda: calls.append("o"), lambda: calls.append("f"), samples=3, min_time=0.0
+    )
+    assert ours >= 0 and floor >= 0
+    # alternate: after the warm-up and the batch sizing, the samples interleave
+    assert "".join(calls).endswith("ofofof")
+    doc = {
+        "date": "d",
+        "machine": {"cpu": "c", "cores": 2, "load": 1.0, "python": "3"},
+        "quick": True,
+        "seconds": 1.0,
+        "scenes": [
+            {
+                "name": "a",
+                "ours_seconds": 2e-3,
+                "floor_seconds": 1e-3,
+                "ratio": 2.0,
+                "target": 1.5,
+                "passed": False,
+                "clock": "cpu",
+            },
+            {
+                "name": "b",
+                "ours_seconds": 1e-6,
+                "floor_seconds": 1e-6,
+                "ratio": 1.0,
+                "target": 1.5,
+                "passed": True,
+                "clock": "wall",
+            },
+        ],
+    }
+    text = floors.render(doc)
+    assert "FAIL" in text and "pass (wall)" in text and "1 of 2 scenes within target" in text
+
+
+@pytest.mark.parametrize("name", sorted(p.stem for p in BENCH.glob("floor_*.py")))
+def test_scene_modules_follow_the_format(name):
+    scenes = _load(name).scenes(True)
+    assert scenes
+    for sc in scenes:
+        assert {"name", "target", "ours", "floor", "note"} <= set(sc)
+        assert callable(sc["ours"]) and callable(sc["floor"]) and sc["target"] > 0
+
+
+@pytest.mark.parametrize("digits", [15, 60, 300])
+def test_the_certified_floor_encloses_the_engines_edges(digits):
+    fc = _load("floor_certified")
+    lo, hi = sorted(fc.floor_edges(Fraction(3, 10), digits), key=lambda b: float(b.mid()))
+    b = boundary(3, "3/10", digits=digits)
+    with mpmath.workdps(digits + 20), ctx.workprec(4 * digits + 100):
+        for ball, val, rad in ((lo, b.lower, b.radii[0]), (hi, b.upper, b.radii[1])):
+            # the engine's ball and the floor's ball overlap: both contain the exact edge
+            mine = arb(mpmath.nstr(val, digits + 15), mpmath.nstr(rad, 5))
+            assert mine.overlaps(ball)
+            assert mine.rad() < arb(10) ** (-digits) and ball.rad() < arb(10) ** (-digits)
+
+
+def test_floors_flag_refuses_plot(capsys):
+    assert main(["bench", "--floors", "--plot", "x.pdf"]) == 2
+    assert "paramres: error:" in capsys.readouterr().err

@@ -1,0 +1,70 @@
+"""The stored compilations of the derived forms, and what they buy: numeric commands without
+sympy.
+
+Reference for the stored texts: the derivation itself (:func:`verify.generate_forms.build`
+derives every entry again with sympy from :mod:`analytic`); the texts must be identical, and the
+function loaded from a text must give the same numbers as the one compiled from the derivation.
+"""
+
+from __future__ import annotations
+
+import os
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+from flint import arb, ctx
+
+from verify import derived, generate_forms
+from verify.forms_generated import SOURCES
+
+ROOT = Path(__file__).resolve().parent.parent
+
+
+def test_stored_texts_are_what_the_derivation_gives():
+    fresh = generate_forms.build()
+    assert sorted(fresh) == sorted(SOURCES)
+    changed = [k for k in fresh if fresh[k] != SOURCES[k]]
+    assert changed == [], "run python -m verify.generate_forms"
+
+
+def test_a_stored_function_computes_what_the_derived_one_does():
+    lazy = derived.edge_equation(-1)
+    stored = lazy.compiled("arb", (0, 1))
+    fresh = lazy.real.compiled("arb", (0, 1))
+    with ctx.workprec(200):
+        args = (arb("0.3"), 3 * arb.pi() / 2, -1, 1, arb("0.41"), arb("0.15"))
+        for a, b in zip(stored(*args), fresh(*args), strict=True):
+            assert a.overlaps(b) and abs(a - b) < arb(2) ** -190
+
+
+NUMERIC = [
+    ["boundary", "--order", "3", "--m", "0.3"],
+    ["boundary", "--order", "3", "--m", "0.3", "--Q", "7"],
+    ["table", "--orders", "1-2", "--m", "0.1:0.2:0.1", "--digits", "20"],
+    ["multipliers", "--T", "1.45", "--m", "0.3"],
+]
+
+
+@pytest.mark.parametrize("argv", NUMERIC, ids=lambda a: " ".join(a[:3]))
+def test_numeric_commands_do_not_import_sympy(argv, tmp_path):
+    code = (
+        "import sys\n"
+        "from reports.cli import main\n"
+        "status = main(sys.argv[1:])\n"
+        "print('sympy' in sys.modules, status)\n"
+    )
+    env = dict(os.environ, PARAMRES_CACHE_DIR=str(tmp_path / "cache"))
+    env.pop("PARAMRES_NO_CACHE", None)
+    for _ in range(2):  # the first run fills whatever cache it uses; the second is warm
+        proc = subprocess.run(
+            [sys.executable, "-c", code, *argv],
+            cwd=ROOT,
+            env=env,
+            capture_output=True,
+            text=True,
+            timeout=600,
+        )
+        assert proc.returncode == 0, proc.stderr
+    assert proc.stdout.strip().splitlines()[-1] == "False 0"

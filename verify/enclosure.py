@@ -1,0 +1,143 @@
+"""From proven balls of the unknown to the result: parameters at the working precision, the
+accuracy each unknown needs, and :func:`edges_result`, which turns the two enclosed roots into a
+:class:`verify.result.Boundary` (``T/T0`` and the offsets as balls, every radius proven)."""
+
+from __future__ import annotations
+
+import math
+from functools import lru_cache
+
+from flint import arb, ctx
+
+from .certify import CertificationError, to_mpf, upper_mpf
+from .result import Boundary
+
+__all__ = [
+    "AtPrecision",
+    "sgn_of",
+    "theta_scale",
+    "theta_floor",
+    "edges_result",
+    "no_interval",
+]
+
+
+class AtPrecision:
+    """Numbers recomputed for every working precision (``flint.ctx.prec``), cached."""
+
+    def __init__(self, make, min_prec: int = 0):
+        self._make = make
+        self._cache: dict[int, object] = {}
+        self._min = min_prec  # e.g. what a depth range needs to keep 1 - m
+
+    def __call__(self):
+        prec = ctx.prec
+        val = self._cache.get(prec)
+        if val is None:
+            with ctx.workprec(max(prec, self._min) + 12):
+                val = self._make()
+            self._cache[prec] = val
+        return val
+
+
+def sgn_of(n: int) -> int:
+    """``sin(n pi/2)`` for odd ``n``, ``cos(n pi/2)`` for even ``n`` (exact)."""
+    return (1 if n % 4 == 1 else -1) if n % 2 else (1 if n % 4 == 0 else -1)
+
+
+def theta_scale(theta: float, n: int, bits: int):
+    """What ``theta`` must be accurate relative to: itself (for the offset ``delta``) and
+    ``x = n pi/2 + theta`` (for ``T``; small for the lower edge of order 1 as ``m -> 1``)."""
+    return max(min(abs(theta), abs(n * math.pi / 2 + theta)), theta_floor(bits, n))
+
+
+@lru_cache(maxsize=256)
+def theta_floor(bits: int, n: int):
+    """Absolute scale for a ``theta`` that may be exactly zero (closings): ``2**-max(2 bits,
+    200)`` of about ``n pi/2`` (``3n/2``, exactly), an exact ``arb`` (a float would underflow to
+    zero above about 160 digits, and the enclosure of a zero ``theta`` would never be small enough
+    relative to nothing); above it ``theta`` (and the offset ``delta``) is given to full relative
+    accuracy."""
+    return arb((3 * n, -max(2 * bits, 200) - 1))
+
+
+def edges_result(
+    req,
+    method,
+    th_lo,
+    th_hi,
+    P,
+    bits,
+    regime,
+    prec,
+    notes=(),
+    theta=True,
+    certified=True,
+    ys=None,
+) -> Boundary:
+    """Turn two ``theta`` (or ``zeta``) balls into the result: ``T/T0`` and offsets as balls,
+    midpoints returned, radius the largest proven error.  ``ys`` (balls of ``y = theta + pi/2``
+    for the two edges, near ``m = 1``; ``None`` to use ``theta``) give ``T`` from ``x = y + (n -
+    1) pi/2`` and the offset from ``theta = y - pi/2``, each without cancellation."""
+    n = req.order
+    with ctx.workprec(prec):
+        p = P()
+        if theta and ys is not None:
+            pi = arb.pi()
+            half = arb(n) / 2
+            Ts = [(y + (n - 1) * pi / 2) / (pi * p.w) for y in ys]
+            ds = [(y - pi / 2) / (pi * p.w) + half * p.dinv for y in ys]
+        elif theta:
+            pi = arb.pi()
+            half = arb(n) / 2
+            Ts = [(half + th / pi) / p.w for th in (th_lo, th_hi)]
+            ds = [th / (pi * p.w) + half * p.dinv for th in (th_lo, th_hi)]
+        else:
+            pi = arb.pi()
+            Ts = [2 * p.Q * z / pi for z in (th_lo, th_hi)]
+            ds = [T - arb(n) / (2 * p.w0) for T in Ts]
+        rad = max(x.rad() for x in Ts + ds)
+        radii = tuple(upper_mpf(arb(x.rad())) for x in Ts + ds)
+        for T in Ts:
+            if not T.rad() <= T.abs_lower() * arb(2) ** (-bits):  # pragma: no cover - guard
+                raise CertificationError(f"enclosure of T too wide: {T}")
+        vals = [to_mpf(x) for x in Ts + ds]
+        encl = [(to_mpf(arb(x.lower())), to_mpf(arb(x.upper()))) for x in Ts]
+        radius = upper_mpf(arb(rad))
+    return Boundary(
+        order=n,
+        m=req.m,
+        Q=req.Q,
+        damping=req.damping,
+        digits=req.digits,
+        method=method,
+        exists=True,
+        lower=vals[0],
+        upper=vals[1],
+        delta_lower=vals[2],
+        delta_upper=vals[3],
+        radius=radius,
+        lower_enclosure=encl[0],
+        upper_enclosure=encl[1],
+        certified=certified,
+        regime=regime,
+        notes=tuple(notes),
+        radii=radii,
+        system=req.system,
+    )
+
+
+def no_interval(req, method, regime, notes=(), certified=True) -> Boundary:
+    return Boundary(
+        order=req.order,
+        m=req.m,
+        Q=req.Q,
+        damping=req.damping,
+        digits=req.digits,
+        method=method,
+        exists=False,
+        certified=certified,
+        regime=regime,
+        notes=tuple(notes),
+        system=req.system,
+    )

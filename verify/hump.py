@@ -1,0 +1,720 @@
+"""The certified edges with friction: the instability indicator as a hump on a proven bracket.
+
+**Normal form** (paper model; exact model with both halves under-damped): ``D(theta) = R(theta) -
+sin^2(theta)`` (:func:`verify.derived.indicator`) is positive exactly inside the interval.  ``D`` is
+at most its friction-free value ``D0`` (same ``r``, ``beta``), which is negative outside the two
+undamped roots ``[a, b]``; so the interval lies in ``[a, b]``.  There ``D`` is maximised (root of
+``D'``); no interval if the maximum is ``<= 0``, else the edges are the zeros of ``D`` left and
+right of the maximiser, each proven by interval Newton.  The *shape* -- ``D < 0`` on ``[a,
+lower)``, ``D > 0`` between the edges, ``D < 0`` on ``(upper, b]`` -- is proven too
+(:func:`verify.certify.prove_sign` on sub-intervals, with monotone neighbourhoods of the edges), so
+the two zeros are the edges and nothing in between is missed.  Non-existence is proven the same
+way (``D < 0`` on all of ``[a, b]``).
+
+**Trace form** (exact model, a half critically or over-damped, or half 1 within
+:data:`verify.params.NEAR_CRITICAL` of it): ``D(zeta) = sigma (2 C1 C2 - kappa S1 S2) - 2 cosh(2
+zeta)`` in ``zeta = gamma T/2`` (:func:`verify.derived.trace_indicator`), on the window of the
+order found from the phase ``Phi`` (see :func:`trace_phase`); inside it the same
+maximise-and-bracket scheme.
+
+The float stage of one point is scalar (:func:`verify.float_stage.normal_float_stage`); the
+range versions (:func:`hump_box`, ``m_box=``) serve :mod:`verify.existence`.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable
+from dataclasses import dataclass
+from fractions import Fraction
+from functools import partial
+
+from flint import arb, ctx
+
+from analytic.system import PAPER
+
+from .certify import (
+    CertificationError,
+    Jet,
+    ball,
+    bits_for_digits,
+    certified_root,
+    prove_sign,
+    quick_root,
+)
+from .derived import (
+    backend,
+    edge_equation,
+    indicator,
+    near_one_forms,
+    order1_forms,
+    trace_indicator,
+    trace_window,
+)
+from .enclosure import AtPrecision, edges_result, no_interval, sgn_of, theta_floor
+from .float_stage import normal_float_stage
+from .inputs import InputError
+from .params import NEAR_ONE, normal_params, trace_params
+from .request import Request
+from .result import Boundary
+
+__all__ = [
+    "hump_normal",
+    "hump_box",
+    "hump_trace",
+    "trace_phase",
+    "prove_no_window",
+    "prove_negative",
+    "depth_ball",
+    "box_prec",
+    "normal_damped",
+    "trace_damped",
+]
+
+_ARB = backend("arb")
+_MATH = backend("math")
+
+
+@dataclass
+class _Hump:
+    """Arb functions ``D``, ``D'``, ``D''`` of one variable, a bracket ``[a, b]`` on which the
+    interval must lie (``D < 0`` proven at both ends and outside by the caller), and the float
+    stage: maximiser ``top`` (``dtop = D(top)``) and edges ``lo``, ``hi`` (NaN if none)."""
+
+    D: Callable
+    dD: Callable
+    d2D: Callable
+    a: float
+    b: float
+    top: float
+    dtop: float
+    lo: float
+    hi: float
+    floor: float
+    #: T and the offset are proportional to (variable + shift) for these shifts: the accuracy of
+    #: the variable is measured relative to the smallest of them
+    shifts: tuple = (0.0,)
+    variable: str = "theta"  # or "y" = theta + pi/2 (near m = 1)
+    #: for a range of depths (:func:`hump_box`): the hump at its middle depth
+    point: object = None
+
+
+def _prove_shape(h: _Hump, lo_root, hi_root) -> bool:
+    """``D < 0`` on ``[a, lower)``, ``> 0`` on ``(lower, upper)``, ``< 0`` on ``(upper, b]``."""
+    e1, e2 = float(lo_root.ball.mid()), float(hi_root.ball.mid())
+    top_prec = max(256, 2 * max(lo_root.prec, hi_root.prec))
+    precs = [64]
+    while precs[-1] < top_prec:
+        precs.append(2 * precs[-1])
+    for prec in precs:
+        ok = True
+        with ctx.workprec(prec):
+            # monotone neighbourhoods Y1, Y2 of the two zeros
+            ys = []
+            for e, root, sign in ((e1, lo_root, 1), (e2, hi_root, -1)):
+                size = min(abs(e + sh) for sh in h.shifts)
+                gap = min(e2 - e1, e1 - h.a, h.b - e2)
+                rho = max(gap / 4, min(size * 2.0**-40, gap / 2), 1e-300)
+                found = None
+                for _ in range(80):
+                    Y = arb(root.ball.mid(), arb(rho).abs_upper())
+                    Y = arb(Y.mid(), max(Y.rad(), (root.ball.rad() * 2)))
+                    lo_end, hi_end = ball(Y.lower()), ball(Y.upper())
+                    if (
+                        sign * h.dD(Y) > 0
+                        and sign * h.D(lo_end) < 0
+                        and sign * h.D(hi_end) > 0
+                        and Y.contains(root.ball)
+                    ):
+                        found = (lo_end, hi_end)
+                        break
+                    rho /= 4
+                if found is None:
+                    ok = False
+                    break
+                ys.append(found)
+            if not ok:
+                continue
+            (y1a, y1b), (y2a, y2b) = ys
+            if not (y1b < y2a):
+                ok = False
+                continue
+            ok = (
+                prove_sign(h.D, h.dD, h.a, y1a, -1, prec=prec)
+                and prove_sign(h.D, h.dD, y1b, y2a, 1, prec=prec)
+                and prove_sign(h.D, h.dD, y2b, h.b, -1, prec=prec)
+            )
+        if ok:
+            return True
+    return False
+
+
+def prove_negative(
+    h: _Hump, bits: int = 64, max_bits: int | None = None, budget: int = 400
+) -> bool:
+    """``D < 0`` on all of ``[a, b]`` (no interval).
+
+    First by bisection at low precision; near a threshold, where the maximum of ``D`` is a tiny
+    negative number, by Taylor's bound around the maximiser ``t``: on a ball ``X`` where
+    ``D'' < 0``, ``D <= D(t) + D'(t)^2 / (2 |sup D''(X)|)``, and by bisection outside ``X``.
+    """
+    if prove_sign(h.D, h.dD, h.a, h.b, -1, prec=64, budget=budget):
+        return True
+    start = h.top if math.isfinite(h.top) else 0.5 * (h.a + h.b)
+    try:
+        t = certified_root(
+            lambda x: -h.dD(x),
+            lambda x: -h.d2D(x),
+            start,
+            bits=max(bits, 64),
+            floor=h.floor or 1e-300,
+            bracket=(h.a, h.b),
+            max_bits=max_bits or 4 * max(bits, 64) + 336,
+        ).ball.mid()
+    except CertificationError:
+        return False
+    prec = 64
+    while prec <= 8 * max(bits, 64) + 256:
+        with ctx.workprec(prec):
+            Dt, D1t = h.D(t), h.dD(t)
+            if Dt > 0:
+                return False
+            if Dt < 0:
+                rho = (h.b - h.a) / 4
+                for _ in range(60):
+                    lo, hi = max(float(t) - rho, h.a), min(float(t) + rho, h.b)
+                    X = arb(ball(0.5 * (lo + hi)), 0.5 * (hi - lo) * (1 + 2.0**-40))
+                    d2 = h.d2D(X)
+                    if d2 < 0:
+                        bound = Dt + D1t * D1t / (2 * abs(d2.upper()))
+                        if bound < 0:
+                            if (
+                                lo <= h.a
+                                or prove_sign(h.D, h.dD, h.a, lo, -1, prec=64, budget=10 * budget)
+                            ) and (
+                                hi >= h.b
+                                or prove_sign(h.D, h.dD, hi, h.b, -1, prec=64, budget=10 * budget)
+                            ):
+                                return True
+                            break
+                    rho /= 4
+        prec *= 2
+    return False
+
+
+def _solve_hump(req: Request, h: _Hump, bits: int):
+    """Decide existence and enclose the two zeros.
+
+    Returns ``(exists, lo_root, hi_root, shape_ok)``."""
+    # existence: a point with D > 0, or D < 0 everywhere on [a, b]
+    top = h.top
+    if math.isfinite(top) and h.dtop > 0:
+        for prec in (64, 128, 256, 512, 1024):
+            with ctx.workprec(prec):
+                if h.D(ball(top)) > 0:
+                    break
+        else:
+            top = None
+    else:
+        top = None
+    if top is None:
+        if prove_negative(h, bits):
+            return False, None, None, True
+        # very close to a threshold: refine the maximiser and look again
+        try:
+            t_root = certified_root(
+                lambda x: -h.dD(x),
+                lambda x: -h.d2D(x),
+                h.top if math.isfinite(h.top) else 0.5 * (h.a + h.b),
+                bits=bits,
+                floor=h.floor or 1e-300,
+                bracket=(h.a, h.b),
+            )
+        except CertificationError as exc:
+            raise CertificationError(
+                "cannot decide whether the interval exists: the depth is too close to a threshold"
+            ) from exc
+        with ctx.workprec(t_root.prec):
+            val = h.D(t_root.ball.mid())
+        if not val > 0:
+            raise CertificationError(
+                "cannot decide whether the interval exists: the depth is too close to a threshold "
+                f"(max D = {val})"
+            )
+        top = float(t_root.ball.mid())
+        lo0, hi0 = 0.5 * (h.a + top), 0.5 * (top + h.b)
+    else:
+        lo0 = h.lo if math.isfinite(h.lo) else 0.5 * (h.a + top)
+        hi0 = h.hi if math.isfinite(h.hi) else 0.5 * (top + h.b)
+
+    def scale(t):
+        return max(min(abs(t + sh) for sh in h.shifts), h.floor, 1e-300)
+
+    neg = lambda t: -h.D(t)  # noqa: E731
+    dneg = lambda t: -h.dD(t)  # noqa: E731
+    roots = []
+    for F, dF, x0, (a, b), fine in (
+        (h.D, h.dD, lo0, (h.a, top), math.isfinite(h.lo)),
+        (neg, dneg, hi0, (top, h.b), math.isfinite(h.hi)),
+    ):
+        root = None
+        if fine:  # a float edge from the float stage: the fast path (None where it fails)
+            root = quick_root(
+                lambda t, F=F, dF=dF: (F(t), dF(t)),
+                F,
+                dF,
+                x0,
+                bits=bits,
+                floor=h.floor,
+                bracket=(ball(a), ball(b)),
+                scale=scale,
+            )
+        if root is None:
+            root = certified_root(F, dF, x0, bits=bits, floor=h.floor, bracket=(a, b), scale=scale)
+        roots.append(root)
+    lo_root, hi_root = roots
+    return True, lo_root, hi_root, _prove_shape(h, lo_root, hi_root)
+
+
+def depth_ball(m_box: tuple[Fraction, Fraction]) -> arb:
+    """The ball (rounded outward; at the working precision, or more where ``1 - m`` needs it)
+    that holds every depth of the closed range ``m_box = (lo, hi)`` of exact rationals."""
+    lo, hi = m_box
+    with ctx.workprec(max(ctx.prec, box_prec(m_box))):
+        a = arb(lo.numerator) / lo.denominator
+        b = arb(hi.numerator) / hi.denominator
+        return a.union(b)
+
+
+def box_prec(m_box) -> int:
+    """Bits that keep ``1 - m`` and the width of a depth range (dyadic ends)."""
+    lo, hi = m_box
+    return 32 + max(lo.denominator.bit_length(), hi.denominator.bit_length(), 32)
+
+
+def _params_at(m, Q, damping, m_box, make):
+    """Parameters as balls: at the exact depth ``m``, or for every depth of ``m_box``."""
+    if m_box is None:
+        return make(m, Q, damping, _ARB) if damping is not None else make(m, Q, _ARB)
+    M = depth_ball(m_box)
+    Qb = arb(Q.numerator) / Q.denominator
+    return make(M, Qb, damping, _ARB) if damping is not None else make(M, Qb, _ARB)
+
+
+def hump_normal(
+    n: int,
+    m: Fraction,
+    Q: Fraction,
+    damping: str,
+    bits: int,
+    m_box=None,
+    float_stage=None,
+    jet: bool = False,
+    system=PAPER,
+):
+    """The friction problem in the normal form, for order ``n`` at exact ``m``, ``Q``: the
+    :class:`_Hump` (arb functions, proven bracket, float stage) and the parameters at precision.
+
+    With ``m_box = (lo, hi)`` (exact rationals around ``m``) the arb functions and the bracket hold
+    for every depth of that range at once (the parameters are balls that contain them all); the
+    float stage is that of ``m`` (``float_stage``: computed already, a dict as
+    :func:`verify.float_stage.normal_float_stage` returns, plus ``"bm"``)."""
+    parity = -1 if n % 2 else 1  # the multiplier (analytic.stitching.Parity)
+    if float_stage is None:
+        # float parameters from the exact rationals (right also next to critical damping)
+        pm = normal_params(m, Q, damping, _MATH, system)
+        fl = normal_float_stage(n, pm)
+        bm = pm.bm
+    else:
+        fl, bm = float_stage, float_stage["bm"]
+    form = indicator(parity)
+    D0, D1, D2 = (form.compiled("arb", k) for k in (0, 1, 2))
+    if jet and not system.is_paper:  # pragma: no cover - existence is the paper's for now
+        raise InputError(f"proven existence is derived for the paper's system, not {system.label}")
+    if jet:  # parameters as jets in m over the range (for the mean-value form, hump_box)
+
+        def jets():
+            Qb = arb(Q.numerator) / Q.denominator
+            return normal_params(Jet(depth_ball(m_box), 1), Jet(Qb), damping, _ARB)
+
+        P = AtPrecision(jets, box_prec(m_box))
+    else:
+        P = AtPrecision(
+            lambda: _params_at(m, Q, damping, m_box, partial(normal_params, system=system)),
+            box_prec(m_box) if m_box else 0,
+        )
+    C = AtPrecision(lambda: arb.pi() * n / 2)
+
+    def args():
+        p = P()
+        return (C(), p.r2, p.u, p.beta, p.g)
+
+    # the bracket: a little outside the undamped-form roots, proven outside both
+    E0 = edge_equation(parity).compiled("arb", 0)
+    sgn = sgn_of(n)
+    span = max(fl["b"] - fl["a"], 1e-300)
+    a = max(fl["a"] - max(span * 1e-6, abs(fl["a"]) * 1e-12, 1e-300), -math.pi / 2)
+    b = min(fl["b"] + max(span * 1e-6, abs(fl["b"]) * 1e-12, 1e-300), math.pi / 2)
+    if not jet:
+        with ctx.workprec(128):
+            p = P()
+            outside = all(E0(ball(a), C(), sgn, e, p.r, p.beta) < 0 for e in (1, -1)) and all(
+                E0(ball(b), C(), sgn, e, p.r, p.beta) > 0 for e in (1, -1)
+            )
+        if not outside:  # pragma: no cover - the float bracket is always this good
+            a, b = -math.pi / 2, math.pi / 2
+    if bm < NEAR_ONE:
+        return _hump_near_one(n, P, fl, b, C, E0, check=not jet), P
+    h = _Hump(
+        D=lambda t: D0(t, *args()),
+        dD=lambda t: D1(t, *args()),
+        d2D=lambda t: D2(t, *args()),
+        a=a,
+        b=b,
+        top=fl["top"],
+        dtop=fl["dtop"],
+        lo=fl["lo"],
+        hi=fl["hi"],
+        floor=theta_floor(bits, n),
+        shifts=(0.0, n * math.pi / 2),
+    )
+    return h, P
+
+
+def hump_box(n: int, lo: Fraction, hi: Fraction, Q: Fraction, damping: str, float_stage=None):
+    """The normal-form friction problem for every depth of ``[lo, hi]`` at once: ``D``, ``D'``,
+    ``D''`` (in ``theta``, or ``y`` near ``m = 1``) enclosed by the mean-value form in ``m``,
+    ``f(M) in f(mid) + f_m(M) (M - mid)``, with ``f_m`` from jets (:class:`verify.certify.Jet`)
+    over the ball ``M`` of the range -- far tighter than evaluating with ``M`` itself, where the
+    parameters' dependence on ``m`` is counted many times.  The bracket is the whole window
+    (rounded outward).  The float stage is that of the middle."""
+    mid = (lo + hi) / 2
+    if float_stage is None:
+        pm = normal_params(mid, Q, damping, _MATH)
+        float_stage = normal_float_stage(n, pm)
+        float_stage["bm"] = float(pm.bm)
+    # the middle as an exact ball: arb arithmetic instead of long rationals
+    hm, _ = hump_normal(n, mid, Q, damping, 64, m_box=(mid, mid), float_stage=float_stage)
+    hj, _ = hump_normal(n, mid, Q, damping, 64, m_box=(lo, hi), float_stage=float_stage, jet=True)
+
+    def dm():
+        return depth_ball((lo, hi)) - (arb(mid.numerator) / mid.denominator)
+
+    dM = AtPrecision(dm, box_prec((lo, hi)))
+
+    def mv(f0, f1):
+        def g(t):
+            v = f1(t)
+            slope = v.d if isinstance(v, Jet) else 0
+            return f0(t) + slope * dM()
+
+        return g
+
+    if hm.variable == "y":
+        a, b = 0.0, math.nextafter(math.pi, 4.0)
+    else:
+        a, b = math.nextafter(-math.pi / 2, -2.0), math.nextafter(math.pi / 2, 2.0)
+    return _Hump(
+        D=mv(hm.D, hj.D),
+        dD=mv(hm.dD, hj.dD),
+        d2D=mv(hm.d2D, hj.d2D),
+        a=a,
+        b=b,
+        top=hm.top,
+        dtop=hm.dtop,
+        lo=hm.lo,
+        hi=hm.hi,
+        floor=hm.floor,
+        shifts=hm.shifts,
+        variable=hm.variable,
+        point=hm,
+    )
+
+
+def _hump_near_one(n, P, fl, b, C, E0, check: bool = True) -> _Hump:
+    """Friction near ``m = 1`` (``1 - beta < NEAR_ONE``): the hump in ``y = theta + pi/2``, the
+    distance from the window's left end, where the lower edge goes as ``m -> 1``.  ``D`` is the
+    form whose terms are of the size of ``D``: :func:`verify.derived.order1_forms` in ``x = y``
+    (order 1; ``T`` is proportional to ``x``), :func:`verify.derived.near_one_forms` at ``theta = y
+    - pi/2`` otherwise.  The bracket is ``[0, b + pi/2]``: the interval lies in the window, and
+    ``D < 0`` at its left end."""
+    half = math.pi / 2
+    if n == 1:
+        form = order1_forms()[1]
+
+        def yargs():
+            p = P()
+            return (p.r2, p.u, p.beta, p.bm, p.g)
+
+        def at(y):
+            return y
+
+    else:
+        form = near_one_forms()[2]
+
+        def yargs():
+            p = P()
+            return (C(), p.u, p.bm, p.g)
+
+        def at(y):
+            return y - arb.pi() / 2
+
+    Y0, Y1, Y2 = (form.compiled("arb", k) for k in (0, 1, 2))
+    by = b + half
+    if check:
+        with ctx.workprec(128):
+            p = P()
+            thb = ball(by) - arb.pi() / 2
+            sgn = sgn_of(n)
+            if not all(E0(thb, C(), sgn, e, p.r, p.beta) > 0 for e in (1, -1)):  # pragma: no cover
+                by = math.pi
+
+    def shifted(v):
+        return v + half if math.isfinite(v) and v + half > 0 else math.nan
+
+    return _Hump(
+        D=lambda y: Y0(at(y), *yargs()),
+        dD=lambda y: Y1(at(y), *yargs()),
+        d2D=lambda y: Y2(at(y), *yargs()),
+        a=0.0,
+        b=by,
+        top=shifted(fl["top"]),
+        dtop=fl["dtop"],
+        lo=shifted(fl["lo"]),
+        hi=shifted(fl["hi"]),
+        floor=1e-300,
+        shifts=(-half, (n - 1) * half),  # theta = y - pi/2, x = y + (n - 1) pi/2
+        variable="y",
+    )
+
+
+def normal_damped(req: Request) -> Boundary:
+    bits = bits_for_digits(req.digits + 2)
+    h, P = hump_normal(req.order, req.m, req.Q, req.damping, bits, system=req.system)
+    regime = "normal form with friction"
+    exists, lo_root, hi_root, shape = _solve_hump(req, h, bits)
+    notes = (
+        []
+        if shape
+        else [
+            "the two edges are proven zeros of the indicator; that the indicator has no other sign "
+            "change in the window was not proven"
+        ]
+    )
+    if not exists:
+        return no_interval(req, "certified", regime, notes)
+    lo_ball, hi_ball, ys = lo_root.ball, hi_root.ball, None
+    if h.variable == "y":
+        ys = (lo_ball, hi_ball)
+    return edges_result(
+        req,
+        "certified",
+        lo_ball,
+        hi_ball,
+        P,
+        bits,
+        regime,
+        max(lo_root.prec, hi_root.prec),
+        notes,
+        certified=shape,
+        ys=ys,
+    )
+
+
+def hump_trace(
+    n: int,
+    m: Fraction,
+    Q: Fraction,
+    regimes: tuple[str, str],
+    m_box=None,
+    window=None,
+    system=PAPER,
+):
+    """The friction problem in the trace form (exact model, a half critically or over-damped):
+    the :class:`_Hump` in ``zeta`` on the proven window of order ``n``, and the parameters; or
+    ``(None, reason)`` if the order has no window.  ``m_box`` as for :func:`hump_normal` (the
+    regimes must be those of every depth in it)."""
+    from .grid import damped_trace, trace_window_ends
+
+    Tf = trace_params(m, Q, _MATH, system)
+    window = window or trace_window_ends(n, regimes, Tf)
+    if window is None:
+        why = (
+            "both halves are critically or over-damped: only order 1 can exist"
+            if regimes[1] != "under"
+            else "no window"
+        )
+        return None, why
+    form = trace_indicator(*regimes)
+    D0, D1, D2 = (form.compiled("arb", k) for k in (0, 1, 2))
+    P = AtPrecision(
+        lambda: _params_at(m, Q, None, m_box, partial(trace_params, system=system)),
+        box_prec(m_box) if m_box else 0,
+    )
+    sigma = -1 if n % 2 else 1
+
+    def args():
+        p = P()
+        return (sigma, p.kappa, p.nu1, p.nu2)
+
+    funcs = [lambda z, F=F: F(z, *args()) for F in (D0, D1, D2)]
+    if m_box is not None:  # the mean-value form in m (see hump_box), jets from the middle
+        Pm = AtPrecision(lambda: _params_at(m, Q, None, (m, m), trace_params), box_prec((m, m)))
+
+        def jets():
+            Qb = arb(Q.numerator) / Q.denominator
+            return trace_params(Jet(depth_ball(m_box), 1), Jet(Qb), _ARB)
+
+        Pj = AtPrecision(jets, box_prec(m_box))
+        dM = AtPrecision(
+            lambda: depth_ball(m_box) - arb(m.numerator) / m.denominator, box_prec(m_box)
+        )
+
+        def mv(F):
+            def g(z):
+                pm, pj = Pm(), Pj()
+                v = F(z, sigma, pj.kappa, pj.nu1, pj.nu2)
+                slope = v.d if isinstance(v, Jet) else 0
+                return F(z, sigma, pm.kappa, pm.nu1, pm.nu2) + slope * dM()
+
+            return g
+
+        funcs = [mv(F) for F in (D0, D1, D2)]
+
+    za, zb = window
+    if m_box is not None:  # the union of the windows at the two ends of the range
+        for x in m_box:
+            Tx = trace_params(x, Q, _MATH)
+            wx = trace_window_ends(n, regimes, Tx)
+            if wx is None and regimes[1] != "under":
+                continue  # the given window covers it
+            if wx is None:  # the window ends at the tail bound there: reach past it
+                ax = 2 - float(Tx.nu1)
+                if not ax > 0:
+                    return None, "no window at an end of the range"
+                zt = max(2 / ax, 1.0)
+                while (2 + abs(float(Tx.kappa)) * zt * zt) * math.exp(-ax * zt) >= 0.5:
+                    zt *= 1.25
+                wx = (za, zt)
+            za, zb = min(za, wx[0]), max(zb, wx[1])
+    widen = 1e-9 if m_box is None else 1e-3
+    za = za * (1 - widen)
+    zb = zb * (1 + widen)
+    if not _prove_window(n, regimes, P, za, zb, m_box, m, Q):  # pragma: no cover - guard
+        raise CertificationError(f"could not prove the window of order {n}: {za}, {zb}")
+    fl = damped_trace(n, regimes, Tf, (za, zb))
+    h = _Hump(
+        D=funcs[0],
+        dD=funcs[1],
+        d2D=funcs[2],
+        a=za,
+        b=zb,
+        top=fl["top"],
+        dtop=fl["dtop"],
+        lo=fl["lo"],
+        hi=fl["hi"],
+        floor=0.0,
+        # T = 2 Q zeta/pi and the offset T - n/(2 w0): accuracy relative to both
+        shifts=(0.0, -math.pi * n / (4 * float(Q) * Tf.w0)),
+    )
+    return h, P
+
+
+def trace_damped(req: Request, regimes) -> Boundary:
+    bits = bits_for_digits(req.digits + 2)
+    regime = f"trace form (half 1 {regimes[0]}, half 2 {regimes[1]})"
+    h, P = hump_trace(req.order, req.m, req.Q, regimes, system=req.system)
+    if h is None:
+        return no_interval(req, "certified", regime, (P,))
+    exists, lo_root, hi_root, shape = _solve_hump(req, h, bits)
+    notes = [] if shape else ["the shape of the indicator in the window was not proven"]
+    if not exists:
+        return no_interval(req, "certified", regime, notes)
+    return edges_result(
+        req,
+        "certified",
+        lo_root.ball,
+        hi_root.ball,
+        P,
+        bits,
+        regime,
+        max(lo_root.prec, hi_root.prec),
+        notes,
+        theta=False,
+        certified=shape,
+    )
+
+
+def _atan2(y, x):
+    """``atan2`` of balls or of jets (:class:`verify.certify.Jet`)."""
+    if isinstance(y, Jet) or isinstance(x, Jet):
+        y, x = Jet._of(y), Jet._of(x)
+        return Jet(arb.atan2(y.v, x.v), (x.v * y.d - y.v * x.d) / (x.v * x.v + y.v * y.v))
+    return arb.atan2(y, x)
+
+
+def trace_phase(regimes, P, z, m_box=None, m=None, Q=None) -> arb:
+    """The phase ``Phi(zeta)`` of the trace form (half 2 under-damped), as a ball; with
+    ``m_box`` (and its middle ``m``, and ``Q``) for every depth of the range, by the mean-value
+    form in ``m`` (jets) instead of ``P``."""
+    r1 = regimes[0]
+    win = trace_window(r1).compiled("arb", 0), trace_window(r1).compiled("arb", 1)
+    z = ball(z) if not isinstance(z, arb) else z
+
+    def phase(p):
+        C1 = win[0](z, 1, p.kappa, p.nu1, p.nu2)
+        S1 = win[1](z, 1, p.kappa, p.nu1, p.nu2)
+        return p.nu2 * z + _atan2(p.kappa * S1, 2 * p.nu2 * C1)
+
+    if m_box is None:
+        return phase(P())
+    with ctx.workprec(max(ctx.prec, box_prec(m_box))):
+        Qb = arb(Q.numerator) / Q.denominator
+        mid = phase(trace_params(m, Q, _ARB))
+        jet = phase(trace_params(Jet(depth_ball(m_box), 1), Jet(Qb), _ARB))
+        slope = jet.d if isinstance(jet, Jet) else 0
+        return mid + slope * (depth_ball(m_box) - arb(m.numerator) / m.denominator)
+
+
+def prove_no_window(n: int, regimes, P, ztail: float, m_box=None, m=None, Q=None) -> bool:
+    """Order ``n`` has no interval (half 2 under-damped): beyond ``ztail`` ``D < 0`` (the tail
+    bound of :func:`verify.grid.trace_window_ends`), and below it the phase stays under ``n pi -
+    pi/2`` (``Phi`` increases), so the order's window does not begin."""
+    if regimes[1] != "under":
+        return n > 1
+    with ctx.workprec(96):
+        p = P()
+        z2 = ball(ztail)
+        a = 2 - p.nu1
+        tail = (2 + abs(p.kappa) * z2 * z2) * (-a * z2).exp()
+        pi = arb.pi()
+        ph = trace_phase(regimes, P, z2, m_box, m, Q)
+        return bool(tail < 1 and z2 * a > 2 and ph < n * pi - pi / 2)
+
+
+def _prove_window(n, regimes, P, za, zb, m_box=None, m=None, Q=None) -> bool:
+    """The window ends enclose the order's window (and nothing of the same parity beyond it);
+    with ``m_box`` for every depth of that range (the phase by the mean-value form)."""
+    r1, r2 = regimes
+    with ctx.workprec(96):
+        p = P()
+        if r2 == "under":
+
+            def phi(z):
+                return trace_phase(regimes, P, ball(z), m_box, m, Q)
+
+            pi = arb.pi()
+            z2 = ball(zb)
+            a = 2 - p.nu1
+            tail = (2 + abs(p.kappa) * z2 * z2) * (-a * z2).exp()
+            beyond = bool(tail < 1 and z2 * a > 2) or bool(
+                phi(zb) > n * pi + pi / 2 and phi(zb) < (n + 1) * pi + pi / 2
+            )
+            return bool(phi(za) < n * pi - pi / 2 and phi(za) > (n - 1) * pi - pi / 2) and beyond
+        form = trace_indicator(*regimes).compiled("arb", 0)
+        z1 = ball(za)
+        P1 = form(z1, 1, p.kappa, p.nu1, p.nu2) + 2 * (2 * z1).cosh()
+        a = 2 - p.nu1 - p.nu2
+        z2 = ball(zb)
+        tail = abs(p.kappa) * z2 * z2 * (-a * z2).exp()
+        return bool(P1 > 0 and tail < 1 and z2 * a > 2)

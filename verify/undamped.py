@@ -1,0 +1,184 @@
+"""The certified edges without friction: one simple root per edge equation.
+
+The two per-edge equations ``sin(theta) + k r f(beta (n pi/2 + theta)) = 0``
+(:func:`verify.derived.edge_equation`; ``k = +-1`` picks the edge) each have exactly one root in
+``(-pi/2, pi/2)``, and it is simple (the window theorem, ``docs/theory.md``), also where the
+interval closes.  Each root is found by Halley's method in floats (:func:`float_edge`), refined by
+Newton on ball midpoints with the precision doubled every step and proven by interval Newton
+(:func:`verify.certify.quick_root`, with :func:`verify.certify.certified_root` behind it where the
+fast path does not succeed).  The lower edge is the smaller root.  No solver can reach another
+interval's edge: the window holds one root of each equation and the iteration is kept inside it.
+Near ``m = 1`` (``1 - beta <`` :data:`verify.params.NEAR_ONE`) the unknown is ``y = theta + pi/2``
+on the forms whose terms are of the size of the result (:func:`near_one_edge`).
+"""
+
+from __future__ import annotations
+
+import math
+from functools import cache
+
+from flint import arb, ctx
+
+from .certify import Root, ball, bits_for_digits, certified_root, quick_root
+from .derived import backend, edge_equation, near_one_forms, order1_forms
+from .enclosure import AtPrecision, edges_result, sgn_of, theta_floor, theta_scale
+from .float_stage import float_edge
+from .inputs import as_depth, as_order
+from .params import NEAR_ONE, exact_fraction, normal_params
+from .request import Request
+from .result import Boundary
+
+__all__ = ["undamped", "float_edges", "near_one_edge"]
+
+_ARB = backend("arb")
+_MATH = backend("math")
+
+
+@cache
+def _forms(odd: bool):
+    """The edge equation of one parity compiled: floats with two derivatives (the start), and
+    arb ``F``, ``F'`` and both at once (shared subexpressions)."""
+    form = edge_equation(-1 if odd else 1)  # the parity's multiplier (analytic.stitching.Parity)
+    return (
+        form.compiled("math", (0, 1, 2)),
+        form.compiled("arb", 0),
+        form.compiled("arb", 1),
+        form.compiled("arb", (0, 1)),
+    )
+
+
+def undamped(req: Request) -> Boundary:
+    """Both edges without friction (any member of the family), certified."""
+    n, bits = req.order, bits_for_digits(req.digits + 2)
+    f_math, f_arb, df_arb, fd_arb = _forms(n % 2 == 1)
+    pf = normal_params(req.m, None, "exact", _MATH, req.system)
+    P = AtPrecision(lambda: normal_params(req.m, None, "exact", _ARB, req.system))
+    C = AtPrecision(lambda: arb.pi() * n / 2)
+    sgn = sgn_of(n)
+    if pf.bm < NEAR_ONE:
+        ys = sorted(
+            (near_one_edge(n, eps, P, C, bits) for eps in (1, -1)),
+            key=lambda r: float(r.ball.mid()),
+        )
+        return edges_result(
+            req,
+            "certified",
+            None,
+            None,
+            P,
+            bits,
+            "per-edge equations",
+            max(r.prec for r in ys),
+            ys=tuple(r.ball for r in ys),
+        )
+    half = math.pi / 2
+    floor = theta_floor(bits, n)
+    window = (ball(-half), ball(half))
+    roots = []
+    for eps in (1, -1):
+        start = float_edge(f_math, n, eps, pf.r, pf.beta)
+
+        def F(t, eps=eps):
+            p = P()
+            return f_arb(t, C(), sgn, eps, p.r, p.beta)
+
+        def dF(t, eps=eps):
+            p = P()
+            return df_arb(t, C(), sgn, eps, p.r, p.beta)
+
+        def FD(t, eps=eps):
+            p = P()
+            return fd_arb(t, C(), sgn, eps, p.r, p.beta)
+
+        def scale(t):
+            return theta_scale(t, n, bits)
+
+        root = quick_root(FD, F, dF, start, bits=bits, floor=floor, bracket=window, scale=scale)
+        if root is None:
+            root = certified_root(
+                F, dF, start, bits=bits, floor=floor, bracket=(-half, half), scale=scale
+            )
+        roots.append(root)
+    lo_root, hi_root = sorted(roots, key=lambda rt: float(rt.ball.mid()))
+    return edges_result(
+        req,
+        "certified",
+        lo_root.ball,
+        hi_root.ball,
+        P,
+        bits,
+        "per-edge equations",
+        max(r.prec for r in roots),
+    )
+
+
+def near_one_edge(n: int, eps: int, P, C, bits: int) -> Root:
+    """One undamped edge for ``1 - beta < NEAR_ONE``, in ``y = theta + pi/2`` (the distance from
+    the window's left end, where an edge goes as ``m -> 1``) on the forms whose terms are of the
+    size of the result: :func:`verify.derived.order1_forms` in ``x = y`` for order 1, ``eps = +1``
+    (``T`` proportional to ``x -> 0``); :func:`verify.derived.near_one_forms` at ``theta = y -
+    pi/2`` otherwise.  Each has one simple root in ``(0, pi)`` (the window theorem)."""
+    half = math.pi / 2
+    if n == 1 and eps == 1:
+        f = order1_forms()[0]
+        f0, f1 = f.compiled("arb", 0), f.compiled("arb", 1)
+
+        def F(y):  # the form is positive at x = 0: negate for F(0) < 0 < F(pi)
+            p = P()
+            return -f0(y, p.u / (1 + p.r), p.beta, p.bm)
+
+        def dF(y):
+            p = P()
+            return -f1(y, p.u / (1 + p.r), p.beta, p.bm)
+
+    else:
+        f = near_one_forms()[0 if eps == 1 else 1]
+        f0, f1 = f.compiled("arb", 0), f.compiled("arb", 1)
+
+        def F(y):
+            p = P()
+            return f0(y - arb.pi() / 2, C(), p.r, p.u / (1 + p.r), p.bm)
+
+        def dF(y):
+            p = P()
+            return f1(y - arb.pi() / 2, C(), p.r, p.u / (1 + p.r), p.bm)
+
+    # start: bisection in floats on the sign (the forms are well scaled in y)
+    lo, hi = 0.0, math.pi
+    with ctx.workprec(64):
+        for _ in range(60):
+            mid = 0.5 * (lo + hi) if hi > 1e-3 or lo > 0 else hi / 16
+            v = F(ball(mid))
+            if v > 0:
+                hi = mid
+            elif v < 0:
+                lo = mid
+            else:
+                break
+            if hi - lo < 1e-6 * hi:
+                break
+    start = 0.5 * (lo + hi)
+    return certified_root(
+        F,
+        dF,
+        start,
+        bits=bits,
+        floor=1e-300,
+        bracket=(0.0, math.pi),
+        scale=lambda y: max(min(abs(y - half), abs(y + (n - 1) * half)), 1e-300),
+    )
+
+
+def float_edges(order, m) -> tuple[float, float]:
+    """Both undamped edges ``T/T0`` of order ``order`` at depth ``m`` in double precision, sorted:
+    the float stage of :func:`boundary` (safeguarded Halley on each edge equation), not certified.
+    Loses digits where ``1 - beta`` is small (``m`` near 1), where :func:`verify.grid.boundary_grid`
+    polishes."""
+    n = as_order(order)
+    mq = exact_fraction(as_depth(m))
+    f_math = _forms(n % 2 == 1)[0]
+    pf = normal_params(mq, None, "exact", _MATH)
+    Ts = sorted(
+        (n / 2 + float_edge(f_math, n, eps, pf.r, pf.beta) / math.pi) / pf.w for eps in (1, -1)
+    )
+    return Ts[0], Ts[1]
