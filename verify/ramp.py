@@ -39,7 +39,7 @@ import mpmath
 from flint import arb, ctx, fmpq
 
 from .certify import CertificationError, bits_for_digits, certified_root, to_mpf, upper_mpf
-from .inputs import InputError, as_depth, as_digits, as_number, as_order, as_system
+from .inputs import InputError, as_depth, as_digits, as_order, as_switch_time, as_system
 from .params import exact_fraction
 
 __all__ = [
@@ -54,25 +54,6 @@ __all__ = [
     "jump_validity",
     "Validity",
 ]
-
-# ---------------------------------------------------------------------------------------------
-# input
-
-
-def as_switch_time(S) -> Fraction:
-    """A switching time ``S >= 0`` (units ``T0``) as an exact Fraction (text, int, Fraction,
-    float as its shortest decimal, or an mpmath number)."""
-    allowed = "0 <= S <= the shorter phase min(D, 1-D) T (units of T0)"
-    if isinstance(S, mpmath.mpf):
-        if not mpmath.isfinite(S):
-            raise InputError(f"switching time S = {S} is not finite; allowed range {allowed}")
-        v = exact_fraction(S)
-    else:
-        v = as_number(S, name="switching time S", allowed=allowed)
-    if v < 0:
-        raise InputError(f"switching time S = {S} is negative; allowed range {allowed}")
-    return v
-
 
 # ---------------------------------------------------------------------------------------------
 # the compiled forms
