@@ -9,8 +9,8 @@ that contain the exact map.
 **One step** from ``t_c`` to ``t_c + h``.  The Taylor coefficients ``Y_k`` of the fundamental
 matrix ``Y(t_c + z)`` (``Y(t_c) = I``) solve ``(k+1) Y_{k+1} = sum_j A_j Y_{k-j}`` (computed
 in ball arithmetic from the series of ``A``, skipping its zero coefficients).  The remainder
-``sum_{k >= N} Y_k h^k`` is bounded by a majorant: if every row sum of ``|A(t_c + z)|`` is at most ``K`` on the disc ``|z| <= rho`` (an ``acb``
-evaluation on the square that holds the disc), Cauchy's estimate gives ``||A_j|| <= K/rho^j``
+``sum_{k >= N} Y_k h^k`` is bounded by a majorant: if every row sum of ``|A(t_c + z)|`` is at
+most ``K`` on the disc ``|z| <= rho`` (an ``acb`` evaluation on the square that holds the disc), Cauchy's estimate gives ``||A_j|| <= K/rho^j``
 (row-sum norm), so ``||Y_k|| <= y_k``, the coefficients of the solution
 ``(1 - z/rho)^(-K rho)`` of the majorant equation ``y' = K/(1 - z/rho) y``, ``y(0) = 1``:
 ``y_k h^k = (K rho)_k/k! x^k`` with ``x = h/rho``.  Their ratio is at most
@@ -171,5 +171,3 @@ def flow(coef, t0: arb, t1: arb, *, h0=None, scale=None):
         t = t + step
         if N < bits // 2 + MAX_TERMS // 2:  # the step was easy: try a longer one
             h = arb((hm * 2).mid())
-
-
