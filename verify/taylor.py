@@ -6,18 +6,18 @@ python-flint ``arb_series`` (its Taylor coefficients about a point) and on ``acb
 box, for the bound).  :func:`flow` returns the map from ``t0`` to ``t1`` as four ``arb`` balls
 that contain the exact map.
 
-**One step** from ``t_c`` to ``t_c + h``.  The Taylor coefficients ``Y_k`` of the fundamental
-matrix ``Y(t_c + z)`` (``Y(t_c) = I``) solve ``(k+1) Y_{k+1} = sum_j A_j Y_{k-j}`` (computed
-in ball arithmetic from the series of ``A``, skipping its zero coefficients).  The remainder
-``sum_{k >= N} Y_k h^k`` is bounded by a majorant: if every row sum of ``|A(t_c + z)|`` is at
-most ``K`` on the disc ``|z| <= rho`` (an ``acb`` evaluation on the square that holds the disc),
-Cauchy's estimate gives ``||A_j|| <= K/rho^j`` (row-sum norm), so ``||Y_k|| <= y_k``, the coefficients of the solution
-``(1 - z/rho)^(-K rho)`` of the majorant equation ``y' = K/(1 - z/rho) y``, ``y(0) = 1``:
-``y_k h^k = (K rho)_k/k! x^k`` with ``x = h/rho``.  Their ratio is at most
-``r = x max(1, (K rho + N)/(N + 1))`` for ``k >= N``, so the tail is at most
-``y_N h^N/(1 - r)`` (``r < 1``), added to every entry as a ball radius.  The step is halved
-until ``A`` is bounded on the square (no singularity within ``rho``) and the tail needs at most
-:data:`MAX_TERMS` terms beyond half the bits wanted; ``rho = 4 h``.
+**One step** from ``t_c`` to ``t_c + h``. The Taylor coefficients ``Y_k`` of the fundamental matrix
+``Y(t_c + z)`` (``Y(t_c) = I``) solve ``(k+1) Y_{k+1} = sum_j A_j Y_{k-j}`` (computed in ball
+arithmetic from the series of ``A``, skipping its zero coefficients). The remainder ``sum_{k >= N}
+Y_k h^k`` is bounded by a majorant: if every row sum of ``|A(t_c + z)|`` is at most ``K`` on the
+disc ``|z| <= rho`` (an ``acb`` evaluation on the square that holds the disc), Cauchy's estimate
+gives ``||A_j|| <= K/rho^j`` (row-sum norm), so ``||Y_k|| <= y_k``, the coefficients of the
+solution ``(1 - z/rho)^(-K rho)`` of the majorant equation ``y' = K/(1 - z/rho) y``, ``y(0) = 1``:
+``y_k h^k = (K rho)_k/k! x^k`` with ``x = h/rho``. Their ratio is at most ``r = x max(1, (K rho +
+N)/(N + 1))`` for ``k >= N``, so the tail is at most ``y_N h^N/(1 - r)`` (``r < 1``), added to
+every entry as a ball radius. The step is halved until ``A`` is bounded on the square (no
+singularity within ``rho``) and the tail needs at most :data:`MAX_TERMS` terms beyond half the bits
+wanted; ``rho = 4 h``.
 
 The result is proven for the ``A`` given: its entries' series and boxes are computed in ball
 arithmetic, and nothing else enters.
