@@ -17,7 +17,8 @@ switching time the instantaneous jump is a good model), ``atlas`` (edges, growth
 thresholds over a grid as an xarray dataset, computed on dask); ``system``/``custom`` describe the
 oscillator (a member of the two-level family, with its duty), taken by every function above as
 ``system=``.  ``boundary`` and ``multipliers`` take ``modulation="ramp", switch_time=S`` for
-linear ramps of the length lasting ``S`` (units ``T0``) instead of jumps.
+linear ramps of the length lasting ``S`` (units ``T0``) instead of jumps, and
+``modulation="sine"`` for ``l = l0 (1 + m sin(2 pi t/T))``.
 
 The engine lives in three packages installed beside this one, :mod:`analytic` (sympy
 derivations), :mod:`verify` (numbers) and :mod:`reports` (command line and report).  Importing

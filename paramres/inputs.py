@@ -29,6 +29,9 @@ __all__ = [
     "as_range",
     "as_tolerance",
     "as_period",
+    "MODULATIONS",
+    "as_switch_time",
+    "as_modulation",
     "DIGITS_RANGE",
     "BOUNDARY_DIGITS_RANGE",
     "MAX_ORDER",
@@ -298,3 +301,52 @@ def as_period(T, *, name: str = "period T/T0") -> Fraction | mpmath.mpf:
     if not 0 < val <= MAX_PERIOD:
         raise InputError(f"{name} = {_show(T)} is outside the allowed range {allowed}")
     return val
+
+
+#: the modulations of the length: the paper's jump, linear ramps, a sine
+MODULATIONS = ("square", "ramp", "sine")
+
+
+def as_switch_time(S) -> Fraction:
+    """A switching time ``S >= 0`` (units ``T0``) as an exact Fraction (text, int, Fraction,
+    float as its shortest decimal, or an mpmath number at its binary value)."""
+    allowed = "0 <= S <= the shorter phase min(D, 1-D) T (units of T0)"
+    if isinstance(S, mpmath.mpf):
+        if not mpmath.isfinite(S):
+            raise InputError(f"switching time S = {S} is not finite; allowed range {allowed}")
+        v = _mpf_fraction(S)
+    else:
+        v = as_number(S, name="switching time S", allowed=allowed)
+    if v < 0:
+        raise InputError(f"switching time S = {_show(S)} is negative; allowed range {allowed}")
+    return v
+
+
+def as_modulation(modulation, switch_time=None, system=None) -> tuple[str, Fraction | None]:
+    """``(kind, S)``: the modulation (one of :data:`MODULATIONS`) and, for ``ramp``, the
+    switching time ``S`` (``None`` otherwise).  Refused: an unknown kind, a switching time
+    without ``ramp``, ``ramp`` without one, ``ramp`` or ``sine`` for a system other than the
+    pendulum (a ``System`` or its name), ``sine`` with a duty other than ``1/2``."""
+    kind = modulation.strip().lower() if isinstance(modulation, str) else None
+    if kind not in MODULATIONS:
+        raise InputError(
+            f"modulation {_show(repr(modulation))} is not one of: {', '.join(MODULATIONS)}"
+        )
+    if kind != "ramp" and switch_time is not None:
+        raise InputError(
+            f"a switching time S = {_show(switch_time)} needs the ramp modulation "
+            f"(--modulation ramp); the {kind} modulation has none"
+        )
+    if kind == "ramp" and switch_time is None:
+        raise InputError("the ramp modulation needs a switching time S >= 0 (--switch-time S)")
+    name = getattr(system, "name", system)
+    if kind != "square" and name is not None and name != "pendulum":
+        raise InputError(
+            f"the {kind} modulation is implemented for the pendulum only, not for system {name!r}"
+        )
+    duty = getattr(system, "duty", None)
+    if kind == "sine" and duty is not None and duty != Fraction(1, 2):
+        raise InputError(
+            f"the sine modulation has equal halves: duty D = {duty} is not allowed (only D = 1/2)"
+        )
+    return kind, (as_switch_time(switch_time) if kind == "ramp" else None)

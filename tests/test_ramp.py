@@ -126,18 +126,30 @@ def _ode_monodromy(m, tau, S, D, dps=25):
         return [cols[0][0], cols[1][0], cols[0][1], cols[1][1]]
 
 
-def test_monodromy_matches_ode_at_random_points():
-    rng = random.Random(13)
-    for _ in range(2):
+def _random_points(count=2, seed=13):
+    rng = random.Random(seed)
+    for _ in range(count):
         m = F(rng.randint(1, 90), 100)
         tau = F(rng.randint(40, 160), 100)
         D = F(rng.choice([1, 2, 3]), 4)
         S = min(D, 1 - D) * tau * F(rng.randint(1, 100), 100)
-        ref = _ode_monodromy(m, tau, S, D)
-        with ctx.workprec(120):
-            got = ramp_monodromy_arb(m, tau, S, D)
-        for a, b in zip(got, ref, strict=True):
-            assert abs(float(a.mid()) - float(b)) < 1e-18 * (1 + abs(float(b))), (m, tau, S, D)
+        yield m, tau, S, D
+
+
+@pytest.mark.parametrize(
+    "m,tau,S,D",
+    [
+        *_random_points(),
+        # S equal to the shorter phase (no plateau in it): D = 1/3, T = 1, S = 1/3
+        (F(2, 5), F(1), F(1, 3), F(1, 3)),
+    ],
+)
+def test_monodromy_matches_ode(m, tau, S, D):
+    ref = _ode_monodromy(m, tau, S, D)
+    with ctx.workprec(120):
+        got = ramp_monodromy_arb(m, tau, S, D)
+    for a, b in zip(got, ref, strict=True):
+        assert abs(float(a.mid()) - float(b)) < 1e-18 * (1 + abs(float(b))), (m, tau, S, D)
 
 
 def test_ramp_too_long_is_refused():
@@ -206,16 +218,6 @@ def test_edge_against_ode_integration(n, m, S):
         Tq = F(T.mid().str(40, radius=False))
         M = _ode_monodromy(m, Tq, S, F(1, 2), dps=25)
         assert abs(float(M[0] + M[3]) - _trace_target(n)) < 1e-16
-
-
-def test_monodromy_at_the_longest_ramp_matches_ode():
-    """S equal to the shorter phase (no plateau in it): D = 1/3, T = 1, S = 1/3."""
-    m, tau, S, D = F(2, 5), F(1), F(1, 3), F(1, 3)
-    ref = _ode_monodromy(m, tau, S, D)
-    with ctx.workprec(120):
-        got = ramp_monodromy_arb(m, tau, S, D)
-    for a, b in zip(got, ref, strict=True):
-        assert abs(float(a.mid()) - float(b)) < 1e-18 * (1 + abs(float(b)))
 
 
 def test_tiny_switching_time():
@@ -365,110 +367,24 @@ def test_cli_jump_validity(capsys):
     assert F(doc["S_within"]) < F(doc["S_exceeded"])
 
 
+_B = ["boundary", "--order", "1", "--m", "0.3"]
+_RAMP = ["--modulation", "ramp", "--switch-time"]
+_MU = ["multipliers", "--T", "0.5", "--m", "0.3"]
+
+
 @pytest.mark.parametrize(
     "argv,words",
     [
-        (
-            [
-                "boundary",
-                "--order",
-                "1",
-                "--m",
-                "0.3",
-                "--modulation",
-                "ramp",
-                "--switch-time",
-                "-0.1",
-            ],
-            "negative",
-        ),
-        (
-            [
-                "boundary",
-                "--order",
-                "1",
-                "--m",
-                "0.3",
-                "--modulation",
-                "ramp",
-                "--switch-time",
-                "0.3",
-            ],
-            "longer than a phase",
-        ),
-        (
-            ["boundary", "--order", "1", "--m", "0.3", "--switch-time", "0.01"],
-            "needs the ramp modulation",
-        ),
-        (
-            ["boundary", "--order", "1", "--m", "0.3", "--modulation", "ramp"],
-            "needs a switching time",
-        ),
-        (["boundary", "--order", "1", "--m", "0.3", "--modulation", "sine"], "not one of"),
-        (
-            [
-                "boundary",
-                "--order",
-                "1",
-                "--m",
-                "0.3",
-                "--modulation",
-                "ramp",
-                "--switch-time",
-                "0.01",
-                "--system",
-                "meissner",
-            ],
-            "pendulum only",
-        ),
-        (
-            [
-                "boundary",
-                "--order",
-                "1",
-                "--m",
-                "0.3",
-                "--modulation",
-                "ramp",
-                "--switch-time",
-                "0.01",
-                "--Q",
-                "5",
-            ],
-            "without friction",
-        ),
-        (
-            [
-                "boundary",
-                "--order",
-                "1",
-                "--m",
-                "0.3",
-                "--modulation",
-                "ramp",
-                "--switch-time",
-                "abc",
-            ],
-            "not a number",
-        ),
-        (
-            [
-                "multipliers",
-                "--T",
-                "0.5",
-                "--m",
-                "0.3",
-                "--modulation",
-                "ramp",
-                "--switch-time",
-                "0.26",
-            ],
-            "longer than a phase",
-        ),
-        (
-            ["multipliers", "--T", "0.5", "--m", "0.3", "--switch-time", "0.1"],
-            "needs the ramp modulation",
-        ),
+        (_B + _RAMP + ["-0.1"], "negative"),
+        (_B + _RAMP + ["0.3"], "longer than a phase"),
+        (_B + ["--switch-time", "0.01"], "needs the ramp modulation"),
+        (_B + ["--modulation", "ramp"], "needs a switching time"),
+        (_B + ["--modulation", "sine", "--duty", "1/3"], "equal halves"),
+        (_B + _RAMP + ["0.01", "--system", "meissner"], "pendulum only"),
+        (_B + _RAMP + ["0.01", "--Q", "5"], "without friction"),
+        (_B + _RAMP + ["abc"], "not a number"),
+        (_MU + _RAMP + ["0.26"], "longer than a phase"),
+        (_MU + ["--switch-time", "0.1"], "needs the ramp modulation"),
         (["jump-validity", "--order", "1", "--m", "0.3", "--tol", "0"], "tolerance"),
     ],
 )

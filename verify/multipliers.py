@@ -217,13 +217,14 @@ def multipliers(
     digits=30,
     system="pendulum",
     duty="1/2",
-    switch_time=None,
+    _monodromy=None,
+    _notes=(),
 ) -> Multipliers:
     """Both Floquet multipliers at period ``T`` (units of ``T0``) and depth ``m`` (left out for a
     custom system), with friction ``Q`` in the ``exact`` or ``paper`` model, to ``digits``
-    proven digits; ``system``/``duty`` as in :func:`verify.boundary`.  ``switch_time = S``
-    replaces each jump by a linear ramp of the length lasting ``S`` (units ``T0``; the pendulum
-    without friction only; :func:`verify.ramp.ramp_monodromy_arb`)."""
+    proven digits; ``system``/``duty`` as in :func:`verify.boundary`.  Other modulations of the
+    length (:func:`verify.modulation.multipliers`) pass their period map as ``_monodromy(m, T)``
+    (four balls at the working precision, exact ``m``, ``T``) and a line for the notes."""
     sysv = as_system(system, duty)
     if sysv.uses_depth:
         if m is None:
@@ -239,22 +240,9 @@ def multipliers(
     model = as_damping(damping)
     d = as_digits(digits)
     monodromy = lambda: monodromy_arb(mm, TT, QQ, model, sysv)  # noqa: E731
-    notes = []
-    if switch_time is not None:
-        from .ramp import as_switch_time, check_fits, ramp_monodromy_arb
-
-        S = as_switch_time(switch_time)
-        if sysv.name != "pendulum" or QQ is not None:
-            raise InputError(
-                "a switching time (ramp modulation) is implemented for the pendulum without "
-                f"friction only (got system {sysv.name!r}, Q = {Q})"
-            )
-        check_fits(S, TT, sysv.duty)
-        monodromy = lambda: ramp_monodromy_arb(mm, TT, S, sysv.duty)  # noqa: E731
-        notes.append(
-            f"ramp modulation: the length changes linearly during S = {_text(S)} T0 at each "
-            "switch (Bessel route)"
-        )
+    notes = list(_notes)
+    if _monodromy is not None:
+        monodromy = lambda: _monodromy(mm, TT)  # noqa: E731
     goal = arb(10) ** (-(d + 1))
     bits = bits_for_digits(d + 4)
     cap = max(bits * _MAX_BITS_PER_DIGIT, 4096)

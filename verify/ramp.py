@@ -39,7 +39,7 @@ import mpmath
 from flint import arb, ctx, fmpq
 
 from .certify import CertificationError, bits_for_digits, certified_root, to_mpf, upper_mpf
-from .inputs import InputError, as_depth, as_digits, as_number, as_order, as_system
+from .inputs import InputError, as_depth, as_digits, as_order, as_switch_time, as_system
 from .params import exact_fraction
 
 __all__ = [
@@ -54,25 +54,6 @@ __all__ = [
     "jump_validity",
     "Validity",
 ]
-
-# ---------------------------------------------------------------------------------------------
-# input
-
-
-def as_switch_time(S) -> Fraction:
-    """A switching time ``S >= 0`` (units ``T0``) as an exact Fraction (text, int, Fraction,
-    float as its shortest decimal, or an mpmath number)."""
-    allowed = "0 <= S <= the shorter phase min(D, 1-D) T (units of T0)"
-    if isinstance(S, mpmath.mpf):
-        if not mpmath.isfinite(S):
-            raise InputError(f"switching time S = {S} is not finite; allowed range {allowed}")
-        v = exact_fraction(S)
-    else:
-        v = as_number(S, name="switching time S", allowed=allowed)
-    if v < 0:
-        raise InputError(f"switching time S = {S} is negative; allowed range {allowed}")
-    return v
-
 
 # ---------------------------------------------------------------------------------------------
 # the compiled forms
@@ -284,13 +265,17 @@ def _newton_mid(p: _Pendulum, e: int, T: float, iters: int = 40) -> float | None
 _STEP, _CORRECTION = 40, 100
 
 
-def _follow(m, S, duty, e, T0: float, spacing: float, bits: int = 96) -> float:
+def _follow(
+    m, S, duty, e, T0: float, spacing: float, bits: int = 96, start=None, trail=None
+) -> float:
     """Continue the zero of entry ``e`` of ``G`` from ``S = 0`` (at ``T0``) to ``S``: secant
     predictor, Newton corrector; steps of at most ``spacing/40`` in ``S``, halved whenever the
     corrector moves the root by more than ``spacing/100`` or does not converge (so the path
-    cannot jump to another zero of the same entry)."""
+    cannot jump to another zero of the same entry).  ``start = (s, T, slope)``: continue from a
+    point of the same path already followed (``s <= S``) instead of from ``S = 0``; the end
+    point is appended to the list ``trail`` in that form."""
     with ctx.workprec(bits):
-        s_now, T_now, slope = Fraction(0), T0, 0.0
+        s_now, T_now, slope = (Fraction(0), T0, 0.0) if start is None else start
         cap = Fraction(spacing / _STEP)
         step = min(S, cap)
         while s_now < S:
@@ -310,7 +295,33 @@ def _follow(m, S, duty, e, T0: float, spacing: float, bits: int = 96) -> float:
                 slope = (root - T_now) / float(s_next - s_now)
             s_now, T_now = s_next, root
             step = min(step * 2, cap, S)
+        if trail is not None:
+            trail.append((s_now, T_now, slope))
         return T_now
+
+
+class _Paths:
+    """Both followed edges of one ``(n, m, D)`` at many ``S``: each call continues from the
+    largest ``S`` already reached below it (the same continuation, in pieces)."""
+
+    def __init__(self, n, mm, D, jump, names):
+        self.args = (mm, D)
+        self.spacing = float(jump.upper) / n
+        self.starts = ((_ENTRY[names[0]], float(jump.lower)), (_ENTRY[names[1]], float(jump.upper)))
+        self.known = ([], [])  # per edge: (s, T, slope), s ascending
+
+    def edges(self, S: Fraction) -> tuple[float, float]:
+        mm, D = self.args
+        out = []
+        for (e, T0), known in zip(self.starts, self.known, strict=True):
+            if S == 0:
+                out.append(T0)
+                continue
+            below = [k for k in known if k[0] <= S]
+            start = max(below, key=lambda k: k[0]) if below else None
+            out.append(_follow(mm, S, D, e, T0, self.spacing, start=start, trail=known))
+            known.sort(key=lambda k: k[0])
+        return min(out), max(out)
 
 
 def ramp_boundary(order, m, S, *, duty="1/2", digits=30, _jump_result=None) -> RampEdges:
@@ -429,8 +440,8 @@ def _text(x: Fraction) -> str:
     return str(x.numerator) if x.denominator == 1 else f"{x.numerator}/{x.denominator}"
 
 
-def _edges_float(n, mm, S, D, jump, names=None) -> tuple[float, float]:
-    """Both edges at ``S`` as floats (continuation, not certified)."""
+def _paths(n, mm, D, jump, names=None) -> _Paths:
+    """The followed edges of the jump model's ``jump`` (a :class:`verify.solve.Boundary`)."""
     if names is None:
         with ctx.workprec(96):
             rad = jump.radii or (jump.radius,) * 4
@@ -440,15 +451,10 @@ def _edges_float(n, mm, S, D, jump, names=None) -> tuple[float, float]:
                 _ball(jump.lower, rad[0]),
                 _ball(jump.upper, rad[1]),
             )
-    if S == 0:
-        return float(jump.lower), float(jump.upper)
-    spacing = float(jump.upper) / n
-    a = _follow(mm, S, D, _ENTRY[names[0]], float(jump.lower), spacing)
-    b = _follow(mm, S, D, _ENTRY[names[1]], float(jump.upper), spacing)
-    return min(a, b), max(a, b)
+    return _Paths(n, mm, D, jump, names)
 
 
-def longest_ramp(order, m, *, duty="1/2", _jump_result=None) -> float:
+def longest_ramp(order, m, *, duty="1/2", _jump_result=None, _followed=None) -> float:
     """The longest switching time that fits a phase at the lower edge of the ``order``-th
     interval: the ``S`` with ``S = min(D, 1 - D) T_lower(S)`` (a float, by a fixed-point
     iteration on the followed edge; not certified -- the certified edges are checked against
@@ -457,11 +463,12 @@ def longest_ramp(order, m, *, duty="1/2", _jump_result=None) -> float:
     D = as_system("pendulum", duty).duty
     mm = exact_fraction(as_depth(m))
     jump = _jump(n, mm, D, 20) if _jump_result is None else _jump_result
+    paths = _paths(n, mm, D, jump) if _followed is None else _followed
     c = float(min(D, 1 - D))
     S = c * float(jump.lower)
     for _ in range(60):
         try:
-            lo = _edges_float(n, mm, Fraction(S), D, jump)[0]
+            lo = paths.edges(Fraction(S))[0]
         except CertificationError:
             S *= 0.9
             continue
@@ -654,11 +661,12 @@ def jump_validity(order, m, tol, *, duty="1/2", digits=15) -> Validity:
             _Pendulum(mm, Fraction(0), D), n, _ball(jump.lower, rad[0]), _ball(jump.upper, rad[1])
         )
     T0s = (float(jump.lower), float(jump.upper))
-    S_fit = longest_ramp(n, mm, duty=D, _jump_result=jump)
+    paths = _paths(n, mm, D, jump, names)
+    S_fit = longest_ramp(n, mm, duty=D, _jump_result=jump, _followed=paths)
     tolf = float(tt)
 
     def excess(S: float) -> float:
-        lo, hi = _edges_float(n, mm, Fraction(S), D, jump, names)
+        lo, hi = paths.edges(Fraction(S))
         return max(abs(lo - T0s[0]) / T0s[0], abs(hi - T0s[1]) / T0s[1]) - tolf
 
     slopes = leading_shift(n, mm, duty=D, digits=d, _jump_result=jump)

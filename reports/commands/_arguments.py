@@ -98,14 +98,16 @@ def add_json(p, help: str = "machine-readable output") -> None:
 
 
 def add_modulation(p) -> None:
-    """``--modulation square|ramp`` and ``--switch-time S`` (the ramp's duration)."""
+    """``--modulation square|ramp|sine`` and ``--switch-time S`` (the ramp's duration)."""
     g = p.add_argument_group("the modulation (how the length switches)")
     g.add_argument(
         "--modulation",
         default="square",
         metavar="KIND",
-        help="square (default: the paper's instantaneous jump) or ramp (the length changes "
-        "linearly during --switch-time S around each switch; pendulum without friction)",
+        help="square (default: the paper's instantaneous jump), ramp (the length changes "
+        "linearly during --switch-time S around each switch) or sine (l = l0(1 + m sin(2 pi "
+        "t/T)), equal halves); ramp and sine: the pendulum, edges without friction, "
+        "multipliers also with --Q",
     )
     g.add_argument(
         "--switch-time",

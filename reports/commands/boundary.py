@@ -2,7 +2,7 @@
 
     paramres boundary --order N --m M [--Q Q] [--damping exact|paper] [--digits D | --tol TOL]
                       [--method certified|fixedpoint] [--system S] [--duty D]
-                      [--modulation square|ramp --switch-time S] [--json]
+                      [--modulation square|ramp|sine] [--switch-time S] [--json]
 
 Prints the lower and upper edge ``T/T0`` and their offsets ``T - n T_av/2`` with ``D`` proven
 digits (ball arithmetic; see :mod:`verify.solve`), or says that the interval does not exist.

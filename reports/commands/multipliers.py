@@ -2,7 +2,7 @@
 
     paramres multipliers --T T [--m M] [--Q Q] [--damping exact|paper] [--digits D]
                          [--system S] [--duty D] [--omega-sq W1,W2 --jump K]
-                         [--modulation square|ramp --switch-time S] [--json]
+                         [--modulation square|ramp|sine] [--switch-time S] [--json]
 
 The monodromy over one modulation period is built from the segment maps and the switches in ball
 arithmetic (the independent Floquet route, :mod:`verify.multipliers`); both eigenvalues, the

@@ -3,6 +3,7 @@
     paramres simulate --order N --m M (--edge lower|upper | --T T) [--Q Q]
                       [--damping exact|paper] [--periods K] [--amplitude A] [--nonlinear]
                       [--digits D] [--plot FILE] [--json]
+                      [--modulation square|ramp|sine] [--switch-time S]
 
 On an edge the run starts from the stationary initial condition and reports how well the state
 returns after ``2T`` (odd orders) or ``T`` (even); at any period it reports the growth per period
@@ -19,7 +20,15 @@ import mpmath
 from reports.output import dump_json, progress
 from verify.timedomain import EDGES, MAX_PERIODS
 
-from ._arguments import add_depth, add_friction, add_json, add_order, add_system, system_of
+from ._arguments import (
+    add_depth,
+    add_friction,
+    add_json,
+    add_modulation,
+    add_order,
+    add_system,
+    system_of,
+)
 
 __all__ = ["register", "run", "render_text"]
 
@@ -51,6 +60,7 @@ def register(subparsers) -> None:
     )
     add_friction(p)
     add_system(p)
+    add_modulation(p)
     p.add_argument(
         "--periods",
         metavar="K",
@@ -85,6 +95,8 @@ def run(args) -> int:
 
     plot = check_plot_path(args.plot) if args.plot else None  # refuse a bad name before any work
     sysv = system_of(args)
+    if args.modulation.strip().lower() != "square" or args.switch_time is not None:
+        return _run_modulated(args, sysv, plot)
     sim = simulate(
         args.order,
         args.m,
@@ -109,6 +121,35 @@ def run(args) -> int:
         dump_json(out)
     else:
         print(render_text(sim, plot))
+    return 0
+
+
+def _run_modulated(args, sysv, plot) -> int:
+    """The ramp or sine modulation: :func:`verify.modulated_run.simulate_modulated`."""
+    from verify.inputs import InputError, as_modulation
+    from verify.modulated_run import simulate_modulated
+
+    kind, S = as_modulation(args.modulation, args.switch_time, sysv)
+    if plot is not None:
+        raise InputError(f"--plot is not available with the {kind} modulation")
+    if args.damping.strip().lower() != "exact" and args.Q is not None:
+        raise InputError(f"the {kind} modulation has the exact friction model only")
+    run_ = simulate_modulated(
+        args.order,
+        args.m,
+        modulation=kind,
+        switch_time=S,
+        edge=args.edge,
+        T=args.T,
+        Q=args.Q,
+        periods=args.periods or (200 if args.nonlinear else 8),
+        amplitude=args.amplitude,
+        nonlinear=args.nonlinear,
+    )
+    if args.json:
+        dump_json(run_.as_json())
+    else:
+        print(run_)
     return 0
 
 

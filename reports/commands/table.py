@@ -30,13 +30,14 @@ from verify.inputs import (
     InputError,
     as_damping,
     as_digits,
+    as_modulation,
     as_orders,
     as_quality,
     as_range,
     as_tolerance,
 )
 
-from ._arguments import add_friction, add_system, system_of
+from ._arguments import add_friction, add_modulation, add_system, system_of
 
 __all__ = ["register", "run", "rows", "decimal_text"]
 
@@ -63,6 +64,7 @@ def register(subparsers) -> None:
     )
     add_friction(p)
     add_system(p)
+    add_modulation(p)
     p.add_argument(
         "--digits",
         default=None,
@@ -115,10 +117,19 @@ def decimal_text(x: Fraction) -> str:
 
 
 def _certified(task):
-    from verify.solve import boundary
+    from verify.modulation import boundary
 
-    order, m, Q, damping, digits, system = task
-    b = boundary(order, m, Q=Q, damping=damping, digits=digits, system=system)
+    order, m, Q, damping, digits, system, modulation, S = task
+    b = boundary(
+        order,
+        m,
+        Q=Q,
+        damping=damping,
+        digits=digits,
+        system=system,
+        modulation=modulation,
+        switch_time=S,
+    )
     j = b.as_json()
     return (order, m, j["lower"], j["upper"], j["delta_lower"], j["delta_upper"], j["error_bound"])
 
@@ -138,15 +149,32 @@ def _tol_rows(orders, ms, Q, damping, tol, label):
 
 
 def rows(
-    orders, ms, Q, damping, digits, jobs=1, label="table", tol=None, system=None, scheduler=None
+    orders,
+    ms,
+    Q,
+    damping,
+    digits,
+    jobs=1,
+    label="table",
+    tol=None,
+    system=None,
+    modulation="square",
+    switch_time=None,
+    scheduler=None,
 ):
     """Table rows ``(order, m, lower, upper[, delta_lower, delta_upper, error_bound[, method]])``
     as text (``method`` with a tolerance ``tol``), for ``system`` (default: the paper's
-    pendulum).  Certified rows run on :mod:`verify.engine`: ``jobs`` local worker processes, or
-    the dask cluster ``scheduler`` (an address or a ``distributed.Client``)."""
+    pendulum); a modulation other than ``square`` (:mod:`verify.modulation`) is certified
+    only.  Certified rows run on :mod:`verify.engine`: ``jobs`` local worker processes, or the
+    dask cluster ``scheduler`` (an address or a ``distributed.Client``)."""
     from analytic.system import PAPER
 
     system = PAPER if system is None else system
+    if modulation != "square" and (digits is None or tol is not None):
+        raise InputError(
+            f"a table with the {modulation} modulation is certified only: give --digits D "
+            "(not --tol)"
+        )
     if tol is not None and not system.is_paper:
         raise InputError(
             f"--tol chooses among methods built for the paper's system; use --digits for "
@@ -173,7 +201,9 @@ def rows(
     from verify.atlas import edge_seconds
     from verify.engine import cluster, ordered
 
-    tasks = [(n, m, Q, damping, digits, system) for n in orders for m in ms]
+    tasks = [
+        (n, m, Q, damping, digits, system, modulation, switch_time) for n in orders for m in ms
+    ]
     # the engine of the atlas: a local dask cluster of ``jobs`` processes (or ``scheduler``);
     # work too small to pay for starting one runs here
     work = len(tasks) * edge_seconds(digits, Q is not None)
@@ -213,7 +243,19 @@ def run(args) -> int:
     sysv = system_of(args)
     if not sysv.uses_depth:
         raise InputError("a custom system has no depth: a table over m makes no sense for it")
-    data = rows(orders, ms, Q, damping, digits, jobs, tol=tol, system=sysv)
+    kind, S = as_modulation(args.modulation, args.switch_time, sysv)
+    data = rows(
+        orders,
+        ms,
+        Q,
+        damping,
+        digits,
+        jobs,
+        tol=tol,
+        system=sysv,
+        modulation=kind,
+        switch_time=S,
+    )
     certified = digits is not None or tol is not None
     header = ["order", "m", "lower", "upper"]
     # error_bound: |printed - exact| for each number of the row, the rounding of the print included
@@ -230,6 +272,10 @@ def run(args) -> int:
             "columns": header,
             "rows": [[r[0], decimal_text(r[1])] + list(r[2:]) for r in data],
         }
+        if kind != "square":
+            doc["modulation"] = kind
+            if S is not None:
+                doc["switch_time"] = decimal_text(S)
         if tol is not None:
             doc["tolerance"] = args.tol.strip()
         text = json.dumps(doc, indent=2) + "\n"
@@ -256,6 +302,10 @@ def run(args) -> int:
                 "method": "auto" if tol is not None else ("certified" if certified else "grid"),
                 "columns": header,
             }
+            if kind != "square":
+                meta["modulation"] = kind
+                if S is not None:
+                    meta["switch_time"] = decimal_text(S)
             if tol is not None:
                 meta["tolerance"] = args.tol.strip()
             atomic_write(sidecar(args.output), json.dumps(meta, indent=2) + "\n")

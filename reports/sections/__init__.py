@@ -33,6 +33,7 @@ SECTIONS = (
     "expansions",
     "closings",
     "family",
+    "switching",
     "diagrams",
     "accuracy",
     "performance",

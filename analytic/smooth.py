@@ -1,0 +1,150 @@
+"""A length that varies in time: the governing equation, its Liouville (Hill) form, and the
+``sine`` modulation.
+
+Units: time in ``T0``, length in ``l0``, so ``g = omega0^2 l0 = 4 pi^2`` and the friction
+``gamma = pi/Q`` (``gamma T0 = pi/Q``).  The bob on a light rod obeys
+
+    (l^2 phi')' + 2 gamma l^2 phi' + g l phi = 0                               (V1)
+
+(the moment of inertia and the drag torque scale as ``l^2``, gravity's torque as ``l``).  In the
+state ``(phi, p = l^2 phi')`` it is the first-order system ``y' = A(t) y`` with
+
+    A = [[0, 1/l^2], [-g l, -2 gamma]]                                         (V2)
+
+(:func:`system_matrix`), whose trace is the constant ``-2 gamma``: every period map has the
+determinant ``exp(-2 gamma T)``.  Through a jump of ``l`` the state is continuous, which is the
+paper's momentum rule.  (V2) serves every modulation; the certified integrator of
+:mod:`verify.taylor` integrates it piece by piece.
+
+**The Liouville form** (:func:`hill_form`).  With ``u = l phi`` (the bob's arc coordinate),
+(V1) becomes
+
+    u'' + 2 gamma u' + q(t) u = 0,      q = (g - l'' - 2 gamma l')/l,              (V3)
+
+a Hill equation (with friction: a damped one) whose coefficient is periodic with ``l``.  The
+substitution and its residual are checked by sympy.
+
+**The ``sine`` modulation** (:func:`sine_length`): ``l(t) = 1 + m sin(2 pi t/T)``, long in the
+first half period as the square wave (only equal halves, ``D = 1/2``).  ``l`` is even about
+``t = T/4`` and ``t = 3T/4`` (:func:`check_sine_symmetry`), so without friction the half-period
+argument of :mod:`analytic.ramp` applies unchanged: with ``G`` the map from ``t = T/4`` to
+``3T/4``, ``tr M - 2 = 4 G12 G21`` and ``tr M + 2 = 4 G11 G22``
+(:func:`analytic.ramp.half_period_factorisation`): each edge is a zero of one entry of ``G``.
+
+**Small depth** (:func:`sine_first_width`).  To first order in ``m``, (V3) without friction is
+the Mathieu equation ``u'' + (g + m (Omega^2 - g) sin(Omega t)) u = 0`` (``Omega = 2 pi/T``).
+Harmonic balance with ``u = a cos(Omega t/2) + b sin(Omega t/2)`` (the projections are taken by
+sympy) gives the edges of the first interval ``T = 1/2 + c m + O(m^2)`` with ``c = -+3/8``: the
+interval is ``3m/4`` wide, against ``3m/pi`` for the square wave (whose first harmonic is
+``4/pi`` times larger).
+"""
+
+from __future__ import annotations
+
+from functools import cache
+
+import sympy as sp
+
+__all__ = [
+    "symbols",
+    "system_matrix",
+    "hill_form",
+    "check_hill_form",
+    "sine_length",
+    "check_sine_symmetry",
+    "sine_first_width",
+    "sine_forms",
+]
+
+_t, _T, _g, _m = sp.symbols("t T g m", positive=True)
+_gamma = sp.Symbol("gamma", nonnegative=True)
+_PI = sp.Symbol("PI", positive=True)
+
+
+def symbols() -> dict:
+    """The sympy symbols of this module by name (``PI`` stands for ``pi`` in compiled forms)."""
+    return {"t": _t, "T": _T, "g": _g, "m": _m, "gamma": _gamma, "PI": _PI}
+
+
+def system_matrix(l, g=_g, gamma=_gamma) -> sp.Matrix:
+    """``A`` of (V2) for a length ``l`` (any expression, e.g. in ``t``)."""
+    return sp.Matrix([[0, 1 / l**2], [-g * l, -2 * gamma]])
+
+
+def hill_form(l) -> sp.Expr:
+    """``q(t)`` of (V3) for the length ``l(t)``, derived: ``u = l phi`` substituted in (V1) and
+    the result divided by ``l`` (see :func:`check_hill_form`)."""
+    u = sp.Function("u")(_t)
+    phi = u / l
+    lhs = sp.diff(l**2 * sp.diff(phi, _t), _t) + 2 * _gamma * l**2 * sp.diff(phi, _t)
+    lhs = sp.expand((lhs + _g * l * phi) / l)
+    # lhs = u'' + 2 gamma u' + q u: read q off as the coefficient of u
+    q = lhs.coeff(u)
+    return sp.simplify(q)
+
+
+def check_hill_form(l) -> bool:
+    """(V1) with ``phi = u/l`` equals ``l`` times (V3) identically (sympy)."""
+    u = sp.Function("u")(_t)
+    phi = u / l
+    v1 = sp.diff(l**2 * sp.diff(phi, _t), _t) + 2 * _gamma * l**2 * sp.diff(phi, _t)
+    v1 += _g * l * phi
+    q = (_g - sp.diff(l, _t, 2) - 2 * _gamma * sp.diff(l, _t)) / l
+    v3 = sp.diff(u, _t, 2) + 2 * _gamma * sp.diff(u, _t) + q * u
+    return sp.simplify(v1 - l * v3) == 0 and sp.simplify(hill_form(l) - q) == 0
+
+
+def sine_length(pi=sp.pi) -> sp.Expr:
+    """``l(t) = 1 + m sin(2 pi t/T)`` (units ``l0``)."""
+    return 1 + _m * sp.sin(2 * pi * _t / _T)
+
+
+def check_sine_symmetry() -> bool:
+    """``l(T/4 + s) = l(T/4 - s)`` and ``l(3T/4 + s) = l(3T/4 - s)`` (sympy): each half period
+    is symmetric about its midpoint, the premise of the per-edge factorisation."""
+    s = sp.Symbol("s", real=True)
+    l = sine_length()
+    ok = True
+    for c in (_T / 4, 3 * _T / 4):
+        d = sp.expand_trig(sp.expand(l.subs(_t, c + s) - l.subs(_t, c - s)))
+        ok = ok and sp.simplify(d) == 0
+    return ok
+
+
+@cache
+def sine_first_width() -> tuple[sp.Expr, sp.Expr]:
+    """``(c_lower, c_upper)``: the first interval's edges ``T = 1/2 + c m + O(m^2)`` (units
+    ``T0``) of the sine modulation without friction, by harmonic balance on the first-order
+    Hill form (see the module's docstring)."""
+    W = sp.Symbol("W", positive=True)  # Omega = 2 pi/T
+    l = 1 + _m * sp.sin(W * _t)
+    q = sp.simplify(hill_form(l).subs(_gamma, 0))
+    q1 = sp.series(q, _m, 0, 2).removeO()
+    a, b = sp.symbols("a b")
+    u = a * sp.cos(W * _t / 2) + b * sp.sin(W * _t / 2)
+    res = sp.diff(u, _t, 2) + q1 * u
+    period = 2 * (2 * sp.pi / W)
+    eqs = []
+    for basis in (sp.cos(W * _t / 2), sp.sin(W * _t / 2)):
+        proj = sp.integrate(sp.expand(sp.expand_trig(res * basis)), (_t, 0, period))
+        eqs.append(sp.expand(sp.simplify(proj)))
+    mat = sp.Matrix([[e.coeff(a) for e in eqs], [e.coeff(b) for e in eqs]]).T
+    det = sp.simplify(mat.det())
+    g0 = 4 * sp.pi**2
+    c = sp.Symbol("c")
+    # T = 1/2 + c m: Omega = 2 pi/T; the determinant vanishes to second order in m
+    d = det.subs(_g, g0).subs(W, 2 * sp.pi / (sp.Rational(1, 2) + c * _m))
+    lead = sp.series(d, _m, 0, 3).removeO()
+    lead = sp.simplify(lead.coeff(_m, 2))
+    roots = sorted(sp.solve(sp.Eq(lead, 0), c), key=lambda r: float(r))
+    if len(roots) != 2:  # pragma: no cover - a proof
+        raise AssertionError(f"harmonic balance gave {roots}")
+    return roots[0], roots[1]
+
+
+@cache
+def sine_forms() -> tuple:
+    """The entries of ``A`` (V2) for the sine modulation, row-major, in ``t, T, m, g, gamma,
+    PI`` (``pi`` replaced by the symbol ``PI``, so every back end supplies its own)."""
+    A = system_matrix(sine_length(_PI))
+    return tuple(A)

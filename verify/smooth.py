@@ -1,0 +1,341 @@
+"""Certified numbers for a length that varies smoothly: the ``sine`` modulation, and the ramps
+with friction.
+
+The equation is (V2) of :mod:`analytic.smooth`, ``y' = A(t) y`` in the state ``(phi, p = l^2
+phi')``, with ``A`` compiled from the sympy forms there and integrated by the one validated
+integrator :func:`verify.taylor.flow` (ball arithmetic, proven remainder).  Units: time in
+``T0``, ``g = 4 pi^2``, ``gamma = pi/Q``.
+
+* :func:`sine_monodromy_arb`: the period map of ``l = 1 + m sin(2 pi t/T)`` from ``t = 0``.
+* :func:`ramp_monodromy_damped_arb`: the period map of the ramp modulation with friction (the
+  length constant on the plateaus, linear on the ramps; every piece through the integrator).
+* :func:`sine_boundary`: the certified edges of the sine modulation without friction.  ``l`` is
+  even about ``T/4`` and ``3T/4`` (:func:`analytic.smooth.check_sine_symmetry`), so each edge is
+  a zero of one entry of ``G``, the map from ``T/4`` to ``3T/4`` (odd orders ``G11``/``G22``,
+  even ``G12``/``G21``), as for the ramp.  *Which* zero: in the time ``s = t/T`` the Prüfer
+  angle of the column of ``G`` grows strictly with ``T`` (Sturm comparison: ``T^2 g l`` is the
+  only place ``T`` enters), and on the edge of order ``n`` it has turned by exactly ``n pi/2``
+  over the half period; that angle is found by a double-precision integration of the Prüfer
+  equation (*not proven*), the zero then refined by the secant method on ball midpoints, and
+  enclosed by a **proven sign change** of the entry on a small bracket (a zero of the edge
+  equation lies in the printed enclosure).
+"""
+
+from __future__ import annotations
+
+import math
+from fractions import Fraction
+from functools import cache
+
+import mpmath
+from flint import arb, arb_series, ctx, fmpq
+
+from .certify import CertificationError, bits_for_digits, to_mpf, upper_mpf
+from .inputs import InputError, as_depth, as_digits, as_order
+from .params import exact_fraction
+from .taylor import flow
+
+__all__ = [
+    "sine_monodromy_arb",
+    "sine_half_map",
+    "ramp_monodromy_damped_arb",
+    "sine_rotation",
+    "sine_boundary",
+]
+
+
+def _sin(z):
+    return z.sin()
+
+
+def _cos(z):
+    return z.cos()
+
+
+_NAMESPACE = {
+    "sin": _sin,
+    "cos": _cos,
+    "_q": lambda p, q: arb(fmpq(p, q)) if q != 1 else arb(p),
+}
+
+
+@cache
+def _compiled():
+    """``A(t)`` of the sine modulation (in ``t, T, m, g, gamma, PI``) and of a linear length
+    ``l = la + c (t - ta)`` (in ``t, la, c, ta, g, gamma``), compiled for ``arb_series``/``acb``
+    arguments from :mod:`analytic.smooth`."""
+    import sympy as sp
+
+    from analytic.smooth import sine_forms, symbols, system_matrix
+
+    from .derived import _printer
+
+    s = symbols()
+    sine = sp.lambdify(
+        (s["t"], s["T"], s["m"], s["g"], s["gamma"], s["PI"]),
+        list(sine_forms()),
+        modules=[_NAMESPACE],
+        printer=_printer(),
+        cse=True,
+        docstring_limit=0,
+    )
+    la, c, ta = sp.symbols("l_a c t_a")
+    lin = sp.lambdify(
+        (s["t"], la, c, ta, s["g"], s["gamma"]),
+        list(system_matrix(la + c * (s["t"] - ta), s["g"], s["gamma"])),
+        modules=[_NAMESPACE],
+        printer=_printer(),
+        cse=True,
+        docstring_limit=0,
+    )
+    return sine, lin
+
+
+def _A(x: Fraction) -> arb:
+    return arb(fmpq(x.numerator, x.denominator))
+
+
+def _gamma(Q) -> arb:
+    """``gamma = pi/Q`` in units ``1/T0`` (``0`` without friction)."""
+    return arb(0) if Q is None else arb.pi() / _A(Fraction(Q))
+
+
+def _series_safe(f):
+    """Wrap ``A`` so that constant entries become series/boxes of the argument's type."""
+
+    def coef(t):
+        out = f(t)
+        if isinstance(t, arb_series):
+            return [e if isinstance(e, arb_series) else arb_series([e], prec=t.prec) for e in out]
+        return out
+
+    return coef
+
+
+def _sine_coef(T: arb, m: arb, gamma: arb):
+    sine, _ = _compiled()
+    g = 4 * arb.pi() ** 2
+    pi = arb.pi()
+    return _series_safe(lambda t: sine(t, T, m, g, gamma, pi))
+
+
+def sine_monodromy_arb(m, T, Q=None):
+    """The period map of ``(phi, p)`` over ``T`` (units ``T0``) from ``t = 0`` for the sine
+    modulation of depth ``m`` with friction ``Q`` (``None``: none), as four balls at the working
+    precision; ``m``, ``T`` exact Fractions (or ``T`` an ``arb``)."""
+    Tb = T if isinstance(T, arb) else _A(Fraction(T))
+    coef = _sine_coef(Tb, _A(Fraction(m)), _gamma(Q))
+    return flow(coef, arb(0), Tb, scale=2 * arb.pi())
+
+
+def sine_half_map(m, T):
+    """``G``: the map of ``(phi, p)`` from ``t = T/4`` to ``3T/4`` (no friction), four balls."""
+    Tb = T if isinstance(T, arb) else _A(Fraction(T))
+    coef = _sine_coef(Tb, m if isinstance(m, arb) else _A(Fraction(m)), arb(0))
+    return flow(coef, Tb / 4, 3 * Tb / 4, scale=2 * arb.pi())
+
+
+def ramp_monodromy_damped_arb(m, tau, S, Q, duty=Fraction(1, 2)):
+    """The period map of ``(phi, p)`` from ``t = S/2`` for the ramp modulation (linear ramps of
+    the length lasting ``S`` centred on ``t = 0`` and ``t = D T``) with friction ``Q``, every
+    piece through the validated integrator (four balls)."""
+    _, lin = _compiled()
+    m, S, duty = Fraction(m), Fraction(S), Fraction(duty)
+    T = _A(Fraction(tau))
+    g = 4 * arb.pi() ** 2
+    gam = _gamma(Q)
+    l1, l2 = _A(1 + m), _A(1 - m)
+    Sb, D = _A(S), _A(duty)
+    t_a = Sb / 2
+    t_b = D * T - Sb / 2
+    t_c = D * T + Sb / 2
+    t_d = T - Sb / 2
+    pieces = [
+        (t_a, t_b, l1, arb(0), t_a),  # plateau 1
+        (t_b, t_c, l1, (l2 - l1) / Sb if S else arb(0), t_b),  # ramp down
+        (t_c, t_d, l2, arb(0), t_c),  # plateau 2
+        (t_d, T + Sb / 2, l2, (l1 - l2) / Sb if S else arb(0), t_d),  # ramp up
+    ]
+    if S == 0:  # the jump: only the plateaus (the state is continuous through a jump)
+        pieces = pieces[0::2]
+    M = (arb(1), arb(0), arb(0), arb(1))
+    for a, b, la, c, ta in pieces:
+        coef = _series_safe(lambda t, la=la, c=c, ta=ta: lin(t, la, c, ta, g, gam))
+        M = _mul(flow(coef, a, b, scale=2 * arb.pi()), M)
+    return M
+
+
+def _mul(P, Q):
+    a, b, c, d = P
+    e, f, g, k = Q
+    return (a * e + b * g, a * f + b * k, c * e + d * g, c * f + d * k)
+
+
+# ---------------------------------------------------------------------------------------------
+# the Prüfer angle (double precision; locates the edge of each order)
+
+_COLUMN = {"G11": 0, "G21": 0, "G12": 1, "G22": 1}
+_ENTRY = {"G11": 0, "G12": 1, "G21": 2, "G22": 3}
+
+
+def sine_rotation(m: float, T: float, column: int, steps: int = 400) -> float:
+    """The angle (radians) by which the state ``(phi, l^2 dphi/ds)`` (``s = t/T``) of the
+    ``column``-th solution of ``G`` (0: starting at ``(1, 0)``, 1: at ``(0, 1)``) turns from
+    ``s = 1/4`` to ``3/4``, by RK4 on the Prüfer equation ``theta' = cos^2/l^2 + T^2 g l sin^2``
+    (double precision; strictly increasing in ``T``)."""
+    g = 4 * math.pi**2
+    k = T * T * g
+
+    def f(s, th):
+        l = 1 + m * math.sin(2 * math.pi * s)
+        c, sn = math.cos(th), math.sin(th)
+        return c * c / (l * l) + k * l * sn * sn
+
+    th0 = math.pi / 2 if column == 0 else 0.0
+    th = th0
+    h = 0.5 / steps
+    s = 0.25
+    for _ in range(steps):
+        k1 = f(s, th)
+        k2 = f(s + h / 2, th + h / 2 * k1)
+        k3 = f(s + h / 2, th + h / 2 * k2)
+        k4 = f(s + h, th + h * k3)
+        th += h / 6 * (k1 + 2 * k2 + 2 * k3 + k4)
+        s += h
+    return th - th0
+
+
+def _guess(m: float, n: int, column: int) -> float:
+    """The ``T`` at which the rotation is ``n pi/2`` (bisection on the monotone rotation)."""
+    target = n * math.pi / 2
+    steps = 200 + 120 * n
+    lo, hi = 0.02 * n, 0.8 * n + 0.5
+    while sine_rotation(m, lo, column, steps) > target:
+        lo /= 2
+    while sine_rotation(m, hi, column, steps) < target:
+        hi *= 2
+    for _ in range(60):
+        mid = (lo + hi) / 2
+        if sine_rotation(m, mid, column, steps) < target:
+            lo = mid
+        else:
+            hi = mid
+        if hi - lo < 1e-13 * hi:
+            break
+    return (lo + hi) / 2
+
+
+def _pair(n: int) -> tuple[str, str]:
+    return ("G11", "G22") if n % 2 else ("G12", "G21")
+
+
+def _refine(m: Fraction, e: int, x0: float, bits: int) -> arb:
+    """The secant method on ball midpoints at ``bits``, from ``x0``; returns the midpoint."""
+    with ctx.workprec(bits):
+
+        def F(T: arb) -> arb:
+            return sine_half_map(m, T)[e]
+
+        x1 = arb(x0)
+        x2 = arb(x0 * (1 + 1e-9))
+        f1, f2 = F(x1).mid(), F(x2).mid()
+        goal = arb(2) ** (-(bits - 8))
+        for _ in range(40):
+            if f2 == f1:
+                break
+            x3 = (x2 - f2 * (x2 - x1) / (f2 - f1)).mid()
+            x1, f1 = x2, f2
+            x2 = x3
+            f2 = F(x2).mid()
+            if abs(x2 - x1) < goal * abs(x2):
+                break
+        return x2
+
+
+def _enclose(m: Fraction, e: int, x: arb, bits: int) -> arb:
+    """A ball around ``x`` at whose ends entry ``e`` of ``G`` has proven opposite signs (so it
+    holds a zero), as narrow as the precision allows."""
+    with ctx.workprec(bits):
+        for k in range(bits - 24, 8, -8):
+            d = abs(x) * arb(2) ** (-k)
+            a, b = (x - d).mid(), (x + d).mid()
+            fa = sine_half_map(m, a)[e]
+            fb = sine_half_map(m, b)[e]
+            if (fa < 0 and fb > 0) or (fa > 0 and fb < 0):
+                return arb.union(a, b)
+    raise CertificationError("no sign change of the edge equation could be proven")
+
+
+def sine_boundary(order, m, *, digits=30):
+    """The certified edges of the ``order``-th interval of the sine modulation (no friction) as
+    a :class:`verify.solve.Boundary` (``delta_*``: ``T - n T_av/2``, the offset from the square
+    wave's tuning at the same depth, as for every modulation)."""
+    from analytic.system import system as make_system
+
+    from .solve import Boundary
+
+    n = as_order(order)
+    mm = exact_fraction(as_depth(m))
+    d = as_digits(digits)
+    bits = bits_for_digits(d + 6)
+    names = _pair(n)
+    balls = []
+    for name in names:
+        x0 = _guess(float(mm), n, _COLUMN[name])
+        x = _refine(mm, _ENTRY[name], x0, bits + 16)
+        balls.append(_enclose(mm, _ENTRY[name], x, bits + 16))
+    if balls[1] < balls[0]:
+        balls, names = balls[::-1], names[::-1]
+    lo, hi = balls
+    sysv = make_system("pendulum")
+    with ctx.workprec(bits + 16), mpmath.workdps(d + 10):
+        # the square wave's tuning n T_av/2 = n pi/omega_av (the offsets' reference)
+        w1, w2 = (arb(fmpq(w.numerator, w.denominator)).sqrt() for w in sysv.values(mm)[:2])
+        half = n / (w1 + w2)
+        parts = (lo, hi, lo - half, hi - half)
+        vals = [to_mpf(x) for x in parts]
+        radii = tuple(upper_mpf(arb(x.rad())) for x in parts)
+    notes = [
+        "sine modulation l = 1 + m sin(2 pi t/T); edges are zeros of "
+        f"{names[0]} and {names[1]} of the half-period map, each enclosed by a proven sign "
+        "change (validated Taylor integration in ball arithmetic); the order of each zero is "
+        "identified by the Prüfer angle in double precision (not proven)",
+    ]
+    if lo.overlaps(hi):
+        notes.append("the two edges could not be separated at this precision")
+    return Boundary(
+        order=n,
+        m=mm,
+        Q=None,
+        damping="exact",
+        digits=d,
+        method="certified",
+        exists=True,
+        lower=vals[0],
+        upper=vals[1],
+        delta_lower=vals[2],
+        delta_upper=vals[3],
+        radius=max(radii),
+        lower_enclosure=(vals[0] - radii[0], vals[0] + radii[0]),
+        upper_enclosure=(vals[1] - radii[1], vals[1] + radii[1]),
+        certified=True,
+        regime="sine modulation, validated Taylor route",
+        notes=tuple(notes),
+        radii=radii,
+        system=sysv,
+    )
+
+
+def check_sine(system, duty, Q=None) -> None:
+    """Refuse the sine modulation outside the pendulum with equal halves."""
+    name = getattr(system, "name", system)
+    if name != "pendulum":
+        raise InputError(
+            f"the sine modulation is implemented for the pendulum only, not for system {name!r}"
+        )
+    D = getattr(system, "duty", None)
+    D = Fraction(D) if D is not None else exact_fraction(as_depth(duty))
+    if D != Fraction(1, 2):
+        raise InputError(
+            f"the sine modulation has equal halves only: duty D = {D} is not allowed (D = 1/2)"
+        )
