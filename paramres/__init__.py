@@ -13,7 +13,8 @@ The public API, loaded on first use so that ``import paramres`` is fast:
 ``crossings`` (every closing of every interval), ``catalogue`` (the paper's numbered results,
 printed against derived), ``simulate`` (time-domain runs), ``report`` (the derivation report),
 ``multipliers`` (certified Floquet multipliers at a point), ``jump_validity`` (up to which
-switching time the instantaneous jump is a good model); ``system``/``custom`` describe the
+switching time the instantaneous jump is a good model), ``explore`` (the explorer in the
+browser; inline in a notebook); ``system``/``custom`` describe the
 oscillator (a member of the two-level family, with its duty), taken by every function above as
 ``system=``.  ``boundary`` and ``multipliers`` take ``modulation="ramp", switch_time=S`` for
 linear ramps of the length lasting ``S`` (units ``T0``) instead of jumps.
@@ -47,6 +48,7 @@ _API = {
     "report": ("reports.report", "build_report"),
     "multipliers": ("verify.modulation", "multipliers"),
     "jump_validity": ("verify.ramp", "jump_validity"),
+    "explore": ("reports.explorer", "explore"),
     "system": ("analytic.system", "system"),
     "custom": ("analytic.system", "custom"),
     "System": ("analytic.system", "System"),
