@@ -28,8 +28,10 @@ def register(subparsers) -> None:
         formatter_class=argparse.RawDescriptionHelpFormatter,
     )
     p.add_argument(
-        "--port", default="8765", metavar="N", help="port, 0 to 65535 (0: any free port; "
-        "default 8765)"
+        "--port",
+        default="8765",
+        metavar="N",
+        help="port, 0 to 65535 (0: any free port; default 8765)",
     )
     p.add_argument(
         "--host",

@@ -1,4 +1,4 @@
-"""The explorer's JSON endpoints: each one a function of the query parameters, calling the public API.
+"""The explorer's JSON endpoints: each a function of the query parameters, calling the public API.
 
 The parameters are named like the command line's options (``order``, ``m``, ``T``, ``Q``,
 ``damping``, ``digits``, ``system``, ``duty``, ``omega_sq``, ``jump``, ``modulation``,
@@ -147,7 +147,6 @@ def _friction(p: dict):
 
 
 def boundary(query: dict) -> dict:
-    from verify.modulation import boundary as certified
 
     p = _one(query, ("order", "m", "digits", "modulation", "switch_time", *_SYSTEM))
     if "order" not in p:
@@ -380,9 +379,9 @@ def simulate(query: dict) -> dict:
             "segments": [
                 {
                     "half": seg.half,
-                    "t": [_num(x, 10) for x in seg.t],
-                    "phi": [_num(x, 10) for x in seg.phi],
-                    "dphi": [_num(x, 10) for x in seg.dphi],
+                    "t": [_num(x, 15) for x in seg.t],
+                    "phi": [_num(x, 15) for x in seg.phi],
+                    "dphi": [_num(x, 15) for x in seg.dphi],
                 }
                 for seg in s.segments
             ],
@@ -428,10 +427,10 @@ PRESETS = [
     },
     {
         "id": "island",
-        "en": "The Q = 7 island of order 3 (exact friction)",
-        "ru": "Остров Q = 7 третьего порядка (точное трение)",
+        "en": "Q = 7: order 3 gone for 0.483 < m < 0.652, back above (exact friction)",
+        "ru": "Q = 7: третий порядок исчезает при 0.483 < m < 0.652 и возвращается выше",
         "chart": {"system": "pendulum", "Q": "7", "damping": "exact", "max_order": 4},
-        "point": {"T": "1.3", "m": "0.7"},
+        "point": {"T": "1.2", "m": "0.7"},
     },
     {
         "id": "torsion",
@@ -474,11 +473,11 @@ def warm_up_tasks() -> list:
 
     q = {"T": ["1.45"], "m": ["0.3"]}
     tasks = [
-        lambda: chart({"parts": ["growth"]}),
-        lambda: chart({"parts": ["edges"]}),
         generated_js,
+        lambda: chart({"parts": ["edges"]}),
         lambda: point(q),
         lambda: simulate({**q, "periods": ["2"]}),
+        lambda: point({**q, "modulation": ["ramp"], "switch_time": ["0.02"]}),
     ]
     for preset in PRESETS:
         c = {k: [v] for k, v in preset["chart"].items()}

@@ -4,8 +4,9 @@ The page animates the pendulum between the samples the server sends, and (in a s
 without a server) runs the linear model itself.  Everything it evaluates comes from here, printed
 by sympy's JavaScript printer (:func:`sympy.printing.jscode.jscode`), never typed again:
 
-* the free-oscillation map of ``(phi, phi')`` over a time ``t`` (:func:`analytic.stitching.propagator`
-  of :func:`analytic.model.segment`) for every damping model and regime, as a function of
+* the free-oscillation map of ``(phi, phi')`` over a time ``t``
+  (:func:`analytic.stitching.propagator` of :func:`analytic.model.segment`) for every damping
+  model and regime, as a function of
   ``(t, omega, gamma, Omega, Lambda)``;
 * ``Omega = sqrt(omega^2 - gamma^2)``, ``Lambda = sqrt(gamma^2 - omega^2)``
   (:func:`analytic.model.damped_frequency_relations`), ``gamma = pi/Q`` and ``omega0 = 2 pi``
@@ -20,7 +21,9 @@ lambdified to numpy.
 
 from __future__ import annotations
 
+import hashlib
 from functools import cache
+from pathlib import Path
 
 __all__ = ["generated_js", "PROPAGATOR_KINDS"]
 
@@ -51,7 +54,16 @@ def _js(expr, names) -> str:
 @cache
 def generated_js() -> str:
     """The text of the generated module: it defines ``window.PARAMRES_GEN`` with ``propagator``,
-    ``laws``, ``gammaOfQ``, ``Omega``, ``Lambda`` and ``omega0``."""
+    ``laws``, ``gammaOfQ``, ``Omega``, ``Lambda`` and ``omega0``.  Kept in the disk cache of
+    :mod:`analytic.cache` (keyed by the source of :mod:`analytic` and of this module), so that a
+    new server does not run sympy again."""
+    from analytic.cache import disk_cached
+
+    tag = hashlib.sha256(Path(__file__).read_bytes()).hexdigest()[:16]
+    return disk_cached(f"explorer_js_{tag}")(_build)()
+
+
+def _build() -> str:
     import sympy as sp
 
     from analytic.model import Damping, Regime, S, damped_frequency_relations, physical, segment

@@ -8,7 +8,8 @@
 ``{"error": "<one line>"}``, an unknown path 404, never a traceback (an unexpected failure is
 logged on the server's side and answered with a 500 line that says so).  The engine's work runs on
 **one worker thread**: mpmath's and Arb's working precision are process-wide, so two computations
-at once could disturb each other's digits; the HTTP threads wait for the worker at most
+at once could disturb each other's digits (the colour map alone, pure numpy, and the presets are
+answered on the HTTP thread without waiting); the HTTP threads wait for the worker at most
 :data:`REQUEST_SECONDS` and answer 503 (``{"error": "... took longer than ..."}``) past that.
 The explorer's caps (:data:`.api.LIMITS`: digits <= 100, grids <= 600 x 400, orders <= 12, runs
 <= 60 periods) keep each computation to seconds, so a request that timed out does not hold the
@@ -17,12 +18,12 @@ worker for long.  The server binds ``127.0.0.1`` unless another host is asked fo
 
 from __future__ import annotations
 
+import itertools
 import json
 import mimetypes
+import queue
 import sys
 import threading
-import itertools
-import queue
 from concurrent.futures import Future
 from concurrent.futures import TimeoutError as FutureTimeout
 from http.server import BaseHTTPRequestHandler, ThreadingHTTPServer
@@ -103,6 +104,17 @@ class _Handler(BaseHTTPRequestHandler):
         self._error(405, "the explorer answers GET requests only")
 
     def _static(self, name: str) -> None:
+        if name == "generated.js":  # sympy at work the first time: on the engine's worker
+            from .jsgen import generated_js
+
+            try:
+                if generated_js.cache_info().currsize:  # built already: no sympy, no waiting
+                    body = generated_js()
+                else:
+                    body = self.explorer._worker.submit(generated_js).result(self.explorer.timeout)
+            except FutureTimeout:
+                return self._error(503, "the generated script is not ready yet; reload")
+            return self._send(200, body.encode(), "text/javascript; charset=utf-8")
         body = static_file(name)
         if body is None:
             return self._error(404, f"no such file: {name[:80]}")
@@ -157,6 +169,14 @@ class Explorer:
 
     def run(self, name: str, params: dict) -> tuple[int, dict]:
         """The status and JSON document answering ``/api/<name>`` with ``params``."""
+        if _double_only(name, params):
+            try:
+                doc = api.handle(name, params)
+                if name == "presets":
+                    doc = {**doc, "warming": self._worker.warming}
+                return 200, doc
+            except InputError as exc:
+                return 400, {"error": " ".join(str(exc).split())}
         if not self._pending.acquire(blocking=False):
             return 503, {"error": "the explorer is busy; try again in a moment"}
         try:
@@ -212,12 +232,21 @@ class Explorer:
         self.stop()
 
 
+def _double_only(name: str, params: dict) -> bool:
+    """Requests that need no working precision: the presets, and the colour map alone (numpy,
+    :func:`verify.growth.growth_map` on the double-precision Floquet route); they are answered on
+    the HTTP thread at once, without waiting for the worker."""
+    return name == "presets" or (name == "chart" and params.get("parts") == ["growth"])
+
+
 class _Worker:
     """The one thread that runs the engine: requests first, warm-up tasks when it is idle."""
 
     def __init__(self):
         self._queue: queue.PriorityQueue = queue.PriorityQueue()
         self._count = itertools.count()
+        #: warm-up tasks not yet run
+        self.warming = 0
         self._thread = threading.Thread(target=self._loop, name="paramres-engine", daemon=True)
         self._thread.start()
 
@@ -228,7 +257,14 @@ class _Worker:
 
     def warm(self, tasks) -> None:
         for task in tasks:
-            self.submit(_quietly, task, priority=1)
+            self.warming += 1
+            self.submit(self._warm_one, task, priority=1)
+
+    def _warm_one(self, task) -> None:
+        try:
+            _quietly(task)
+        finally:
+            self.warming -= 1
 
     def stop(self) -> None:
         self._queue.put((-1, next(self._count), None, (), None))

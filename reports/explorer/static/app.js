@@ -48,7 +48,9 @@
     ramp_note: ['Ramps: the chart shows the square wave; clicks give the certified ramp values.',
       'Переходы: диаграмма для меандра; щелчок даёт доказанные значения с переходами.'],
     periods: ['periods', 'периодов'],
-    bob1: ['● phase 1 (bob down)', '● фаза 1 (груз внизу)'], bob2: ['● phase 2 (bob up)', '● фаза 2 (груз вверху)'], measured: ['measured growth', 'измеренный рост'],
+    bob1: ['● phase 1 (bob down)', '● фаза 1 (груз внизу)'], bob2: ['● phase 2 (bob up)', '● фаза 2 (груз вверху)'],
+    eq1: ['● phase 1 (equivalent pendulum, g/ω₁²)', '● фаза 1 (эквивалентный маятник, g/ω₁²)'],
+    eq2: ['● phase 2 (equivalent pendulum, g/ω₂²)', '● фаза 2 (эквивалентный маятник, g/ω₂²)'], measured: ['measured growth', 'измеренный рост'],
   };
   let lang = 'en';
   const say = (key) => (TEXT[key] ? TEXT[key][lang === 'ru' ? 1 : 0] : key);
@@ -121,12 +123,20 @@
     return STOPS[STOPS.length - 1][1];
   }
   function drawColorbar() {
-    const c = $('colorbar'), g = c.getContext('2d');
-    for (let i = 0; i < c.width; i++) {
-      const v = i < 20 ? -0.3 * (1 - i / 20) : -VSCALE * Math.log(1 - 0.999 * (i - 20) / (c.width - 21));
+    // the bar runs over x = 1 - exp(-v / VSCALE); a grey stub on the left is v <= 0
+    const c = $('colorbar'), g = c.getContext('2d'), stub = 20, bar = 12;
+    const at = (v) => stub + (1 - Math.exp(-v / VSCALE)) * (c.width - stub - 8);
+    for (let i = 0; i < c.width - 8; i++) {
+      const v = i < stub ? -0.3 * (1 - i / stub) : -VSCALE * Math.log(1 - (i - stub) / (c.width - stub - 8));
       const [r, gg, b] = colour(v);
       g.fillStyle = `rgb(${r},${gg},${b})`;
-      g.fillRect(i, 0, 1, c.height);
+      g.fillRect(i, 0, 1, bar);
+    }
+    g.fillStyle = '#374151'; g.font = '10px system-ui, sans-serif'; g.textAlign = 'center';
+    for (const v of [0, 0.25, 0.5, 1, 2]) {
+      const x = at(v);
+      g.fillRect(x, bar, 1, 3);
+      g.fillText(String(v), Math.min(x, c.width - 8), bar + 13);
     }
   }
   function xy(canvas) {
@@ -273,7 +283,7 @@
     point = { T: Number(T), m: eval_fraction(m) };
     drawChart();
     $('point').textContent = `T/T0 = ${T},  m = ${m}`;
-    $('point').dataset.T = T;
+    $('point').dataset.t = T;
     $('point').dataset.m = m;
     status('point-status', say('computing'));
     const o = options();
@@ -441,10 +451,10 @@
     // the effective length l = g/omega^2 in units of l0 (the pendulum's l0 (1 -+ m))
     const len = run.doc.omega_sq.map((w2) => 1 / w2);
     const lmax = Math.max(len[0], len[1]);
-    const scale = (H - 60) / lmax;
+    const scale = (H - 80) / lmax;
     // the linear model scales: its swing is shown scaled to a largest angle of 0.8 rad
     const shown = run.doc.nonlinear ? phi : 0.8 * phi / run.amax;
-    const px = W / 2, py = 24;
+    const px = W / 2, py = 44;
     g.fillStyle = '#9ca3af'; g.fillRect(px - 40, py - 6, 80, 6);
     const rod = lmax * scale, l = len[half - 1] * scale;
     const sx = Math.sin(shown), cy = Math.cos(shown);
@@ -457,9 +467,9 @@
     g.beginPath(); g.arc(px + l * sx, py + l * cy, 13, 0, 2 * Math.PI); g.fill();
     g.fillStyle = '#374151'; g.font = '12px system-ui, sans-serif'; g.textAlign = 'left';
     g.fillText(`t/T0 = ${t.toFixed(2)}`, 6, H - 8);
-    g.textAlign = 'right';
-    g.fillStyle = '#dc2626'; g.fillText(say('bob1'), W - 6, H - 24);
-    g.fillStyle = '#2563eb'; g.fillText(say('bob2'), W - 6, H - 8);
+    const bob = chart && chart.system && chart.system !== 'pendulum' ? 'eq' : 'bob';
+    g.fillStyle = '#dc2626'; g.fillText(say(bob + '1'), 6, 14);
+    g.fillStyle = '#2563eb'; g.fillText(say(bob + '2'), 6, 30);
   }
   let frame = 0;
   function animate(now) {
@@ -577,7 +587,7 @@
     clearTimeout(timer);
     timer = setTimeout(async () => {
       await loadChart();
-      if (point) await examine($('point').dataset.T, $('point').dataset.m);
+      if (point) await examine($('point').dataset.t, $('point').dataset.m);
     }, 150);
   }
   async function init() {
@@ -600,6 +610,7 @@
     await loadChart();
     requestAnimationFrame(animate);
   }
-  window.paramresApp = { stateAt, examine, loadChart, get run() { return run; }, get chart() { return chart; }, clientRun };
+  const pixelOf = (T, m) => { const P = xy($('chart')); return [P.x(T), P.y(m)]; };
+  window.paramresApp = { stateAt, examine, loadChart, pixelOf, get run() { return run; }, get chart() { return chart; }, clientRun };
   init();
 })();
