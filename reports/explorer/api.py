@@ -23,6 +23,8 @@ than the command line's, so that no request can keep the server busy for long). 
 
 from __future__ import annotations
 
+import hashlib
+import json
 import math
 from fractions import Fraction
 from functools import lru_cache
@@ -309,15 +311,34 @@ def _chart(sysv, Q, damping, tmin, tmax, mmin, mmax, nt, nm, max_order, parts) -
         g = growth_map(tau, ms, Q, damping, system=sysv, duty=sysv.duty)
         doc["growth"] = [[_num(x, 4) for x in row] for row in g]
     if "edges" in parts:
+        key = (sysv.as_json(), Q, damping, mmin, mmax, nm, max_order)
+        doc.update(_edges_cached(json.dumps(key, sort_keys=True), sysv, Q, damping, ms, max_order))
+    return doc
+
+
+def _edges_cached(key: str, sysv, Q, damping, ms, max_order) -> dict:
+    """The edges of orders ``1..max_order`` at the depths ``ms`` (:func:`verify.grid.boundary_grid`),
+    kept in the disk cache (:class:`analytic.cache.Cache`, keyed by the sources of the engine):
+    the first grid of a process derives its forms with sympy for seconds, a cached one is read
+    in milliseconds."""
+    from analytic.cache import Cache, cache_dir
+
+    def make() -> dict:
         from verify.grid import boundary_grid
 
         orders = list(range(1, max_order + 1))
         ms_edges = [float(f"{x:.12g}") for x in ms]
         e = boundary_grid(orders, ms_edges, Q=Q, damping=damping, system=sysv, duty=sysv.duty)
-        doc["orders"] = orders
-        doc["lower"] = [[_num(x) for x in e[i, 0]] for i in range(len(orders))]
-        doc["upper"] = [[_num(x) for x in e[i, 1]] for i in range(len(orders))]
-    return doc
+        return {
+            "orders": orders,
+            "lower": [[_num(x) for x in e[i, 0]] for i in range(len(orders))],
+            "upper": [[_num(x) for x in e[i, 1]] for i in range(len(orders))],
+        }
+
+    base = cache_dir()
+    name = "edges_" + hashlib.sha256(key.encode()).hexdigest()[:24]
+    store = Cache(None if base is None else base / "explorer", ("analytic", "verify", "paramres"))
+    return store.get(name, make)
 
 
 def _num(x, digits: int = 12):

@@ -42,6 +42,8 @@ REQUEST_SECONDS = 20.0
 MAX_QUERY = 4000
 #: requests waiting for the worker at once, beyond which the server answers 503 at once
 MAX_PENDING = 16
+#: seconds after the start when the rest of the warm-up begins if no chart was asked for
+WARM_DELAY = 5.0
 
 
 def static_file(name: str) -> bytes | None:
@@ -136,6 +138,8 @@ class _Handler(BaseHTTPRequestHandler):
             return self._error(400, "the query string cannot be read (name=value&name=value)")
         status, doc = self.explorer.run(name, params)
         self._json(status, doc)
+        if name == "chart" and params.get("parts") != ["growth"] and self.explorer._warm:
+            self.explorer._warm_rest()
 
 
 class Explorer:
@@ -201,10 +205,29 @@ class Explorer:
         finally:
             self._pending.release()
 
+    def _begin_warm_up(self) -> None:
+        """What the page asks for first (the generated script, the default chart's edges) is
+        built at once; the rest of the warm-up waits until the page has its first chart (or
+        :data:`WARM_DELAY` seconds), so that it does not hold up the first paint."""
+        if not self._warm:
+            return
+        tasks = api.warm_up_tasks()
+        self._worker.warm(tasks[:2])
+        self._rest = tasks[2:]
+        self._rest_lock = threading.Lock()
+        timer = threading.Timer(WARM_DELAY, self._warm_rest)
+        timer.daemon = True
+        timer.start()
+
+    def _warm_rest(self) -> None:
+        with self._rest_lock:
+            rest, self._rest = self._rest, []
+        if rest:
+            self._worker.warm(rest)
+
     def start(self) -> Explorer:
         """Serve on a background (daemon) thread; the engine warms up on the worker meanwhile."""
-        if self._warm:
-            self._worker.warm(api.warm_up_tasks())
+        self._begin_warm_up()
         self._thread = threading.Thread(
             target=self.httpd.serve_forever, name="paramres-explorer", daemon=True
         )
@@ -213,8 +236,7 @@ class Explorer:
 
     def serve_forever(self) -> None:
         """Serve in this thread until interrupted."""
-        if self._warm:
-            self._worker.warm(api.warm_up_tasks())
+        self._begin_warm_up()
         try:
             self.httpd.serve_forever()
         finally:
