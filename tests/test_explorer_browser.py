@@ -217,6 +217,7 @@ def test_the_generated_propagator_is_the_equation_of_motion(page):
         ("exact/critical", 0.52, 1.7, 1.7),
         ("exact/over", 0.44, 1.2, 2.9),
     ]
+    page.wait_for_function("() => window.PARAMRES_GEN")
     for key, t, w, g in cases:
         js = page.evaluate(
             """([key, t, w, g]) => {

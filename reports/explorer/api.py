@@ -317,7 +317,7 @@ def _chart(sysv, Q, damping, tmin, tmax, mmin, mmax, nt, nm, max_order, parts) -
 
 
 def _edges_cached(key: str, sysv, Q, damping, ms, max_order) -> dict:
-    """The edges of orders ``1..max_order`` at the depths ``ms`` (:func:`verify.grid.boundary_grid`),
+    """The edges of orders ``1..max_order`` at the depths ``ms`` (:func:`verify.grid.boundary_grid`)
     kept in the disk cache (:class:`analytic.cache.Cache`, keyed by the sources of the engine):
     the first grid of a process derives its forms with sympy for seconds, a cached one is read
     in milliseconds."""

@@ -113,7 +113,8 @@ class _Handler(BaseHTTPRequestHandler):
                 if generated_js.cache_info().currsize:  # built already: no sympy, no waiting
                     body = generated_js()
                 else:
-                    body = self.explorer._worker.submit(generated_js).result(self.explorer.timeout)
+                    future = self.explorer._worker.submit(generated_js)
+                    body = future.result(max(self.explorer.timeout, 120.0))
             except FutureTimeout:
                 return self._error(503, "the generated script is not ready yet; reload")
             return self._send(200, body.encode(), "text/javascript; charset=utf-8")

@@ -4,7 +4,13 @@
 // the sympy forms (static/generated.js).
 (function () {
   'use strict';
-  const GEN = window.PARAMRES_GEN;
+  // the generated script loads on its own (async): the chart does not wait for it, the motion does
+  let GEN = window.PARAMRES_GEN;
+  const genReady = new Promise((resolve) => {
+    const done = () => { GEN = window.PARAMRES_GEN; resolve(); };
+    if (GEN) done();
+    else document.getElementById('gen-script').addEventListener('load', done);
+  });
   const STATIC = !!window.PARAMRES_STATIC;
 
   // ---------------------------------------------------------------- text, English and Russian
@@ -340,6 +346,7 @@
     if ($('nonlinear').checked) { params.nonlinear = 1; params.periods = 24; }
     try {
       const doc = await getJSON('api/simulate?' + query(params));
+      await genReady;
       if (token !== runToken) return;
       startRun(doc);
     } catch (e) {
@@ -526,7 +533,8 @@
     doc.growth_per_period = mu;
     return doc;
   }
-  function examineStatic(T, m) {
+  async function examineStatic(T, m) {
+    await genReady;
     const doc = clientRun(Number(T), eval_fraction(m), chart.system, chart.duty);
     startRun(doc);
     $('mu1').textContent = $('mu2').textContent = '—';
