@@ -51,9 +51,13 @@
     scaled: ['angle shown scaled ×', 'угол показан в масштабе ×'],
     static_note: ['Static copy: precomputed charts, motion computed in the page (double precision, not certified).',
       'Статическая копия: готовые диаграммы, движение считается в странице (двойная точность, без доказательства).'],
-    ramp_note: ['Ramps: the chart shows the square wave; clicks give the certified ramp values.',
-      'Переходы: диаграмма для меандра; щелчок даёт доказанные значения с переходами.'],
+    ramp_note: ['Ramps: the chart and the motion are the square wave\'s; a click gives the certified values with ramps.',
+      'Переходы: диаграмма и движение — для меандра; щелчок даёт доказанные значения с переходами.'],
     periods: ['periods', 'периодов'],
+    phase_plot: ["phase trajectory: φ' against φ", "фазовая траектория: φ' от φ"],
+    nonlinear_run: ['nonlinear pendulum (sin φ, DOP853)', 'нелинейный маятник (sin φ, DOP853)'],
+    linear_run: ['linear model', 'линейная модель'], peak: ['peak', 'максимум'],
+    rotates: ['it went over the top and rotates', 'он перешёл через верх и вращается'],
     bob1: ['● phase 1 (bob down)', '● фаза 1 (груз внизу)'], bob2: ['● phase 2 (bob up)', '● фаза 2 (груз вверху)'],
     eq1: ['● phase 1 (equivalent pendulum, g/ω₁²)', '● фаза 1 (эквивалентный маятник, g/ω₁²)'],
     eq2: ['● phase 2 (equivalent pendulum, g/ω₂²)', '● фаза 2 (эквивалентный маятник, g/ω₂²)'], measured: ['measured growth', 'измеренный рост'],
@@ -66,6 +70,8 @@
     document.querySelectorAll('.lang button').forEach((b) => b.classList.toggle('on', b.dataset.lang === lang));
     fillPresets();
     updateNote();
+    if (lastPoint) showPoint(lastPoint);
+    if (run) motionStatus();
   }
 
   // ---------------------------------------------------------------- state and controls
@@ -313,7 +319,9 @@
     if (s.includes('/')) { const [a, b] = s.split('/'); return Number(a) / Number(b); }
     return Number(s);
   }
+  let lastPoint = null;
   function showPoint(doc) {
+    lastPoint = doc;
     const mu = doc.multipliers, b = doc.boundary;
     const z = (x) => (x.im === '0' ? x.re : `${x.re} ${x.im.startsWith('-') ? '−' : '+'} ${x.im.replace('-', '')} i`);
     $('mu1').textContent = z(mu.multipliers[0]);
@@ -397,8 +405,14 @@
     });
     const tEnd = doc.segments[doc.segments.length - 1].t.slice(-1)[0];
     run = { doc, phases: phases(doc), amax: amax || 1, vmax: vmax || 1, tEnd, t0: performance.now() };
-    const grow = doc.growth_per_period;
-    status('motion-status', `${doc.periods} ${say('periods')} · ${say('measured')} |μ| = ${grow === null ? '—' : grow.toPrecision(8)} · ${doc.nonlinear ? 'nonlinear (DOP853)' : 'linear'}`
+    motionStatus();
+  }
+  function motionStatus() {
+    const doc = run.doc, grow = doc.growth_per_period;
+    const what = doc.nonlinear
+      ? `${say('nonlinear_run')} · ${say('peak')} |φ| = ${doc.peak_amplitude.toPrecision(4)} rad` + (doc.rotates ? ` · ${say('rotates')}` : '')
+      : `${say('measured')} |μ| = ${grow === null ? '—' : grow.toPrecision(8)} · ${say('linear_run')}`;
+    status('motion-status', `${doc.periods} ${say('periods')} · ${what}`
       + (doc.nonlinear ? '' : ` · ${say('scaled')}${(0.8 / run.amax).toPrecision(2)}`));
   }
   function drawTrace(canvas, which, t) {
@@ -447,7 +461,7 @@
     const st = stateAt(t);
     if (st) { g.fillStyle = '#7c3aed'; g.beginPath(); g.arc(X(st[0]), Y(st[1]), 4, 0, 2 * Math.PI); g.fill(); }
     g.fillStyle = '#374151'; g.font = '12px system-ui, sans-serif';
-    g.fillText("φ' against φ", 6, 14);
+    g.fillText(say('phase_plot'), 6, 14);
   }
   function drawPendulum(canvas, t) {
     const g = canvas.getContext('2d'), W = canvas.width, H = canvas.height;
