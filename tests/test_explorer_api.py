@@ -265,3 +265,51 @@ def test_explore_in_python_returns_the_running_server(capsys):
         assert status == 200 and {p["id"] for p in doc["presets"]} >= {"fig2", "fig8", "closing"}
     finally:
         app.stop()
+
+
+def test_explore_in_a_notebook_returns_an_iframe(monkeypatch):
+    """With IPython running, ``paramres.explore()`` returns an ``IFrame`` of the page (a stand-in
+    IPython module here: the test does not need IPython installed)."""
+    import sys
+    import types
+
+    class IFrame:
+        def __init__(self, src, width, height):
+            self.src, self.width, self.height = src, width, height
+
+    ipython = types.ModuleType("IPython")
+    ipython.get_ipython = lambda: object()
+    display = types.ModuleType("IPython.display")
+    display.IFrame = IFrame
+    monkeypatch.setitem(sys.modules, "IPython", ipython)
+    monkeypatch.setitem(sys.modules, "IPython.display", display)
+    frame = paramres.explore(port=0)
+    try:
+        assert isinstance(frame, IFrame) and frame.src == frame.explorer.url
+        assert get(frame.explorer, "/api/presets")[0] == 200
+    finally:
+        frame.explorer.stop()
+
+
+def test_the_command_serves_until_stopped(tmp_path):
+    """``paramres explore --no-browser --port 0`` prints its address and serves the page."""
+    import subprocess
+    import sys
+
+    proc = subprocess.Popen(
+        [sys.executable, "-m", "paramres", "explore", "--no-browser", "--port", "0"],
+        stdout=subprocess.PIPE,
+        stderr=subprocess.PIPE,
+        text=True,
+        env={**os.environ, "PARAMRES_CACHE_DIR": str(tmp_path)},
+    )
+    try:
+        line = proc.stdout.readline()
+        assert line.startswith("paramres explorer: http://127.0.0.1:"), line
+        url = line.split()[2]
+        with urllib.request.urlopen(url, timeout=ANSWER_LIMIT) as r:
+            assert r.status == 200 and b'data-testid="chart"' in r.read()
+    finally:
+        proc.terminate()
+        proc.wait(30)
+    assert "Traceback" not in proc.stderr.read()

@@ -216,9 +216,9 @@ class Explorer:
         self._worker.warm(tasks[:2])
         self._rest = tasks[2:]
         self._rest_lock = threading.Lock()
-        timer = threading.Timer(WARM_DELAY, self._warm_rest)
-        timer.daemon = True
-        timer.start()
+        self._timer = threading.Timer(WARM_DELAY, self._warm_rest)
+        self._timer.daemon = True
+        self._timer.start()
 
     def _warm_rest(self) -> None:
         with self._rest_lock:
@@ -241,12 +241,16 @@ class Explorer:
         try:
             self.httpd.serve_forever()
         finally:
-            self.stop()
+            self.stop(wait=0)
 
-    def stop(self) -> None:
+    def stop(self, wait: float = 60.0) -> None:
+        """Stop serving; the engine's worker ends after the task it is running (waited for at
+        most ``wait`` s, so that no computation goes on beside the caller's)."""
+        if getattr(self, "_timer", None) is not None:
+            self._timer.cancel()
         self.httpd.shutdown() if self._thread is not None else None
         self.httpd.server_close()
-        self._worker.stop()
+        self._worker.stop(wait)
 
     def __enter__(self) -> Explorer:
         return self.start()
@@ -289,8 +293,11 @@ class _Worker:
         finally:
             self.warming -= 1
 
-    def stop(self) -> None:
+    def stop(self, wait: float = 60.0) -> None:
+        """End the thread after the task it is running (waiting for it at most ``wait`` s)."""
         self._queue.put((-1, next(self._count), None, (), None))
+        if threading.current_thread() is not self._thread:
+            self._thread.join(wait)
 
     def _loop(self) -> None:
         while True:
