@@ -291,7 +291,9 @@
   function decimal(x, digits) {
     return Number(x.toFixed(digits)).toString();
   }
+  let pointToken = 0;
   async function examine(T, m, order) {
+    const token = ++pointToken;  // a later click wins: an earlier answer arriving late is dropped
     point = { T: Number(T), m: eval_fraction(m) };
     drawChart();
     $('point').textContent = `T/T0 = ${T},  m = ${m}`;
@@ -307,10 +309,11 @@
     const sim = loadRun({ ...o, T, m, ...(order ? { order } : {}) });
     try {
       const doc = await getJSON('api/point?' + query({ ...q, digits: $('digits').value.trim() }));
+      if (token !== pointToken) return;
       showPoint(doc);
       status('point-status', `${Math.round(performance.now() - started)} ms · ` + (doc.multipliers.certified ? 'ball arithmetic (python-flint)' : ''));
     } catch (e) {
-      status('point-status', e.message, true);
+      if (token === pointToken) status('point-status', e.message, true);
     }
     await sim;
   }
