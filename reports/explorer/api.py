@@ -149,7 +149,7 @@ def _friction(p: dict):
 
 
 def boundary(query: dict) -> dict:
-
+    """The certified edges of the interval ``order`` at ``m`` (as ``paramres boundary --json``)."""
     p = _one(query, ("order", "m", "digits", "modulation", "switch_time", *_SYSTEM))
     if "order" not in p:
         raise InputError("order is required (1, 2, ...)")
@@ -185,6 +185,7 @@ def _boundary_doc(p: dict) -> dict:
 
 
 def multipliers(query: dict) -> dict:
+    """The certified multipliers at ``(T, m)`` (as ``paramres multipliers --json``)."""
     p = _one(query, ("T", "m", "digits", "modulation", "switch_time", *_SYSTEM))
     return _multipliers_doc(p)
 
