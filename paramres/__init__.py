@@ -14,7 +14,8 @@ The public API, loaded on first use so that ``import paramres`` is fast:
 printed against derived), ``simulate`` (time-domain runs), ``report`` (the derivation report),
 ``multipliers`` (certified Floquet multipliers at a point), ``jump_validity`` (up to which
 switching time the instantaneous jump is a good model), ``atlas`` (edges, growth map and
-thresholds over a grid as an xarray dataset, computed on dask); ``system``/``custom`` describe the
+thresholds over a grid as an xarray dataset, computed on dask), ``explore`` (the explorer in
+the browser; inline in a notebook); ``system``/``custom`` describe the
 oscillator (a member of the two-level family, with its duty), taken by every function above as
 ``system=``.  ``boundary`` and ``multipliers`` take ``modulation="ramp", switch_time=S`` for
 linear ramps of the length lasting ``S`` (units ``T0``) instead of jumps, and
@@ -50,6 +51,7 @@ _API = {
     "multipliers": ("verify.modulation", "multipliers"),
     "jump_validity": ("verify.ramp", "jump_validity"),
     "atlas": ("verify.atlas", "atlas"),
+    "explore": ("reports.explorer", "explore"),
     "system": ("analytic.system", "system"),
     "custom": ("analytic.system", "custom"),
     "System": ("analytic.system", "System"),

@@ -171,7 +171,9 @@ def _subcommands():
 @st.composite
 def argv_for(draw, tmp: Path):
     commands = _subcommands()
-    name = draw(st.sampled_from(sorted(commands)))
+    # `explore` serves until interrupted: its refusals and its endpoints are fuzzed in
+    # tests/test_explorer_api.py
+    name = draw(st.sampled_from(sorted(c for c in commands if c != "explore")))
     argv = [name]
     for action in commands[name]:
         required = action.required

@@ -1,0 +1,332 @@
+"""The explorer in a real browser: Debian's Chromium driven headless by Playwright.
+
+One browser per module.  Checked: the page loads without console errors and draws the chart (a
+screenshot that is not blank); a click at a known point shows the certified values that
+``/api/multipliers`` and ``/api/boundary`` give; moving a control redraws; a preset works; the
+animation runs; the generated JavaScript agrees with the Python side (the free-oscillation map
+against the matrix exponential of the equation of motion, computed by mpmath; the animation
+between samples against the server's samples); the static export draws and moves on its own.
+
+Without Chromium (or the ``playwright`` package) the tests skip and say why, unless
+``PARAMRES_REQUIRE_BROWSER=1`` (CI sets it), when they fail.  The screenshot of the page is
+written to ``$PARAMRES_SCREENSHOT_DIR`` (default: a temporary directory).
+"""
+
+from __future__ import annotations
+
+import functools
+import http.server
+import json
+import os
+import threading
+import urllib.request
+from pathlib import Path
+
+import mpmath
+import pytest
+
+CHROMIUM = "/usr/bin/chromium"
+ARGS = [
+    "--headless",
+    "--no-sandbox",
+    "--disable-gpu",
+    "--disable-quic",
+    "--no-first-run",
+    "--disable-background-networking",
+    "--disable-component-update",
+    "--disable-sync",
+]
+#: milliseconds the page may take for anything (generous: the machine may be loaded)
+WAIT = 120_000
+
+
+def _missing() -> str | None:
+    if not os.path.exists(CHROMIUM):
+        return f"no Chromium at {CHROMIUM} (Debian: apt-get install chromium)"
+    try:
+        import playwright.sync_api  # noqa: F401
+    except ImportError:
+        return "the playwright package is not installed (pip install -e '.[test]')"
+    return None
+
+
+@pytest.fixture(scope="module")
+def browser():
+    reason = _missing()
+    if reason:
+        if os.environ.get("PARAMRES_REQUIRE_BROWSER") == "1":
+            pytest.fail(f"PARAMRES_REQUIRE_BROWSER=1 but {reason}")
+        pytest.skip(reason)
+    from playwright.sync_api import sync_playwright
+
+    with sync_playwright() as p:
+        b = p.chromium.launch(executable_path=CHROMIUM, args=ARGS)
+        yield b
+        b.close()
+
+
+@pytest.fixture(scope="module")
+def server():
+    from reports.explorer.server import Explorer
+
+    app = Explorer(port=0, warm=False).start()
+    yield app
+    app.stop()
+
+
+@pytest.fixture(scope="module")
+def page(browser, server):
+    page = browser.new_page(viewport={"width": 1400, "height": 1000})
+    page.problems = []
+    page.on(
+        "console",
+        lambda m: page.problems.append(m.text) if m.type in ("error", "warning") else None,
+    )
+    page.on("pageerror", lambda e: page.problems.append(str(e)))
+    page.set_default_timeout(WAIT)
+    page.goto(server.url)
+    page.wait_for_function("() => window.paramresApp && window.paramresApp.chart && "
+                           "window.paramresApp.chart.lower")  # fmt: skip
+    yield page
+    page.close()
+
+
+def api(server, path: str) -> dict:
+    with urllib.request.urlopen(server.url + path, timeout=WAIT / 1000) as r:
+        return json.loads(r.read())
+
+
+def draws(page) -> int:
+    return int(page.get_attribute("[data-testid=chart]", "data-draws"))
+
+
+def click_at(page, T: float, m: float) -> None:
+    """Click the chart where ``(T, m)`` is drawn."""
+    x, y = page.evaluate(
+        """([T, m]) => {
+            const c = document.querySelector('[data-testid=chart]');
+            const r = c.getBoundingClientRect();
+            const p = window.paramresApp.pixelOf(T, m);
+            return [r.left + p[0] * r.width / c.width, r.top + p[1] * r.height / c.height];
+        }""",
+        [T, m],
+    )
+    page.mouse.click(x, y)
+
+
+def test_the_page_loads_and_draws_the_chart(page, tmp_path_factory):
+    assert page.problems == []
+    # the canvas holds the colour map: many colours, not one
+    colours = page.evaluate(
+        """() => {
+            const c = document.querySelector('[data-testid=chart]');
+            const d = c.getContext('2d').getImageData(0, 0, c.width, c.height).data;
+            const seen = new Set();
+            for (let i = 0; i < d.length; i += 4 * 97) seen.add(d[i] + ',' + d[i+1] + ',' + d[i+2]);
+            return seen.size;
+        }"""
+    )
+    assert colours > 50
+    where = Path(os.environ.get("PARAMRES_SCREENSHOT_DIR") or tmp_path_factory.mktemp("shots"))
+    shot = where / "explorer-chart.png"
+    page.locator("[data-testid=chart]").screenshot(path=str(shot))
+    import matplotlib.image
+
+    pixels = matplotlib.image.imread(str(shot))
+    assert pixels.std() > 0.1, "the screenshot of the chart is blank"
+
+
+def test_a_click_shows_the_certified_values_of_the_api(page, server):
+    click_at(page, 1.45, 0.3)
+    page.wait_for_function(
+        "() => document.querySelector('[data-testid=point-status]').textContent.includes('ms')"
+    )
+    T = page.get_attribute("[data-testid=point]", "data-t")
+    m = page.get_attribute("[data-testid=point]", "data-m")
+    assert abs(float(T) - 1.45) < 0.01 and abs(float(m) - 0.3) < 0.01
+    mu = api(server, f"api/multipliers?T={T}&m={m}&digits=30")
+    text = lambda tid: page.inner_text(f"[data-testid={tid}]").strip()  # noqa: E731
+    assert text("mu-max") == mu["max_modulus"]
+    assert text("growth") == mu["growth_rate"]
+    assert mu["max_modulus_error_bound"] in text("mu-bound")
+    assert text("mu1") == mu["multipliers"][0]["re"]
+    # (1.45, 0.3) lies inside the third interval (/api/boundary: [1.3411..., 1.5447...])
+    assert text("order") == "3"
+    b = api(server, f"api/boundary?order=3&m={m}&digits=30")
+    assert (text("edge-lower"), text("edge-upper")) == (b["lower"], b["upper"])
+    assert b["error_bound"] in text("edge-bound")
+    assert page.problems == []
+
+
+def test_moving_a_control_redraws_the_chart(page):
+    before = draws(page)
+    page.fill("[data-testid=max-order]", "3")
+    page.dispatch_event("[data-testid=max-order]", "input")
+    page.wait_for_function(
+        "n => Number(document.querySelector('[data-testid=chart]').dataset.draws) > n && "
+        "window.paramresApp.chart.orders && window.paramresApp.chart.orders.length === 3",
+        arg=before,
+    )
+    before = draws(page)
+    page.fill("[data-testid=Q]", "5")
+    page.dispatch_event("[data-testid=Q]", "change")
+    page.wait_for_function(
+        "n => Number(document.querySelector('[data-testid=chart]').dataset.draws) > n + 1 && "
+        "window.paramresApp.chart.Q === 5",
+        arg=before,
+    )
+    assert page.problems == []
+
+
+def test_a_preset_works(page, server):
+    page.select_option("[data-testid=preset]", "closing")
+    page.wait_for_function(
+        "() => document.querySelector('[data-testid=point]').dataset.m === '3/5' && "
+        "document.querySelector('[data-testid=point-status]').textContent.includes('ms')"
+    )
+    assert page.input_value("[data-testid=Q]") == ""
+    # the third interval closes at m = 3/5: both certified edges are the same number
+    lower = page.inner_text("[data-testid=edge-lower]").strip()
+    assert lower == page.inner_text("[data-testid=edge-upper]").strip()
+    assert lower == api(server, "api/boundary?order=3&m=3/5&digits=30")["lower"]
+    assert page.inner_text("[data-testid=order]").strip() == "3"
+
+
+def test_the_animation_runs(page):
+    page.wait_for_function("() => window.paramresApp.run !== null")
+    f0 = int(page.get_attribute("[data-testid=pendulum]", "data-frame"))
+    t0 = page.get_attribute("[data-testid=pendulum]", "data-t")
+    img0 = page.locator("[data-testid=pendulum]").screenshot()
+    page.wait_for_function(
+        "n => Number(document.querySelector('[data-testid=pendulum]').dataset.frame) > n + 5",
+        arg=f0,
+    )
+    assert page.get_attribute("[data-testid=pendulum]", "data-t") != t0
+    page.wait_for_timeout(300)
+    assert page.locator("[data-testid=pendulum]").screenshot() != img0
+
+
+def test_the_generated_propagator_is_the_equation_of_motion(page):
+    """The generated free-oscillation map against ``expm(t [[0, 1], [-w^2, -2 g]])`` (mpmath,
+    40 digits): the exact solution of ``phi'' + 2 g phi' + w^2 phi = 0`` over a time ``t``;
+    under-, critically and over-damped, and without friction.  The paper's model is not the
+    equation of motion: it is compared with the same sympy form lambdified by mpmath."""
+    cases = [  # (key, t, w, g)
+        ("none/under", 0.37, 5.1, 0.0),
+        ("exact/under", 0.61, 6.3, 0.45),
+        ("exact/critical", 0.52, 1.7, 1.7),
+        ("exact/over", 0.44, 1.2, 2.9),
+    ]
+    page.wait_for_function("() => window.PARAMRES_GEN")
+    for key, t, w, g in cases:
+        js = page.evaluate(
+            """([key, t, w, g]) => {
+                const G = window.PARAMRES_GEN;
+                const W = key === 'exact/under' ? G.Omega(w, g) : 0;
+                const L = key === 'exact/over' ? G.Lambda(w, g) : 0;
+                return G.propagator[key](t, w, g, W, L);
+            }""",
+            [key, t, w, g],
+        )
+        with mpmath.workdps(40):
+            A = mpmath.matrix([[0, 1], [-(mpmath.mpf(w) ** 2), -2 * mpmath.mpf(g)]])
+            U = mpmath.expm(A * t)
+            ref = [float(U[0, 0]), float(U[0, 1]), float(U[1, 0]), float(U[1, 1])]
+        scale = max(abs(x) for x in ref)
+        for a, b in zip(js, ref, strict=True):
+            assert abs(a - b) <= 1e-13 * scale, (key, js, ref)
+
+    from verify.timedomain import _propagator
+
+    f = _propagator("paper", "under", 1, "mpmath")
+    t, w, g = 0.61, 6.3, 0.45
+    js = page.evaluate(
+        "([t, w, g]) => window.PARAMRES_GEN.propagator['paper/under'](t, w, g, 0, 0)", [t, w, g]
+    )
+    with mpmath.workdps(30):
+        ref = [float(e(t, w, g, 0, 0)) for e in f]
+    assert all(abs(a - b) <= 1e-14 for a, b in zip(js, ref, strict=True)), (js, ref)
+
+    from fractions import Fraction
+
+    from analytic.system import LAWS
+
+    for name, law in LAWS.items():
+        got = page.evaluate(
+            "n => { const L = window.PARAMRES_GEN.laws[n]; "
+            "return [L.omega1_sq(0.3), L.omega2_sq(0.3), L.jump(0.3)]; }",
+            name,
+        )
+        exact = [float(f(Fraction(3, 10))) for f in (law.omega1_sq, law.omega2_sq, law.jump)]
+        assert got == pytest.approx(exact, rel=1e-15), name
+
+
+def test_the_motion_between_samples_agrees_with_the_server(page, server):
+    """The page's state at each sample time of the server's run (the generated propagator from
+    the start of the phase) is the server's sample (verify.timedomain, closed-form segments)."""
+    worst = page.evaluate(
+        """() => {
+            const run = window.paramresApp.run;
+            let worst = 0, amax = run.amax;
+            run.doc.segments.forEach((s) => s.t.forEach((t, k) => {
+                const st = window.paramresApp.stateAt(t);
+                worst = Math.max(worst, Math.abs(st[0] - s.phi[k]) / amax);
+            }));
+            return [worst, run.doc.segments.length, run.doc.nonlinear];
+        }"""
+    )
+    assert worst[1] >= 6 and worst[2] is False
+    assert worst[0] < 1e-11, worst  # the samples are sent with 15 significant digits
+
+
+def test_the_page_speaks_russian(page):
+    page.click("[data-testid=lang-ru]")
+    assert page.inner_text("h1").strip() == "Области параметрического возбуждения"
+    page.click("[data-testid=lang-en]")
+    assert page.inner_text("h1").strip() == "Regions of parametric excitation"
+
+
+def test_the_screenshot_for_the_readme(page, tmp_path_factory):
+    page.select_option("[data-testid=preset]", "fig2")
+    page.wait_for_function(
+        "() => document.querySelector('[data-testid=point]').dataset.t === '1.45' && "
+        "document.querySelector('[data-testid=point-status]').textContent.includes('ms') && "
+        "window.paramresApp.chart.lower && window.paramresApp.run"
+    )
+    page.wait_for_timeout(2500)  # let the pendulum swing a while
+    where = Path(os.environ.get("PARAMRES_SCREENSHOT_DIR") or tmp_path_factory.mktemp("shots"))
+    page.screenshot(path=str(where / "explorer.png"), full_page=True)
+    assert (where / "explorer.png").stat().st_size > 20_000
+    assert page.problems == []
+
+
+def test_the_static_export_draws_and_moves(browser, tmp_path):
+    import paramres
+    from reports.explorer.export import export
+
+    site = export(tmp_path / "site", presets=["fig2"])
+    handler = functools.partial(http.server.SimpleHTTPRequestHandler, directory=str(site))
+    handler.log_message = lambda *a: None
+    httpd = http.server.ThreadingHTTPServer(("127.0.0.1", 0), handler)
+    threading.Thread(target=httpd.serve_forever, daemon=True).start()
+    page = browser.new_page(viewport={"width": 1400, "height": 1000})
+    problems = []
+    page.on("pageerror", lambda e: problems.append(str(e)))
+    page.on("console", lambda m: problems.append(m.text) if m.type == "error" else None)
+    try:
+        page.set_default_timeout(WAIT)
+        page.goto(f"http://127.0.0.1:{httpd.server_address[1]}/")
+        page.wait_for_function("() => window.paramresApp.chart && window.paramresApp.chart.lower")
+        click_at(page, 1.45, 0.3)
+        page.wait_for_function("() => window.paramresApp.run !== null")
+        T = page.get_attribute("[data-testid=point]", "data-t")
+        m = page.get_attribute("[data-testid=point]", "data-m")
+        shown = float(page.inner_text("[data-testid=mu-max]"))
+        # the page's double-precision monodromy against the certified |mu|max
+        ref = float(paramres.multipliers(T, m, digits=20).as_json()["max_modulus"])
+        assert shown == pytest.approx(ref, rel=1e-9)
+        assert problems == []
+    finally:
+        page.close()
+        httpd.shutdown()
+        httpd.server_close()
