@@ -44,6 +44,7 @@ import numpy as np
 from .derived import (
     backend,
     edge_equation_linear,
+    edge_equation_trig,
     indicator,
     near_one_forms,
     order1_forms,
@@ -82,16 +83,45 @@ def _sgn(n) -> np.ndarray:
     return 1.0 - 2.0 * ((n // 2) % 2)
 
 
-def undamped_roots(n, r, beta, eps, *, iterations: int = 80):
+#: Halley steps of the fast path before a point is handed to the safeguarded iteration
+_FAST_STEPS = 8
+
+
+#: a Halley step below this (times ``K step^2``, checked) leaves the point converged
+_SMALL_STEP = 1e-7
+
+
+def _sin_cos_half(a):
+    """``sin(2a)``, ``cos(2a)`` from ``h = tan(a)``: ``2h/(1+h^2)``, ``(1-h)(1+h)/(1+h^2)``
+    (each to a few ulp): one transcendental call instead of two."""
+    h = np.tan(a)
+    q = 1.0 / (1.0 + h * h)
+    return 2.0 * h * q, (1.0 - h) * (1.0 + h) * q
+
+
+def _sin_cos(a):
+    """``sin(a)``, ``cos(a)`` from one tangent of the half angle (``h = tan(a/2)``: ``2h/(1+h^2)``,
+    ``(1-h)(1+h)/(1+h^2)``), each to a few ulp of 1: one transcendental call instead of two."""
+    h = np.tan(0.5 * a)
+    inv = 1.0 / (1.0 + h * h)
+    return 2.0 * h * inv, (1.0 - h) * (1.0 + h) * inv
+
+
+def undamped_roots(n, r, beta, eps, *, start=None, iterations: int = 80):
     """The root in ``(-pi/2, pi/2)`` of the edge equation ``eps`` (``+-1``) for order(s) ``n``;
     ``n``, ``r``, ``beta``, ``eps`` are broadcast together (orders of both parities may be mixed).
 
-    Safeguarded Halley iteration (the bracket starts as the window and shrinks with every sign
-    seen), started at ``asin(-k r f(beta c))``, the first fixed-point iterate; only the points not
-    yet converged are iterated further.  Returns float64 ``theta`` of the broadcast shape.
+    Started at ``asin(-k r f(beta c))`` (the first fixed-point iterate) improved by one Newton
+    step on the equation with ``f(beta (c + theta))`` linearised in ``theta``; then two Halley
+    steps on :func:`verify.derived.edge_equation_trig`, whose four sines are computed once and
+    moved along the first step by the addition theorems.  Where the first step is not small, the
+    result leaves the window, or Halley's error estimate after the second step is not below
+    rounding, the point is solved again by the safeguarded iteration (:func:`_safeguarded`: the
+    bracket starts as the window and shrinks with every sign seen; only the points not yet
+    converged are iterated).  ``start``: starting values (broadcast with the rest) to use
+    instead.  Returns float64 ``theta`` of the broadcast shape.
     """
-    lin, coef = edge_equation_linear()
-    fn = lin.compiled("numpy", (0, 1, 2))
+    _lin, coef = edge_equation_linear()
     n = np.asarray(n)
     c, sgn, odd = n * _HALF_PI, _sgn(n), (n % 2).astype(float)  # on the small array of orders
     c, sgn, odd, r, beta, eps = np.broadcast_arrays(
@@ -101,24 +131,82 @@ def undamped_roots(n, r, beta, eps, *, iterations: int = 80):
     c, sgn, odd, r, beta, eps = (
         np.ascontiguousarray(a).ravel() for a in (c, sgn, odd, r, beta, eps)
     )
-    # start: theta0 = asin(-k f(beta c)) (first fixed-point iterate), then one Newton step on the
-    # equation with f(beta (c + theta)) linearised in theta (no new transcendental functions)
-    sb, cb = np.sin(beta * c), np.cos(beta * c)
-    f0 = np.where(odd == 1, cb, sb)
-    f1 = np.where(odd == 1, -sb, cb)
-    k = eps * sgn * r * np.where(odd == 1, 1.0, -1.0)
-    s0 = np.clip(-k * f0, -1.0, 1.0)
-    th = np.arcsin(s0)
-    with np.errstate(divide="ignore", invalid="ignore"):
-        th1 = th - k * f1 * beta * th / (np.sqrt((1 - s0) * (1 + s0)) + k * f1 * beta)
-    th = np.where(np.isfinite(th1) & (np.abs(th1) < _HALF_PI), th1, th)
-    lo = np.full(th.shape, -_HALF_PI)
-    hi = np.full(th.shape, _HALF_PI)
-    idx = np.arange(th.size)
+    if start is None:
+        # start: theta0 = asin(-k f(beta c)) (first fixed-point iterate), then one Newton step on the
+        # equation with f(beta (c + theta)) linearised in theta (no new transcendental functions)
+        sb, cb = _sin_cos(beta * c)
+        isodd = odd == 1
+        f0 = np.where(isodd, cb, sb)
+        f1 = np.where(isodd, -sb, cb)
+        k = eps * sgn * r * np.where(isodd, 1.0, -1.0)
+        s0 = np.clip(-k * f0, -1.0, 1.0)
+        th = np.arcsin(s0)
+        kb = k * f1 * beta
+        with np.errstate(divide="ignore", invalid="ignore"):
+            th1 = th - kb * th / (np.sqrt((1 - s0) * (1 + s0)) + kb)
+        th = np.where(np.isfinite(th1) & (np.abs(th1) < _HALF_PI), th1, th)
+    else:
+        th = np.clip(np.broadcast_to(np.asarray(start, float), shape).ravel(), -1.57, 1.57)
     A, B = (
         np.asarray(v, float) * np.ones(th.shape)
         for v in coef.compiled("numpy", (0, 1))(sgn, eps, odd, r)
     )
+    start = th
+    trig = edge_equation_trig().compiled("numpy", (0, 1, 2))
+    # Halley steps, the arrays compacted to the points still moving once half of them stopped
+    idx = np.arange(th.size)
+    th = th.copy()
+    t, hb, bb, AA, BB = th, 0.5 * beta, beta, A, B
+    hbc = hb * c
+    done = np.zeros(th.size, bool)
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+        for it in range(_FAST_STEPS):
+            st, ct = _sin_cos_half(0.5 * t)
+            sy, cy = _sin_cos_half(hbc + hb * t)
+            f, d1, d2 = trig(st, ct, sy, cy, bb, AA, BB)
+            step = f / d1
+            h = 0.5 * d2 / d1
+            step /= 1.0 - step * h
+            t = t - step
+            a = np.abs(step)
+            moving = ~(a <= _SMALL_STEP)
+            last = it == _FAST_STEPS - 1
+            if not last and moving.sum() * 2 > moving.size:
+                continue
+            # Halley's error after the step is about K step^3, K = F3/(6 F1) - (F2/(2 F1))^2
+            # with |F3| <= 1 + r beta^3 <= 2: below 2^-57 (theta is an absolute angle next to
+            # c = n pi/2 >= pi/2; the order-1 edge where x = pi/2 + theta is small is solved in x
+            # by the caller)
+            stop = np.nonzero(~moving)[0]
+            sa, sd1, sh = a[stop], d1[stop], h[stop]
+            ok = (1.0 / (3.0 * np.abs(sd1)) + sh * sh) * (sa * sa * sa) <= 7e-18
+            ok &= np.abs(t[stop]) < _HALF_PI
+            th[idx] = t
+            done[idx[stop[ok]]] = True
+            if last or not moving.any():
+                break
+            moving[stop[~ok]] = True
+            idx, t, hb, hbc, bb, AA, BB = (
+                v[moving] for v in (idx, t, hb, hbc, bb, AA, BB)
+            )
+    if not done.all():
+        redo = np.nonzero(~done)[0]
+        th[redo] = _safeguarded(
+            start[redo], c[redo], beta[redo], A[redo], B[redo], iterations=iterations
+        )
+    return th.reshape(shape)
+
+
+def _safeguarded(th, c, beta, A, B, *, iterations: int = 80):
+    """Safeguarded Halley iteration on :func:`verify.derived.edge_equation_linear` from ``th``:
+    the bracket starts as the window ``(-pi/2, pi/2)`` and shrinks with every sign seen; only the
+    points not yet converged are iterated further."""
+    lin, _coef = edge_equation_linear()
+    fn = lin.compiled("numpy", (0, 1, 2))
+    th = np.array(th, float, copy=True)
+    lo = np.full(th.shape, -_HALF_PI)
+    hi = np.full(th.shape, _HALF_PI)
+    idx = np.arange(th.size)
     args = (c, beta, A, B)
     sub = args
     for _ in range(iterations):
@@ -147,15 +235,41 @@ def undamped_roots(n, r, beta, eps, *, iterations: int = 80):
         if not keep.all():
             idx = idx[keep]
             sub = tuple(a[idx] for a in args)
-    return th.reshape(shape)
+    return th
 
 
 def normal_edges(n, P, eps_pair=(1, -1)):
     """Both undamped edge roots ``(theta_eps=+1, theta_eps=-1)`` for parameters ``P``
     (arrays broadcast with ``n``)."""
     eps = np.array(eps_pair, float).reshape((len(eps_pair),) + (1,) * max(np.ndim(n), np.ndim(P.r)))
-    both = undamped_roots(np.asarray(n)[None], np.asarray(P.r)[None], np.asarray(P.beta)[None], eps)
+    n, r, beta = np.asarray(n), np.asarray(P.r), np.asarray(P.beta)
+    start = None
+    if beta.ndim == 1 and r.shape == beta.shape and beta.size >= _TABLE_MIN and n.ndim == 2:
+        start = _table_start(n, r, beta, eps)
+    both = undamped_roots(n[None], r[None], beta[None], eps, start=start)
     return tuple(both)
+
+
+#: grids with at least this many depths start from a table of roots at a few of their own depths
+_TABLE_MIN = 256
+_TABLE_NODES = 65
+
+
+def _table_start(n, r, beta, eps):
+    """Starting values for the roots at every depth: the roots at :data:`_TABLE_NODES` of the
+    depths (spread evenly in ``beta``), interpolated linearly in ``beta`` (each root is an
+    analytic function of the depth with the window theorem's one simple root, so the start is
+    right to ``O(h^2)`` and two Halley steps finish it)."""
+    order = np.argsort(beta, kind="stable")
+    pick = order[np.unique(np.linspace(0, beta.size - 1, _TABLE_NODES).round().astype(int))]
+    xb, keep = np.unique(beta[pick], return_index=True)
+    pick = pick[keep]
+    nodes = undamped_roots(n[None], r[pick][None], xb[None], eps)  # (len(eps), orders, nodes)
+    flat = nodes.reshape(-1, xb.size)
+    out = np.empty((flat.shape[0], beta.size))
+    for i, row in enumerate(flat):
+        out[i] = np.interp(beta, xb, row)
+    return out.reshape(nodes.shape[:-1] + (beta.size,))
 
 
 def _bisect_newton(f_and_df, lo, hi, x0, increasing, *, iterations=100, rtol=4e-16):
