@@ -206,7 +206,7 @@ def _threshold_raw(n, damping: str, prec: int) -> tuple[Series, Series]:
 def _check_terms(terms):
     from .series_result import _check_terms as check
 
-    return check(terms)
+    return check(terms, "friction")
 
 
 def threshold_series(order, terms: int = 4, *, damping: str = "exact") -> ThresholdSeries:

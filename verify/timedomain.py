@@ -9,7 +9,7 @@ Two models:
   to mpmath and numpy; the jump multiplies ``phi'`` by the derived ratio of the moments of inertia.
   Any precision (``digits``), everything inside ``mpmath.workdps``.
 * **nonlinear** (``phi'' + 2 gamma phi' + omega_i**2 sin phi = 0``): integrated between the jumps by
-  :func:`scipy.integrate.solve_ivp` (DOP853, explicit ``rtol``/``atol``), the same jump rule.
+  :class:`scipy.integrate.ode` (Hairer's DOP853, explicit ``rtol``/``atol``), the same jump rule.
 
 Where the run starts:
 
@@ -39,6 +39,7 @@ oscillation of the bob-down half through that state.
 
 from __future__ import annotations
 
+import functools
 import math
 from dataclasses import dataclass, field
 from fractions import Fraction
@@ -236,7 +237,8 @@ class Simulation:
     order) or ``1`` (even) in the amplitude norm; ``None`` elsewhere.  ``measured_multipliers``:
     from the stroboscopic sequence (one value when the start was an eigenvector).
     ``multipliers``: from :mod:`verify.floquet`.  ``envelope``: the largest ``|phi|`` in each
-    period (from the samples).
+    period (linear model: from the samples; nonlinear: the largest ``|phi|`` of the cubic Hermite
+    interpolant between the integrator's steps, the same curve the samples come from).
     """
 
     order: int
@@ -258,7 +260,6 @@ class Simulation:
     measured_multipliers: tuple
     multipliers: tuple
     interval: tuple | None
-    segments: tuple[Segment, ...] = field(repr=False)
     envelope: tuple[float, ...] = field(repr=False)
     method: str = ""
     rtol: float | None = None
@@ -266,6 +267,14 @@ class Simulation:
     saturation_estimate: float | None = None
     #: the member of the family (:mod:`analytic.system`)
     system: object = PAPER
+    #: the plotted segments, or a function computing them when first asked for (:attr:`segments`)
+    dense: object = field(default=(), repr=False, compare=False)
+
+    @functools.cached_property
+    def segments(self) -> tuple[Segment, ...]:
+        """The trajectory sampled for plotting, one :class:`Segment` per half period of the first
+        ``periods`` periods (computed on first use for the nonlinear model)."""
+        return tuple(self.dense() if callable(self.dense) else self.dense)
 
     # -- derived figures ---------------------------------------------------------------------
 
@@ -404,7 +413,9 @@ class Simulation:
 def amplitude_factor(A: float) -> float:
     """The period of the free pendulum of amplitude ``A`` over that of small swings,
     ``2 K(sin^2(A/2)) / pi`` (``K`` the complete elliptic integral of the first kind)."""
-    return float(2 * mpmath.ellipk(mpmath.sin(mpmath.mpf(A) / 2) ** 2) / mpmath.pi)
+    from scipy.special import ellipk
+
+    return float(2 * ellipk(math.sin(A / 2) ** 2) / math.pi)
 
 
 def _saturation_estimate(tau, interval) -> float | None:
@@ -419,7 +430,7 @@ def _saturation_estimate(tau, interval) -> float | None:
         return None
     target = t / lo
     a, b = 1e-9, math.pi - 1e-12
-    for _ in range(200):
+    for _ in range(60):  # the bracket, pi wide, below an ulp of the result
         c = (a + b) / 2
         if amplitude_factor(c) < target:
             a = c
@@ -428,10 +439,30 @@ def _saturation_estimate(tau, interval) -> float | None:
     return (a + b) / 2
 
 
+class _LazyStates:
+    """The stroboscopic states as mpmath numbers, converted when first used (a long nonlinear run
+    needs only the first few and the last two)."""
+
+    def __init__(self, strobe):
+        self._raw = strobe
+        self._done: dict = {}
+
+    def __len__(self) -> int:
+        return len(self._raw)
+
+    def __getitem__(self, k):
+        k = k % len(self._raw)
+        out = self._done.get(k)
+        if out is None:
+            a, b = self._raw[k]
+            out = self._done[k] = (mpmath.mpmathify(a), mpmath.mpmathify(b))
+        return out
+
+
 def _cayley_hamilton(strobe, digits):
     """Measured multipliers from the stroboscopic states (see the module docstring)."""
     with mpmath.workdps(digits + _GUARD):
-        S = [(mpmath.mpmathify(a), mpmath.mpmathify(b)) for a, b in strobe]
+        S = _LazyStates(strobe)
         tol = mpmath.mpf(10) ** (-(digits // 2))
         best, best_k = mpmath.mpf(-1), 0
         for k in range(len(S) - 2):
@@ -591,17 +622,19 @@ def simulate(
     steps = max(K, 2)
     loop = range(steps) if progress is None else progress(range(steps), total=steps)
     if nonlinear:
-        strobe, segments = _run_nonlinear(m, Q, tau, s0, loop, K, samples, rtol, atol, sysv)
-        with mpmath.workdps(work):
-            strobe_mp = [tuple(mpmath.mpf(float(x)) for x in s) for s in strobe]
+        strobe, segments, env = _run_nonlinear(m, Q, tau, s0, loop, K, samples, rtol, atol, sysv)
+        strobe_mp = _LazyStates(strobe)  # float states, read as mpf where used
         method = (
-            f"nonlinear pendulum (sin phi), scipy solve_ivp DOP853 between the jumps, "
+            f"nonlinear pendulum (sin phi), DOP853 (Hairer's code, scipy.integrate.ode) between "
+            f"the jumps, "
             f"rtol={rtol:g}, atol={atol:g}; "
             + ("exact friction" if Q is not None else "no friction")
         )
     else:
         strobe_mp, segments = _run_linear(m, Q, eff, tau, s0, loop, K, samples, work, sysv)
         strobe = strobe_mp
+        env = _envelope(segments, K)
+        segments = tuple(segments)
         method = (
             f"linear model, exact piecewise propagation (closed-form segments of "
             f"analytic.stitching.propagator and the jump rule) at {digits} digits; "
@@ -631,7 +664,6 @@ def simulate(
         tau_out = +tau
         interval_out = None if interval is None else tuple(+x for x in interval)
 
-    env = _envelope(segments, K)
     sat = _saturation_estimate(tau_out, interval_out) if nonlinear else None
     return Simulation(
         order=n,
@@ -653,7 +685,7 @@ def simulate(
         measured_multipliers=measured,
         multipliers=tuple(mus),
         interval=interval_out,
-        segments=tuple(segments),
+        dense=segments,
         envelope=env,
         method=method,
         rtol=rtol if nonlinear else None,
@@ -755,38 +787,128 @@ def _run_linear(m, Q, eff, tau, s0, loop, K, samples, work, system=PAPER):
 
 
 def _run_nonlinear(m, Q, tau, s0, loop, K, samples, rtol, atol, system=PAPER):
-    from scipy.integrate import solve_ivp
+    """The nonlinear pendulum, half period by half period: Hairer's DOP853 (the compiled code
+    behind :class:`scipy.integrate.ode`) from each jump to the next, the jump rule applied between
+    them.  The integrator's accepted steps are recorded as they come (``(t, phi, phi')``); the
+    samples of the plotted segments are interpolated from them afterwards, for all half periods at
+    once (:func:`_hermite_segments`): no dense output inside the loop."""
+    from scipy.integrate import ode
 
     W = system.values(m)
     w2 = [(2 * math.pi) ** 2 * float(W[0]), (2 * math.pi) ** 2 * float(W[1])]
     g = 0.0 if Q is None else math.pi / float(Q)
     k12 = float(W[2])
     lengths = (float(tau) * float(system.duty), float(tau) * (1 - float(system.duty)))
-    s = np.array([float(s0[0]), float(s0[1])])
+    cur = [w2[0]]
+    sin = math.sin
+
+    if g:
+
+        def rhs(t, y):
+            return [y[1], -2 * g * y[1] - cur[0] * sin(y[0])]
+
+    else:
+
+        def rhs(t, y):
+            return [y[1], -cur[0] * sin(y[0])]
+
+    steps: list = []
+    solver = ode(rhs).set_integrator("dop853", rtol=rtol, atol=atol, nsteps=10**7)
+    solver.set_solout(lambda t, y: steps.append((t, y[0], y[1])))
+    s = [float(s0[0]), float(s0[1])]
     strobe = [tuple(s)]
-    segments = []
+    halves = []  # (index of the first step of the half period, w^2) per recorded half period
+    jumps = (k12, 1 / k12)
     for k in loop:
         for h in (0, 1):
-            w = w2[h]
-            half = lengths[h]
-            tgrid = np.linspace(0.0, half, samples)
-
-            def rhs(t, y, w=w):
-                return [y[1], -2 * g * y[1] - w * math.sin(y[0])]
-
-            sol = solve_ivp(
-                rhs, (0.0, half), s, method="DOP853", rtol=rtol, atol=atol, dense_output=k < K
-            )
-            if not sol.success:  # pragma: no cover - DOP853 on a smooth right-hand side
-                raise RuntimeError(f"integration failed in period {k}: {sol.message}")
+            cur[0] = w2[h]
+            mark = len(steps)
             if k < K:
-                y = sol.sol(tgrid)
-                t0 = k * float(tau) + h * lengths[0]
-                segments.append(Segment(h + 1, t0 + tgrid, y[0], y[1]))
-            s = sol.y[:, -1].copy()
-            s[1] *= k12 if h == 0 else 1 / k12
+                halves.append(mark)
+            solver.set_initial_value(s, 0.0)
+            solver.integrate(lengths[h])
+            if not solver.successful():  # pragma: no cover - DOP853 on a smooth right-hand side
+                raise RuntimeError(f"integration failed in period {k} (half {h + 1})")
+            if k >= K:  # beyond the plotted periods: nothing kept
+                del steps[mark:]
+            y = solver.y
+            s = [float(y[0]), float(y[1]) * jumps[h]]
         strobe.append(tuple(s))
-    return strobe, segments
+    env = _hermite_envelope(steps, halves, w2, g, K)
+
+    def dense():
+        return _hermite_segments(steps, halves, lengths, tau, w2, g, samples)
+
+    return strobe, dense, env
+
+
+def _hermite_envelope(steps, halves, w2, g, K) -> tuple[float, ...]:
+    """The largest ``|phi|`` in each of the first ``K`` periods: on each interval between two
+    accepted steps the cubic Hermite interpolant of ``phi`` (values and slopes ``phi'`` at both
+    ends) takes its extreme values at the ends or where its derivative (a quadratic) vanishes."""
+    if not halves:
+        return tuple(float("nan") for _ in range(K))
+    arr = np.asarray(steps, float)
+    t, p, v = arr[:, 0], arr[:, 1], arr[:, 2]
+    starts = np.asarray(halves + [len(steps)])
+    inner = np.ones(len(steps), bool)
+    inner[starts[1:] - 1] = False  # the last step of a half period starts no interval
+    i = np.nonzero(inner)[0]
+    h = t[i + 1] - t[i]
+    p0, p1, m0, m1 = p[i], p[i + 1], h * v[i], h * v[i + 1]
+    b = -3 * p0 - 2 * m0 + 3 * p1 - m1
+    a = 2 * p0 + m0 - 2 * p1 + m1
+    best = np.maximum(np.abs(p0), np.abs(p1))
+    with np.errstate(invalid="ignore", divide="ignore"):
+        disc = np.sqrt(b * b - 3 * a * m0)
+        for x in ((-b + disc) / (3 * a), (-b - disc) / (3 * a), -m0 / (2 * b)):
+            ok = (x > 0) & (x < 1)
+            val = np.abs(((a * x + b) * x + m0) * x + p0)
+            best = np.where(ok & (val > best), val, best)
+    period = (np.searchsorted(starts[:-1], i, side="right") - 1) // 2  # period of each interval
+    env = np.zeros(K)
+    np.maximum.at(env, period, best)
+    return tuple(float(x) for x in env)
+
+
+def _hermite_segments(steps, halves, lengths, tau, w2, g, samples):
+    """The plotted segments from the accepted steps: cubic Hermite interpolation of ``phi`` (with
+    ``phi'``) and of ``phi'`` (with ``phi''`` from the equation of motion) between consecutive
+    steps, at ``samples`` equally spaced times of each half period; all half periods at once."""
+    if not halves:
+        return []
+    arr = np.asarray(steps, float)
+    t, phi, dphi = arr[:, 0], arr[:, 1], arr[:, 2]
+    starts = np.asarray(halves + [len(steps)])
+    nh = len(halves)
+    which = np.repeat(np.arange(nh), np.diff(starts))  # the half period of every step
+    w = np.where(which % 2 == 0, w2[0], w2[1])
+    acc = -2 * g * dphi - w * np.sin(phi)
+    L = 2.0 * max(lengths) + 1.0
+    keys = which * L + t
+    halflen = np.where(np.arange(nh) % 2 == 0, lengths[0], lengths[1])
+    u = np.linspace(0.0, 1.0, samples)
+    ts = halflen[:, None] * u[None, :]  # (nh, samples) local times
+    skeys = (np.arange(nh)[:, None] * L + ts).ravel()
+    i = np.searchsorted(keys, skeys, side="right") - 1
+    lo = np.repeat(starts[:-1], samples)
+    hi = np.repeat(starts[1:] - 2, samples)
+    i = np.minimum(np.maximum(i, lo), hi)
+    h = t[i + 1] - t[i]
+    with np.errstate(invalid="ignore", divide="ignore"):
+        x = np.where(h > 0, (ts.ravel() - t[i]) / h, 0.0)
+    x2 = x * x
+    h00, h10, h01, h11 = (1 + 2 * x) * (1 - x) ** 2, x * (1 - x) ** 2, x2 * (3 - 2 * x), x2 * (x - 1)
+    P = h00 * phi[i] + h10 * h * dphi[i] + h01 * phi[i + 1] + h11 * h * dphi[i + 1]
+    V = h00 * dphi[i] + h10 * h * acc[i] + h01 * dphi[i + 1] + h11 * h * acc[i + 1]
+    P, V = P.reshape(nh, samples), V.reshape(nh, samples)
+    tau = float(tau)
+    out = []
+    for j in range(nh):
+        k, half = divmod(j, 2)
+        t0 = k * tau + half * lengths[0]
+        out.append(Segment(half + 1, t0 + ts[j], P[j], V[j]))
+    return out
 
 
 def _envelope(segments, K) -> tuple[float, ...]:
