@@ -63,6 +63,31 @@ def _iroot(a: int, k: int) -> int | None:
     return lo if lo**k == a else None
 
 
+#: products of ring elements with more pairs of terms than this go through FLINT
+_FLINT_TERMS = 48
+
+
+def _mul_coeff_flint(nv: int, a: dict, b: dict) -> dict:
+    """The product of two Laurent polynomials (dicts) as one ``fmpq_mpoly`` product, exponents
+    shifted to be nonnegative and back (exact; no zero terms)."""
+    lo_a = [min(k[g] for k in a) for g in range(nv)]
+    lo_b = [min(k[g] for k in b) for g in range(nv)]
+    ctx = _mpoly_ctx(nv - 1) if nv else None
+    if ctx is None:
+        return {(): next(iter(a.values())) * next(iter(b.values()))}
+    pa = ctx.from_dict(
+        {tuple(x - y for x, y in zip(k, lo_a, strict=True)): v for k, v in a.items()}
+    )
+    pb = ctx.from_dict(
+        {tuple(x - y for x, y in zip(k, lo_b, strict=True)): v for k, v in b.items()}
+    )
+    lo = [x + y for x, y in zip(lo_a, lo_b, strict=True)]
+    return {
+        tuple(x + y for x, y in zip(k, lo, strict=True)): fmpq(v)
+        for k, v in (pa * pb).to_dict().items()
+    }
+
+
 class LaurentRing:
     """Laurent polynomials over ``Q`` in the generators ``gens``.
 
@@ -140,6 +165,9 @@ class LaurentRing:
     def mul(self, a: dict, b: dict) -> dict:
         if not a or not b:
             return {}
+        if len(a) * len(b) > _FLINT_TERMS:
+            out = _mul_coeff_flint(self.nvars, a, b)
+            return self._reduce(out) if self._rel_index is not None else out
         out: dict = {}
         for ka, va in a.items():
             for kb, vb in b.items():

@@ -17,7 +17,7 @@ MAX_TERMS = 40
 
 #: the largest number of terms per route, where a call still takes a few seconds: the cost grows
 #: about like ``K^3`` (frictionless, order 6: K = 30 about 1 s, K = 40 about 2.5 s; the closed
-#: forms in ``n``: K = 24 about 1.5 s, K = 40 about 10 s; with friction K = 12 takes several seconds)
+#: forms in ``n``: K = 24 about 1.5 s, K = 40 about 10 s; with friction K = 12 takes seconds)
 TERM_LIMITS = {"frictionless": MAX_TERMS, "parity": 24, "friction": 12, "family": 12}
 _ROUTE_WORDS = {
     "frictionless": "without friction",

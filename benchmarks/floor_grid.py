@@ -8,9 +8,9 @@ for odd ``n``, ``sin`` for even, ``c = n pi/2``) written as ``sin(theta) - k f(b
 0``; a blended start (the fixed-point iterate ``asin(k f(beta c))`` corrected by one Newton step on
 the equation linearised in ``theta``), two Halley steps on every point with the sines and cosines
 from half-angle tangents (two ``tan`` per step instead of four ``sin``/``cos``), then Halley steps
-on the compacted few that still move; ``T/T0 = (n/2 + theta/pi)/w``.  No input checks, no safeguards,
-no special forms near ``m = 1`` or for the order-1 edge that goes to 0 (so it is less accurate
-there than ours).
+on the compacted few that still move; ``T/T0 = (n/2 + theta/pi)/w``.  No input checks, no
+safeguards, no special forms near ``m = 1`` or for the order-1 edge that goes to 0 (so it is less
+accurate there than ours).
 
 Ours is the public ``paramres.boundary_grid`` (input checks, the exact ``1 - m`` of each depth,
 the forms for ``m -> 1``, the order-1 edge in ``x``, the error bound).
@@ -153,8 +153,13 @@ def _memory(edges: int) -> dict:
     cpu = time.process_time() - t
     peak = tracemalloc.get_traced_memory()[1]
     tracemalloc.stop()
-    return {"edges": 12 * depths.size, "peak_bytes": peak, "bytes_per_edge": peak / edges,
-            "cpu_seconds": cpu, "ns_per_edge": 1e9 * cpu / edges}
+    return {
+        "edges": 12 * depths.size,
+        "peak_bytes": peak,
+        "bytes_per_edge": peak / edges,
+        "cpu_seconds": cpu,
+        "ns_per_edge": 1e9 * cpu / edges,
+    }
 
 
 def scenes(quick: bool) -> list[dict]:
@@ -227,8 +232,11 @@ def _main(argv=None) -> int:  # pragma: no cover - a measurement
                 fn()
                 acc.append(time.process_time() - t)
         a, b = statistics.median(to), statistics.median(tf)
-        print(f"{sc['name']:<40} ours {a * 1e3:9.2f} ms  floor {b * 1e3:9.2f} ms  "
-              f"ratio {a / b:5.2f}  target {sc['target']}", flush=True)
+        print(
+            f"{sc['name']:<40} ours {a * 1e3:9.2f} ms  floor {b * 1e3:9.2f} ms  "
+            f"ratio {a / b:5.2f}  target {sc['target']}",
+            flush=True,
+        )
         if callable(sc.get("extra")) and "--extra" in argv:
             print("   ", sc["extra"](), flush=True)
     return 0

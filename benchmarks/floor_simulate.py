@@ -108,8 +108,11 @@ def _main(argv=None) -> int:  # pragma: no cover - a measurement
                 fn()
                 acc.append(time.process_time() - t)
         a, b = statistics.median(to), statistics.median(tf)
-        print(f"{sc['name']:<40} ours {a * 1e3:9.1f} ms  floor {b * 1e3:9.1f} ms  "
-              f"ratio {a / b:5.2f}  target {sc['target']}", flush=True)
+        print(
+            f"{sc['name']:<40} ours {a * 1e3:9.1f} ms  floor {b * 1e3:9.1f} ms  "
+            f"ratio {a / b:5.2f}  target {sc['target']}",
+            flush=True,
+        )
         if "--extra" in argv:
             print("   ", sc["extra"](), flush=True)
     return 0

@@ -122,3 +122,19 @@ def test_forty_terms_agree_with_twelve_and_with_the_certified_edge():
                 errs.append(abs(got - want) / abs(want))
             assert errs[0] <= mpmath.mpf(10) ** -48, (edge, errs)
             assert errs[0] * 10**6 <= errs[1], (edge, errs)
+
+
+@pytest.mark.parametrize("ring", _rings(), ids=["laurent", "relation"])
+def test_flint_coefficient_product_equals_the_plain_one(ring, monkeypatch):
+    rng = random.Random(7)
+    for _ in range(5):
+        a = _random_series(ring, 12, rng)
+        b = _random_series(ring, 12, rng)
+        x = ring.add(ring.mul(a.c[1], a.c[2]), a.c[3])  # elements with many terms
+        y = ring.add(ring.mul(b.c[4], b.c[5]), b.c[6])
+        fast = ring.mul(x, y)
+        monkeypatch.setattr(ps, "_FLINT_TERMS", 10**9)
+        assert fast == ring.mul(x, y)
+        monkeypatch.setattr(ps, "_FLINT_TERMS", 0)
+        assert fast == ring.mul(x, y)
+        monkeypatch.undo()

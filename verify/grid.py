@@ -132,8 +132,8 @@ def undamped_roots(n, r, beta, eps, *, start=None, iterations: int = 80):
         np.ascontiguousarray(a).ravel() for a in (c, sgn, odd, r, beta, eps)
     )
     if start is None:
-        # start: theta0 = asin(-k f(beta c)) (first fixed-point iterate), then one Newton step on the
-        # equation with f(beta (c + theta)) linearised in theta (no new transcendental functions)
+        # start: theta0 = asin(-k f(beta c)) (first fixed-point iterate), then one Newton step on
+        # the equation with f(beta (c + theta)) linearised in theta (no new transcendentals)
         sb, cb = _sin_cos(beta * c)
         isodd = odd == 1
         f0 = np.where(isodd, cb, sb)
@@ -566,20 +566,20 @@ def boundary_grid(orders, m, *, Q=None, damping="exact", system="pendulum", duty
     damping = as_damping(damping)
     out = np.full((len(orders), 2, dep.size), np.nan)
     doubt = np.zeros((len(orders), dep.size), bool)
+    chunk = max(256, CHUNK_EDGES // (2 * len(orders)))  # depths per block: bounded memory
     if sysv.is_paper:
-        cols = np.nonzero(dep.double)[0]
-        if cols.size:
+        served = dep.double
+        for cols in _blocks(np.nonzero(served)[0], chunk):
             part, part_doubt = _double_grid(orders, dep, cols, Qx, damping)
             out[:, :, cols] = part
             doubt[:, cols] = part_doubt
-        doubt[:, ~dep.double] = True
+        doubt[:, ~served] = True
     else:
         served = dep.double & (dep.om >= FAMILY_OM_MIN)
         if Qx is not None and damping == "exact":
             served[:] = False
-        cols = np.nonzero(served)[0]
-        if cols.size:
-            Qf = None if Qx is None else float(Qx)
+        Qf = None if Qx is None else float(Qx)
+        for cols in _blocks(np.nonzero(served)[0], chunk):
             P = normal_params(dep.m[cols], Qf, damping, _NP, sysv, om=dep.om[cols])
             part = np.full((len(orders), 2, cols.size), np.nan)
             doubt[:, cols] = _fill_normal(part, orders, dep.m[cols], P, damped=Qx is not None)
@@ -592,6 +592,16 @@ def boundary_grid(orders, m, *, Q=None, damping="exact", system="pendulum", duty
 
 #: other members of the family: depths closer to 1 than this go to the certified route
 FAMILY_OM_MIN = 1e-9
+
+#: the grid is computed in blocks of depths of about this many edges each (the working arrays
+#: of a block take some hundred bytes per edge; the result itself 16 bytes per depth and order)
+CHUNK_EDGES = 1 << 18
+
+
+def _blocks(cols, size: int):
+    """``cols`` in consecutive pieces of at most ``size``."""
+    for start in range(0, cols.size, size):
+        yield cols[start : start + size]
 
 
 def _certified_point(n: int, m: Fraction, Q, damping: str, system=None) -> tuple[float, float]:

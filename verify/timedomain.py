@@ -39,16 +39,11 @@ oscillation of the bob-down half through that state.
 
 from __future__ import annotations
 
-import functools
 import math
-from dataclasses import dataclass, field
 from fractions import Fraction
 from functools import cache
 
 import mpmath
-import numpy as np
-
-from analytic.system import PAPER, phase_regimes
 
 from .inputs import (
     InputError,
@@ -61,7 +56,11 @@ from .inputs import (
     as_quality,
     as_system,
 )
-from .params import exact_fraction
+from .pendulum_ode import amplitude_factor, run_nonlinear, saturation_estimate
+from .propagation import as_mp as _mp
+from .propagation import envelope as _envelope
+from .propagation import run_linear as _run_linear
+from .simulation import Segment, Simulation
 
 __all__ = [
     "Simulation",
@@ -117,48 +116,6 @@ def as_amplitude(A) -> Fraction:
 # the derived building blocks, lambdified once
 
 
-def _regime(m, Q, half: int, model: str, system=PAPER) -> str:
-    """``"under"``, ``"critical"`` or ``"over"``: the sign of ``omega_i**2 - gamma**2``
-    (:func:`analytic.system.phase_regimes`, exact for rational ``m`` and ``Q``)."""
-    if Q is None or model == "paper":
-        return "under"
-    mq = m if isinstance(m, Fraction) else exact_fraction(m)
-    Qq = Q if isinstance(Q, Fraction) else exact_fraction(Q)
-    return phase_regimes(system, mq, Qq, model)[half - 1]
-
-
-@cache
-def _propagator(model: str, regime: str, half: int, module: str):
-    """``(t, omega, gamma, Omega, Lambda) -> [[a, b], [c, d]]`` from
-    :func:`analytic.stitching.propagator` of the model's segment (the entries as four functions)."""
-    import sympy as sp
-
-    from analytic.model import Damping, Regime, S, segment
-    from analytic.stitching import propagator
-
-    damping = {"none": Damping.NONE, "paper": Damping.PAPER, "exact": Damping.EXACT}[model]
-    omega = S.omega1 if half == 1 else S.omega2
-    Omega = S.Omega1 if half == 1 else S.Omega2
-    Lam = S.Lambda1 if half == 1 else S.Lambda2
-    seg = segment(omega, S.A1, S.B1, damping, Regime(regime))
-    U = propagator(seg, S.t)
-    args = (S.t, omega, S.gamma, Omega, Lam)
-    return tuple(sp.lambdify(args, U[i, j], modules=module) for i in (0, 1) for j in (0, 1))
-
-
-@cache
-def _jump(module: str):
-    """The factor on ``phi'`` at the jumps 1 -> 2 and 2 -> 1 (:func:`analytic.model.jump_ratio`)."""
-    import sympy as sp
-
-    from analytic.model import S, jump_ratio
-
-    return (
-        sp.lambdify((S.m,), jump_ratio(1, 2), modules=module),
-        sp.lambdify((S.m,), jump_ratio(2, 1), modules=module),
-    )
-
-
 @cache
 def _initial_ratio(kind_value: str):
     """``phi'(0)/phi(0)`` on an undamped edge of the given shape, as ``(m, tau) -> (num, den)``:
@@ -203,240 +160,8 @@ def _edge_factors(parity_value: int):
     return out
 
 
-def _mp(x) -> mpmath.mpf:
-    if isinstance(x, Fraction):
-        return mpmath.mpf(x.numerator) / x.denominator
-    return mpmath.mpf(x)
-
-
 # ---------------------------------------------------------------------------------------------
-# the result
-
-
-@dataclass(frozen=True)
-class Segment:
-    """One half period of a trajectory, sampled for plotting (double precision).
-
-    ``half`` is 1 (bob down) or 2 (bob up); ``t`` runs over ``[t0, t0 + T/2]``; ``phi`` and ``dphi``
-    are the angle and the angular velocity (for the paper damping model: the model's velocity).
-    """
-
-    half: int
-    t: np.ndarray
-    phi: np.ndarray
-    dphi: np.ndarray
-
-
-@dataclass(frozen=True)
-class Simulation:
-    """A run and what was measured on it.
-
-    ``strobe``: the states ``(phi, phi')`` at ``t = kT`` (just after the jump into the bob-down
-    half), ``k = 0..max(periods, 2)`` (mpf for the linear model at ``digits``, float for the
-    nonlinear one).  ``closure_error``: on an edge, ``|s_P - s_0| / |s_0|`` with ``P = 2`` (odd
-    order) or ``1`` (even) in the amplitude norm; ``None`` elsewhere.  ``measured_multipliers``:
-    from the stroboscopic sequence (one value when the start was an eigenvector).
-    ``multipliers``: from :mod:`verify.floquet`.  ``envelope``: the largest ``|phi|`` in each
-    period (linear model: from the samples; nonlinear: the largest ``|phi|`` of the cubic Hermite
-    interpolant between the integrator's steps, the same curve the samples come from).
-    """
-
-    order: int
-    m: Fraction | mpmath.mpf
-    tau: mpmath.mpf
-    Q: Fraction | mpmath.mpf | None
-    damping: str
-    edge: str | None
-    edge_kind: str | None
-    nonlinear: bool
-    periods: int
-    amplitude: Fraction
-    digits: int
-    initial: tuple
-    strobe: tuple
-    closure_periods: int
-    closure_error: mpmath.mpf | float | None
-    max_return_error: mpmath.mpf | float | None
-    measured_multipliers: tuple
-    multipliers: tuple
-    interval: tuple | None
-    envelope: tuple[float, ...] = field(repr=False)
-    method: str = ""
-    rtol: float | None = None
-    atol: float | None = None
-    saturation_estimate: float | None = None
-    #: the member of the family (:mod:`analytic.system`)
-    system: object = PAPER
-    #: the plotted segments, or a function computing them when first asked for (:attr:`segments`)
-    dense: object = field(default=(), repr=False, compare=False)
-
-    @functools.cached_property
-    def segments(self) -> tuple[Segment, ...]:
-        """The trajectory sampled for plotting, one :class:`Segment` per half period of the first
-        ``periods`` periods (computed on first use for the nonlinear model)."""
-        return tuple(self.dense() if callable(self.dense) else self.dense)
-
-    # -- derived figures ---------------------------------------------------------------------
-
-    @property
-    def growth_per_period(self):
-        """The measured growth per period: the largest modulus of the measured multipliers."""
-        with mpmath.workdps(self.digits):
-            return +max(abs(mpmath.mpmathify(x)) for x in self.measured_multipliers)
-
-    @property
-    def floquet_multiplier(self):
-        """The Floquet multiplier of the largest modulus (:mod:`verify.floquet`)."""
-        return self.multipliers[0]
-
-    @property
-    def floquet_growth(self):
-        with mpmath.workdps(self.digits):
-            return +abs(mpmath.mpmathify(self.multipliers[0]))
-
-    @property
-    def growth_agreement(self):
-        """``|measured growth - max |mu|| / max |mu|``."""
-        with mpmath.workdps(self.digits):
-            g = self.floquet_growth
-            return abs(self.growth_per_period - g) / g
-
-    @property
-    def jump_times(self) -> np.ndarray:
-        return np.array([s.t[0] for s in self.segments[1:]])
-
-    @property
-    def peak_amplitude(self) -> float:
-        return max(self.envelope) if self.envelope else float("nan")
-
-    @property
-    def rotates(self) -> bool | None:
-        """Nonlinear runs: whether the pendulum went over the top (``|phi|`` passed ``pi``), after
-        which it rotates instead of swinging and the growth is no longer limited by the
-        amplitude-dependent period; ``None`` for the linear model."""
-        if not self.nonlinear:
-            return None
-        return bool(self.envelope) and max(self.envelope) > math.pi
-
-    def __str__(self) -> str:
-        def show(x, digits):
-            if x is None:
-                return "-"
-            with mpmath.workdps(max(digits, 15)):
-                return mpmath.nstr(mpmath.mpmathify(x), digits)
-
-        fr = "no friction" if self.Q is None else f"Q = {self.Q} ({self.damping} model)"
-        where = f"on the {self.edge} edge" if self.edge else "at a given period"
-        model = "nonlinear pendulum" if self.nonlinear else f"linear model, {self.digits} digits"
-        lines = [
-            f"Simulation: order {self.order}, m = {self.m}, {fr}, {self.periods} periods ({model})",
-            f"  T/T0 = {show(self.tau, min(self.digits, 20))} ({where})",
-        ]
-        if self.closure_error is not None:
-            lines.append(
-                f"  closure error after {self.closure_periods} T: {show(self.closure_error, 3)}"
-            )
-        lines.append(
-            f"  growth per period: measured {show(self.growth_per_period, 12)}, Floquet "
-            f"{show(self.floquet_growth, 12)}"
-        )
-        if self.nonlinear:
-            lines.append(f"  peak |phi| = {self.peak_amplitude:.6g} rad")
-            if self.rotates:
-                lines.append("  the pendulum went over the top (|phi| > pi): it rotates")
-        return "\n".join(lines)
-
-    @property
-    def inside(self) -> bool | None:
-        """Whether ``T`` lies strictly inside the interval of the order (``None``: none exists)."""
-        if self.interval is None:
-            return None
-        lo, hi = self.interval
-        return bool(lo < self.tau < hi)
-
-    def as_json(self) -> dict:
-        d = self.digits
-
-        def num(x):
-            if x is None:
-                return None
-            x = mpmath.mpmathify(x)
-            if isinstance(x, mpmath.mpc):
-                return {"re": float(x.real), "im": float(x.imag)}
-            return float(x)
-
-        def text(x):
-            if x is None:
-                return None
-            with mpmath.workdps(d):
-                return mpmath.nstr(mpmath.mpmathify(x), d, min_fixed=-5, max_fixed=5)
-
-        out = {
-            **self.system.as_json(),
-            "closure_error": num(self.closure_error),
-            "growth_per_period": num(self.growth_per_period),
-            "floquet_multiplier": num(self.floquet_multiplier),
-            "method": self.method,
-            "order": self.order,
-            "m": str(self.m),
-            "T": text(self.tau),
-            "Q": None if self.Q is None else str(self.Q),
-            "damping": self.damping,
-            "edge": self.edge,
-            "edge_kind": self.edge_kind,
-            "nonlinear": self.nonlinear,
-            "periods": self.periods,
-            "amplitude": float(self.amplitude),
-            "digits": None if self.nonlinear else d,
-            "initial": [text(x) for x in self.initial],
-            "closure_periods": self.closure_periods,
-            "max_return_error": num(self.max_return_error),
-            "measured_multipliers": [num(x) for x in self.measured_multipliers],
-            "floquet_multipliers": [num(x) for x in self.multipliers],
-            "growth_agreement": num(self.growth_agreement),
-            "interval": None if self.interval is None else [text(x) for x in self.interval],
-            "inside_interval": self.inside,
-        }
-        if self.nonlinear:
-            out["rtol"], out["atol"] = self.rtol, self.atol
-            out["peak_amplitude"] = self.peak_amplitude
-            out["rotates"] = self.rotates
-            out["saturation_estimate"] = self.saturation_estimate
-            out["envelope"] = list(self.envelope)
-        return out
-
-
-# ---------------------------------------------------------------------------------------------
-# the run
-
-
-def amplitude_factor(A: float) -> float:
-    """The period of the free pendulum of amplitude ``A`` over that of small swings,
-    ``2 K(sin^2(A/2)) / pi`` (``K`` the complete elliptic integral of the first kind)."""
-    from scipy.special import ellipk
-
-    return float(2 * ellipk(math.sin(A / 2) ** 2) / math.pi)
-
-
-def _saturation_estimate(tau, interval) -> float | None:
-    """The amplitude at which the lengthening of the free periods carries the lower edge of the
-    interval past ``T``: ``amplitude_factor(A) = T / T_-`` (adiabatic estimate; ``None`` when
-    ``T`` is not inside the interval)."""
-    if interval is None:
-        return None
-    lo, hi = (float(x) for x in interval)
-    t = float(tau)
-    if not lo < t < hi:
-        return None
-    target = t / lo
-    a, b = 1e-9, math.pi - 1e-12
-    for _ in range(60):  # the bracket, pi wide, below an ulp of the result
-        c = (a + b) / 2
-        if amplitude_factor(c) < target:
-            a = c
-        else:
-            b = c
-    return (a + b) / 2
+# what is measured on the trajectory
 
 
 class _LazyStates:
@@ -622,7 +347,7 @@ def simulate(
     steps = max(K, 2)
     loop = range(steps) if progress is None else progress(range(steps), total=steps)
     if nonlinear:
-        strobe, segments, env = _run_nonlinear(m, Q, tau, s0, loop, K, samples, rtol, atol, sysv)
+        strobe, segments, env = run_nonlinear(m, Q, tau, s0, loop, K, samples, rtol, atol, sysv)
         strobe_mp = _LazyStates(strobe)  # float states, read as mpf where used
         method = (
             f"nonlinear pendulum (sin phi), DOP853 (Hairer's code, scipy.integrate.ode) between "
@@ -664,7 +389,7 @@ def simulate(
         tau_out = +tau
         interval_out = None if interval is None else tuple(+x for x in interval)
 
-    sat = _saturation_estimate(tau_out, interval_out) if nonlinear else None
+    sat = saturation_estimate(tau_out, interval_out) if nonlinear else None
     return Simulation(
         order=n,
         m=m,
@@ -722,198 +447,3 @@ def _edge_kind(n: int, m, tau) -> str:
     vals = {kind: abs(f(_mp(m), tau)) for kind, f in factors.items()}
     return min(vals, key=vals.get).value
 
-
-def _frequencies(m, Q, eff, work, system=PAPER):
-    """``omega_i``, ``gamma``, ``Omega_i``, ``Lambda_i`` (the latter zero where not applicable),
-    from the system's description (``omega0 = 2 pi``)."""
-    with mpmath.workdps(work):
-        g = mpmath.mpf(0) if Q is None else mpmath.pi / _mp(Q)
-        out = []
-        W = system.values(m if system.uses_depth else None)[:2]
-        for half, Wi in ((1, W[0]), (2, W[1])):
-            w = 2 * mpmath.pi * mpmath.sqrt(_mp(Wi))
-            z = w * w - g * g
-            reg = _regime(m, Q, half, eff, system)
-            Om = mpmath.sqrt(z) if reg == "under" and eff == "exact" else mpmath.mpf(0)
-            La = mpmath.sqrt(-z) if reg == "over" else mpmath.mpf(0)
-            out.append((w, g, Om, La, reg))
-        return out
-
-
-def _run_linear(m, Q, eff, tau, s0, loop, K, samples, work, system=PAPER):
-    freqs = _frequencies(m, Q, eff, work, system)
-    U_mp = [_propagator(eff, freqs[h][4], h + 1, "mpmath") for h in (0, 1)]
-    U_np = [_propagator(eff, freqs[h][4], h + 1, "numpy") for h in (0, 1)]
-    with mpmath.workdps(work):
-        if system.is_paper:
-            j12, j21 = _jump("mpmath")
-            mm = _mp(m)
-            k12, k21 = j12(mm), j21(mm)
-        else:
-            k12 = _mp(Fraction(system.jump(m if system.uses_depth else None)))
-            k21 = 1 / k12
-        lengths = (tau * _mp(system.duty), tau - tau * _mp(system.duty))
-        maps = []
-        for h in (0, 1):
-            w, g, Om, La, _ = freqs[h]
-            maps.append([f(lengths[h], w, g, Om, La) for f in U_mp[h]])
-        tgrids = [np.linspace(0.0, float(lengths[h]), samples) for h in (0, 1)]
-        fl = [tuple(float(x) for x in freqs[h][:4]) for h in (0, 1)]
-        with np.errstate(all="ignore"):
-            dense = [
-                [
-                    np.broadcast_to(np.asarray(f(tgrids[h], *fl[h]), dtype=float), tgrids[h].shape)
-                    for f in U_np[h]
-                ]
-                for h in (0, 1)
-            ]
-        strobe = [s0]
-        segments = []
-        s = s0
-        for k in loop:
-            for h in (0, 1):
-                a, b, c, d = maps[h]
-                if k < K:  # the samples for plotting (beyond double range they become inf)
-                    p0, v0 = float(s[0]), float(s[1])
-                    A_, B_, C_, D_ = dense[h]
-                    with np.errstate(all="ignore"):
-                        phi, dphi = A_ * p0 + B_ * v0, C_ * p0 + D_ * v0
-                    t0 = float(k * tau + h * lengths[0])
-                    segments.append(Segment(h + 1, t0 + tgrids[h], phi, dphi))
-                s = (a * s[0] + b * s[1], c * s[0] + d * s[1])
-                s = (s[0], s[1] * (k12 if h == 0 else k21))
-            strobe.append(s)
-    return strobe, segments
-
-
-def _run_nonlinear(m, Q, tau, s0, loop, K, samples, rtol, atol, system=PAPER):
-    """The nonlinear pendulum, half period by half period: Hairer's DOP853 (the compiled code
-    behind :class:`scipy.integrate.ode`) from each jump to the next, the jump rule applied between
-    them.  The integrator's accepted steps are recorded as they come (``(t, phi, phi')``); the
-    samples of the plotted segments are interpolated from them afterwards, for all half periods at
-    once (:func:`_hermite_segments`): no dense output inside the loop."""
-    from scipy.integrate import ode
-
-    W = system.values(m)
-    w2 = [(2 * math.pi) ** 2 * float(W[0]), (2 * math.pi) ** 2 * float(W[1])]
-    g = 0.0 if Q is None else math.pi / float(Q)
-    k12 = float(W[2])
-    lengths = (float(tau) * float(system.duty), float(tau) * (1 - float(system.duty)))
-    cur = [w2[0]]
-    sin = math.sin
-
-    if g:
-
-        def rhs(t, y):
-            return [y[1], -2 * g * y[1] - cur[0] * sin(y[0])]
-
-    else:
-
-        def rhs(t, y):
-            return [y[1], -cur[0] * sin(y[0])]
-
-    steps: list = []
-    solver = ode(rhs).set_integrator("dop853", rtol=rtol, atol=atol, nsteps=10**7)
-    solver.set_solout(lambda t, y: steps.append((t, y[0], y[1])))
-    s = [float(s0[0]), float(s0[1])]
-    strobe = [tuple(s)]
-    halves = []  # (index of the first step of the half period, w^2) per recorded half period
-    jumps = (k12, 1 / k12)
-    for k in loop:
-        for h in (0, 1):
-            cur[0] = w2[h]
-            mark = len(steps)
-            if k < K:
-                halves.append(mark)
-            solver.set_initial_value(s, 0.0)
-            solver.integrate(lengths[h])
-            if not solver.successful():  # pragma: no cover - DOP853 on a smooth right-hand side
-                raise RuntimeError(f"integration failed in period {k} (half {h + 1})")
-            if k >= K:  # beyond the plotted periods: nothing kept
-                del steps[mark:]
-            y = solver.y
-            s = [float(y[0]), float(y[1]) * jumps[h]]
-        strobe.append(tuple(s))
-    env = _hermite_envelope(steps, halves, w2, g, K)
-
-    def dense():
-        return _hermite_segments(steps, halves, lengths, tau, w2, g, samples)
-
-    return strobe, dense, env
-
-
-def _hermite_envelope(steps, halves, w2, g, K) -> tuple[float, ...]:
-    """The largest ``|phi|`` in each of the first ``K`` periods: on each interval between two
-    accepted steps the cubic Hermite interpolant of ``phi`` (values and slopes ``phi'`` at both
-    ends) takes its extreme values at the ends or where its derivative (a quadratic) vanishes."""
-    if not halves:
-        return tuple(float("nan") for _ in range(K))
-    arr = np.asarray(steps, float)
-    t, p, v = arr[:, 0], arr[:, 1], arr[:, 2]
-    starts = np.asarray(halves + [len(steps)])
-    inner = np.ones(len(steps), bool)
-    inner[starts[1:] - 1] = False  # the last step of a half period starts no interval
-    i = np.nonzero(inner)[0]
-    h = t[i + 1] - t[i]
-    p0, p1, m0, m1 = p[i], p[i + 1], h * v[i], h * v[i + 1]
-    b = -3 * p0 - 2 * m0 + 3 * p1 - m1
-    a = 2 * p0 + m0 - 2 * p1 + m1
-    best = np.maximum(np.abs(p0), np.abs(p1))
-    with np.errstate(invalid="ignore", divide="ignore"):
-        disc = np.sqrt(b * b - 3 * a * m0)
-        for x in ((-b + disc) / (3 * a), (-b - disc) / (3 * a), -m0 / (2 * b)):
-            ok = (x > 0) & (x < 1)
-            val = np.abs(((a * x + b) * x + m0) * x + p0)
-            best = np.where(ok & (val > best), val, best)
-    period = (np.searchsorted(starts[:-1], i, side="right") - 1) // 2  # period of each interval
-    env = np.zeros(K)
-    np.maximum.at(env, period, best)
-    return tuple(float(x) for x in env)
-
-
-def _hermite_segments(steps, halves, lengths, tau, w2, g, samples):
-    """The plotted segments from the accepted steps: cubic Hermite interpolation of ``phi`` (with
-    ``phi'``) and of ``phi'`` (with ``phi''`` from the equation of motion) between consecutive
-    steps, at ``samples`` equally spaced times of each half period; all half periods at once."""
-    if not halves:
-        return []
-    arr = np.asarray(steps, float)
-    t, phi, dphi = arr[:, 0], arr[:, 1], arr[:, 2]
-    starts = np.asarray(halves + [len(steps)])
-    nh = len(halves)
-    which = np.repeat(np.arange(nh), np.diff(starts))  # the half period of every step
-    w = np.where(which % 2 == 0, w2[0], w2[1])
-    acc = -2 * g * dphi - w * np.sin(phi)
-    L = 2.0 * max(lengths) + 1.0
-    keys = which * L + t
-    halflen = np.where(np.arange(nh) % 2 == 0, lengths[0], lengths[1])
-    u = np.linspace(0.0, 1.0, samples)
-    ts = halflen[:, None] * u[None, :]  # (nh, samples) local times
-    skeys = (np.arange(nh)[:, None] * L + ts).ravel()
-    i = np.searchsorted(keys, skeys, side="right") - 1
-    lo = np.repeat(starts[:-1], samples)
-    hi = np.repeat(starts[1:] - 2, samples)
-    i = np.minimum(np.maximum(i, lo), hi)
-    h = t[i + 1] - t[i]
-    with np.errstate(invalid="ignore", divide="ignore"):
-        x = np.where(h > 0, (ts.ravel() - t[i]) / h, 0.0)
-    x2 = x * x
-    h00, h10, h01, h11 = (1 + 2 * x) * (1 - x) ** 2, x * (1 - x) ** 2, x2 * (3 - 2 * x), x2 * (x - 1)
-    P = h00 * phi[i] + h10 * h * dphi[i] + h01 * phi[i + 1] + h11 * h * dphi[i + 1]
-    V = h00 * dphi[i] + h10 * h * acc[i] + h01 * dphi[i + 1] + h11 * h * acc[i + 1]
-    P, V = P.reshape(nh, samples), V.reshape(nh, samples)
-    tau = float(tau)
-    out = []
-    for j in range(nh):
-        k, half = divmod(j, 2)
-        t0 = k * tau + half * lengths[0]
-        out.append(Segment(half + 1, t0 + ts[j], P[j], V[j]))
-    return out
-
-
-def _envelope(segments, K) -> tuple[float, ...]:
-    env = []
-    for k in range(K):
-        parts = segments[2 * k : 2 * k + 2]
-        env.append(float(max(np.max(np.abs(p.phi)) for p in parts)) if parts else float("nan"))
-    return tuple(env)
