@@ -91,14 +91,6 @@ _FAST_STEPS = 8
 _SMALL_STEP = 1e-7
 
 
-def _sin_cos_half(a):
-    """``sin(2a)``, ``cos(2a)`` from ``h = tan(a)``: ``2h/(1+h^2)``, ``(1-h)(1+h)/(1+h^2)``
-    (each to a few ulp): one transcendental call instead of two."""
-    h = np.tan(a)
-    q = 1.0 / (1.0 + h * h)
-    return 2.0 * h * q, (1.0 - h) * (1.0 + h) * q
-
-
 def _sin_cos(a):
     """``sin(a)``, ``cos(a)`` from one tangent of the half angle (``h = tan(a/2)``: ``2h/(1+h^2)``,
     ``(1-h)(1+h)/(1+h^2)``), each to a few ulp of 1: one transcendental call instead of two."""
@@ -112,26 +104,31 @@ def undamped_roots(n, r, beta, eps, *, start=None, iterations: int = 80):
     ``n``, ``r``, ``beta``, ``eps`` are broadcast together (orders of both parities may be mixed).
 
     Started at ``asin(-k r f(beta c))`` (the first fixed-point iterate) improved by one Newton
-    step on the equation with ``f(beta (c + theta))`` linearised in ``theta``; then two Halley
-    steps on :func:`verify.derived.edge_equation_trig`, whose four sines are computed once and
-    moved along the first step by the addition theorems.  Where the first step is not small, the
-    result leaves the window, or Halley's error estimate after the second step is not below
-    rounding, the point is solved again by the safeguarded iteration (:func:`_safeguarded`: the
-    bracket starts as the window and shrinks with every sign seen; only the points not yet
-    converged are iterated).  ``start``: starting values (broadcast with the rest) to use
-    instead.  Returns float64 ``theta`` of the broadcast shape.
+    step on the equation with ``f(beta (c + theta))`` linearised in ``theta``, or at ``start``
+    (starting values broadcast with the rest, e.g. from :func:`_table_start`); then Halley steps
+    on :func:`verify.derived.edge_equation_trig` (its four sines computed once per step), the
+    arrays compacted to the points still moving once half of them have stopped.  A point stops
+    when Halley's error estimate ``K step^3`` is below ``2^-57`` (an absolute angle next to ``c =
+    n pi/2``; the order-1 edge whose ``x = pi/2 + theta`` is small is solved in ``x`` by the
+    caller).  Points that leave the window or do not stop within :data:`_FAST_STEPS` steps are
+    solved again by the safeguarded iteration (:func:`_safeguarded`: the bracket starts as the
+    window and shrinks with every sign seen).  Returns float64 ``theta`` of the broadcast
+    shape.
     """
     _lin, coef = edge_equation_linear()
     n = np.asarray(n)
     c, sgn, odd = n * _HALF_PI, _sgn(n), (n % 2).astype(float)  # on the small array of orders
-    c, sgn, odd, r, beta, eps = np.broadcast_arrays(
-        c, sgn, odd, np.asarray(r, float), np.asarray(beta, float), np.asarray(eps, float)
-    )
-    shape = c.shape
-    c, sgn, odd, r, beta, eps = (
-        np.ascontiguousarray(a).ravel() for a in (c, sgn, odd, r, beta, eps)
-    )
+    r, beta, eps = np.asarray(r, float), np.asarray(beta, float), np.asarray(eps, float)
+    shape = np.broadcast(c, r, beta, eps).shape
+    # the coefficients on the unbroadcast arrays (orders x signs, depths), then one full array
+    A, B = coef.compiled("numpy", (0, 1))(sgn, eps, odd, r)
+
+    def full(a):
+        return np.ascontiguousarray(np.broadcast_to(np.asarray(a, float), shape)).ravel()
+
     if start is None:
+        c, sgn, odd, r, eps = (full(a) for a in (c, sgn, odd, r, eps))
+        beta = full(beta)
         # start: theta0 = asin(-k f(beta c)) (first fixed-point iterate), then one Newton step on
         # the equation with f(beta (c + theta)) linearised in theta (no new transcendentals)
         sb, cb = _sin_cos(beta * c)
@@ -146,23 +143,22 @@ def undamped_roots(n, r, beta, eps, *, start=None, iterations: int = 80):
             th1 = th - kb * th / (np.sqrt((1 - s0) * (1 + s0)) + kb)
         th = np.where(np.isfinite(th1) & (np.abs(th1) < _HALF_PI), th1, th)
     else:
-        th = np.clip(np.broadcast_to(np.asarray(start, float), shape).ravel(), -1.57, 1.57)
-    A, B = (
-        np.asarray(v, float) * np.ones(th.shape)
-        for v in coef.compiled("numpy", (0, 1))(sgn, eps, odd, r)
-    )
+        c, beta = full(c), full(beta)
+        th = np.clip(full(start), -1.57, 1.57)
+    A, B = full(A), full(B)
     start = th
     trig = edge_equation_trig().compiled("numpy", (0, 1, 2))
     # Halley steps, the arrays compacted to the points still moving once half of them stopped
     idx = np.arange(th.size)
     th = th.copy()
-    t, hb, bb, AA, BB = th, 0.5 * beta, beta, A, B
-    hbc = hb * c
+    t, bb, AA, BB = th, beta, A, B
+    bc = beta * c
     done = np.zeros(th.size, bool)
     with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
         for it in range(_FAST_STEPS):
-            st, ct = _sin_cos_half(0.5 * t)
-            sy, cy = _sin_cos_half(hbc + hb * t)
+            st, ct = np.sin(t), np.cos(t)  # to half an ulp: the last step's residual is the error
+            y = bc + bb * t
+            sy, cy = np.sin(y), np.cos(y)
             f, d1, d2 = trig(st, ct, sy, cy, bb, AA, BB)
             step = f / d1
             h = 0.5 * d2 / d1
@@ -186,9 +182,7 @@ def undamped_roots(n, r, beta, eps, *, start=None, iterations: int = 80):
             if last or not moving.any():
                 break
             moving[stop[~ok]] = True
-            idx, t, hb, hbc, bb, AA, BB = (
-                v[moving] for v in (idx, t, hb, hbc, bb, AA, BB)
-            )
+            idx, t, bc, bb, AA, BB = (v[moving] for v in (idx, t, bc, bb, AA, BB))
     if not done.all():
         redo = np.nonzero(~done)[0]
         th[redo] = _safeguarded(
@@ -297,6 +291,39 @@ def _bisect_newton(f_and_df, lo, hi, x0, increasing, *, iterations=100, rtol=4e-
     return x
 
 
+def _bisect_newton_compact(fn, args, lo, hi, x0, increasing: bool, *, iterations=100, rtol=4e-16):
+    """:func:`_bisect_newton` for ``fn(x, *args) -> (f, df)`` on arrays: everything broadcast to
+    one shape, and each point dropped from the iteration once it has converged (the same rule per
+    point), so that the few slow points do not keep the whole array iterating."""
+    shape = np.broadcast(np.asarray(x0), np.asarray(lo), np.asarray(hi), *args).shape
+    flat = [np.broadcast_to(np.asarray(a, float), shape).ravel() for a in (x0, lo, hi, *args)]
+    x, lo, hi, args = flat[0].copy(), flat[1].copy(), flat[2].copy(), flat[3:]
+    out = x.copy()
+    idx = np.arange(x.size)
+    sign = 1.0 if increasing else -1.0
+    sub = args
+    with np.errstate(divide="ignore", invalid="ignore"):
+        for _ in range(iterations):
+            f, df = fn(x, *sub)
+            f, df = sign * np.asarray(f, float), sign * np.asarray(df, float)
+            lo = np.where(f < 0, x, lo)
+            hi = np.where(f > 0, x, hi)
+            step = f / df
+            xn = x - step
+            scale = np.maximum(np.abs(x), 1e-300)
+            small = np.abs(step) <= 0.5 * rtol * scale
+            bad = ~((xn > lo) & (xn < hi) | small) | ~np.isfinite(xn)
+            xn = np.where(bad, 0.5 * (lo + hi), xn)
+            out[idx] = xn
+            stop = small | (f == 0) | (hi - lo <= rtol * scale) | ~np.isfinite(x)
+            if stop.all():
+                break
+            keep = ~stop
+            idx, x, lo, hi = idx[keep], xn[keep], lo[keep], hi[keep]
+            sub = tuple(a[idx] for a in args)
+    return out.reshape(shape)
+
+
 def damped_normal(n, P):
     """Friction, normal form: ``dict(a, b, top, lo, hi)`` of float64 ``theta`` arrays (one parity):
     the undamped-form bracket ``[a, b]``, the maximiser ``top`` of ``D`` and the edges (NaN where
@@ -319,15 +346,15 @@ def damped_normal(n, P):
     top = np.where(d1a <= 0, a, b)
     if inside.any():
         x0 = 0.5 * (a + b)
-        root = _bisect_newton(lambda x: dd(x, *args), a, b, x0, False)
+        root = _bisect_newton_compact(dd, args, a, b, x0, False)
         top = np.where(inside, root, top)
     dtop = np.asarray(d01(top, *args)[0], float) * np.ones(shape)
     exists = dtop > 0
     lo = np.full(shape, np.nan)
     hi = np.full(shape, np.nan)
     if exists.any():
-        e_lo = _bisect_newton(lambda x: d01(x, *args), a, top, 0.5 * (a + top), True)
-        e_hi = _bisect_newton(lambda x: d01(x, *args), top, b, 0.5 * (top + b), False)
+        e_lo = _bisect_newton_compact(d01, args, a, top, 0.5 * (a + top), True)
+        e_hi = _bisect_newton_compact(d01, args, top, b, 0.5 * (top + b), False)
         lo = np.where(exists, e_lo, np.nan)
         hi = np.where(exists, e_hi, np.nan)
     return {"a": a, "b": b, "top": top, "dtop": dtop, "lo": lo, "hi": hi}
@@ -743,7 +770,7 @@ def _order1_lower(P, cols, x_hi, eps=None, *, x_theta=None, doubt=False):
 #: the order-1 lower edge is solved in ``x`` (:func:`_order1_lower`) where ``x`` is below this,
 #: without and with friction (an absolute error of ``theta`` is a relative error of ``x`` amplified
 #: by ``1/x``; with friction the indicator's error estimate asks for the wider range)
-ORDER1_X = 0.5
+ORDER1_X = 1.0
 ORDER1_X_DAMPED = 1.0
 
 #: below this ``1 - beta`` (``m > 0.975``) the grid polishes with the forms for ``m -> 1``
