@@ -175,7 +175,7 @@ def edge_series(
     from paramres.inputs import InputError, as_damping, as_quality
 
     order = _check_order(order)
-    terms = _check_terms(terms)
+    terms = _check_terms(terms)  # the widest range first: a bad value names the general limit
     if units not in ("T0", "Tav"):
         raise InputError(f"units {units!r} is not one of: T0, Tav")
     Qv = as_quality(Q)
@@ -193,11 +193,14 @@ def edge_series(
             )
         from .family_series import family_edge_series
 
+        _check_terms(terms, "family")
         return family_edge_series(order, terms, units, system)
     if Qv is not None:
         from .thresholds import near_threshold_edges
 
+        _check_terms(terms, "friction")
         return near_threshold_edges(order, terms, Q=Qv, damping=as_damping(damping), units=units)
+    _check_terms(terms, "parity" if isinstance(order, str) else "frictionless")
     return _frictionless(order, terms, units)
 
 

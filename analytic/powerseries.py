@@ -22,6 +22,7 @@ for; :meth:`Series.to_sympy` maps back.  Nothing here knows about pendulums.
 
 from __future__ import annotations
 
+import functools
 import math
 from collections.abc import Iterable, Mapping, Sequence
 
@@ -60,6 +61,31 @@ def _iroot(a: int, k: int) -> int | None:
         else:
             hi = mid
     return lo if lo**k == a else None
+
+
+#: products of ring elements with more pairs of terms than this go through FLINT
+_FLINT_TERMS = 48
+
+
+def _mul_coeff_flint(nv: int, a: dict, b: dict) -> dict:
+    """The product of two Laurent polynomials (dicts) as one ``fmpq_mpoly`` product, exponents
+    shifted to be nonnegative and back (exact; no zero terms)."""
+    lo_a = [min(k[g] for k in a) for g in range(nv)]
+    lo_b = [min(k[g] for k in b) for g in range(nv)]
+    ctx = _mpoly_ctx(nv - 1) if nv else None
+    if ctx is None:
+        return {(): next(iter(a.values())) * next(iter(b.values()))}
+    pa = ctx.from_dict(
+        {tuple(x - y for x, y in zip(k, lo_a, strict=True)): v for k, v in a.items()}
+    )
+    pb = ctx.from_dict(
+        {tuple(x - y for x, y in zip(k, lo_b, strict=True)): v for k, v in b.items()}
+    )
+    lo = [x + y for x, y in zip(lo_a, lo_b, strict=True)]
+    return {
+        tuple(x + y for x, y in zip(k, lo, strict=True)): fmpq(v)
+        for k, v in (pa * pb).to_dict().items()
+    }
 
 
 class LaurentRing:
@@ -139,6 +165,9 @@ class LaurentRing:
     def mul(self, a: dict, b: dict) -> dict:
         if not a or not b:
             return {}
+        if len(a) * len(b) > _FLINT_TERMS:
+            out = _mul_coeff_flint(self.nvars, a, b)
+            return self._reduce(out) if self._rel_index is not None else out
         out: dict = {}
         for ka, va in a.items():
             for kb, vb in b.items():
@@ -228,6 +257,50 @@ class LaurentRing:
         return sp.Add(*terms)
 
 
+#: products of series with more pairs of nonzero coefficients than this go through FLINT
+_FLINT_PAIRS = 8
+
+
+@functools.cache
+def _mpoly_ctx(nvars: int):
+    from flint import fmpq_mpoly_ctx
+
+    return fmpq_mpoly_ctx.get(tuple(f"x{i}" for i in range(nvars + 1)), "lex")
+
+
+def _mul_flint(R: LaurentRing, a, b, nz_a, nz_b, P: int) -> list:
+    """The coefficients ``0 .. P`` of the product of the series with coefficients ``a`` and
+    ``b`` (nonzero at ``nz_a``, ``nz_b``), as one product of multivariate polynomials over ``Q``
+    in FLINT (``fmpq_mpoly``): the series variable is one more generator, and the Laurent
+    exponents are shifted to be nonnegative (by the smallest exponent of each generator) and
+    back.  Exact: the same coefficients as the term-by-term product, reduced by the ring's
+    relation afterwards."""
+    nv = R.nvars
+    lo_a = [min(k[g] for i in nz_a for k in a[i]) for g in range(nv)]
+    lo_b = [min(k[g] for j in nz_b for k in b[j]) for g in range(nv)]
+    da = {}
+    for i in nz_a:
+        for k, v in a[i].items():
+            da[(i,) + tuple(x - y for x, y in zip(k, lo_a, strict=True))] = v
+    db = {}
+    for j in nz_b:
+        if j > P:
+            break
+        for k, v in b[j].items():
+            db[(j,) + tuple(x - y for x, y in zip(k, lo_b, strict=True))] = v
+    ctx = _mpoly_ctx(nv)
+    prod = ctx.from_dict(da) * ctx.from_dict(db)
+    lo = [x + y for x, y in zip(lo_a, lo_b, strict=True)]
+    out: list = [{} for _ in range(P + 1)]
+    for k, v in prod.to_dict().items():
+        i = k[0]
+        if i <= P:
+            out[i][tuple(x + y for x, y in zip(k[1:], lo, strict=True))] = fmpq(v)
+    if R._rel_index is not None:
+        out = [R._reduce(c) for c in out]
+    return out
+
+
 class Series:
     """``sum(c[k] * var**k for k in range(P + 1))``, coefficients in ``ring``; ``P`` = ``prec``."""
 
@@ -311,6 +384,8 @@ class Series:
         a, b = self.c, other.c
         nz_a = [i for i in range(P + 1) if a[i]]
         nz_b = [j for j in range(P + 1) if b[j]]
+        if len(nz_a) * len(nz_b) > _FLINT_PAIRS:
+            return Series(R, _mul_flint(R, a, b, nz_a, nz_b, P))
         out = [{} for _ in range(P + 1)]
         for i in nz_a:
             for j in nz_b:
@@ -401,22 +476,60 @@ class Series:
                 total = total + power * c
         return total
 
+    def _pair(self, sign: int) -> tuple[Series, Series]:
+        """``(sin u, cos u)`` (``sign = -1``) or ``(sinh u, cosh u)`` (``sign = +1``) of ``u`` =
+        ``self`` without constant term, from ``s' = c u'``, ``c' = sign s u'``: ``k s_k = sum_j
+        j u_j c_(k-j)``, ``k c_k = sign sum_j j u_j s_(k-j)`` -- as many coefficient products as
+        one series product (the Taylor sum needs one per power)."""
+        if self.c[0]:
+            raise ValueError("elementary function of a series with a constant term")
+        R = self.ring
+        P = self.prec
+        du = [(j, R.scale(self.c[j], j)) for j in range(1, P + 1) if self.c[j]]
+        s_, c_ = [{}], [R.one]
+        for k in range(1, P + 1):
+            acc_s: dict = {}
+            acc_c: dict = {}
+            for j, uj in du:
+                if j > k:
+                    break
+                if c_[k - j]:
+                    acc_s = R.add(acc_s, R.mul(uj, c_[k - j]))
+                if s_[k - j]:
+                    acc_c = R.add(acc_c, R.mul(uj, s_[k - j]))
+            s_.append(R.scale(acc_s, fmpq(1, k)))
+            c_.append(R.scale(acc_c, fmpq(sign, k)))
+        return Series(R, s_), Series(R, c_)
+
     def sin(self) -> Series:
-        return self._taylor(
-            lambda k: 0 if k % 2 == 0 else fmpq((-1) ** (k // 2), math.factorial(k))
-        )
+        return self._pair(-1)[0]
 
     def cos(self) -> Series:
-        return self._taylor(lambda k: 0 if k % 2 else fmpq((-1) ** (k // 2), math.factorial(k)))
+        return self._pair(-1)[1]
 
     def sinh(self) -> Series:
-        return self._taylor(lambda k: 0 if k % 2 == 0 else fmpq(1, math.factorial(k)))
+        return self._pair(1)[0]
 
     def cosh(self) -> Series:
-        return self._taylor(lambda k: 0 if k % 2 else fmpq(1, math.factorial(k)))
+        return self._pair(1)[1]
 
     def exp(self) -> Series:
-        return self._taylor(lambda k: fmpq(1, math.factorial(k)))
+        """``e = exp(u)`` from ``e' = e u'``: ``k e_k = sum_j j u_j e_(k-j)``."""
+        if self.c[0]:
+            raise ValueError("elementary function of a series with a constant term")
+        R = self.ring
+        P = self.prec
+        du = [(j, R.scale(self.c[j], j)) for j in range(1, P + 1) if self.c[j]]
+        e = [R.one]
+        for k in range(1, P + 1):
+            acc: dict = {}
+            for j, uj in du:
+                if j > k:
+                    break
+                if e[k - j]:
+                    acc = R.add(acc, R.mul(uj, e[k - j]))
+            e.append(R.scale(acc, fmpq(1, k)))
+        return Series(R, e)
 
     def compose(self, inner: Series) -> Series:
         """``self(inner)`` for ``inner`` without constant term (Horner)."""

@@ -9,10 +9,22 @@ import sympy as sp
 
 from .stitching import Parity
 
-__all__ = ["EdgeSeries", "MAX_TERMS"]
+__all__ = ["EdgeSeries", "MAX_TERMS", "TERM_LIMITS"]
 
-#: the largest number of terms (powers of m) a series may be asked for
-MAX_TERMS = 12
+#: the largest number of terms (powers of m) a series may be asked for (integer orders of the
+#: paper's system without friction; the other routes have the lower limits of :data:`TERM_LIMITS`)
+MAX_TERMS = 40
+
+#: the largest number of terms per route, where a call still takes a few seconds: the cost grows
+#: about like ``K^3`` (frictionless, order 6: K = 30 about 1 s, K = 40 about 2.5 s; the closed
+#: forms in ``n``: K = 24 about 1.5 s, K = 40 about 10 s; with friction K = 12 takes seconds)
+TERM_LIMITS = {"frictionless": MAX_TERMS, "parity": 24, "friction": 12, "family": 12}
+_ROUTE_WORDS = {
+    "frictionless": "without friction",
+    "parity": "for the closed forms in n (odd/even)",
+    "friction": "with friction",
+    "family": "for the other members of the family",
+}
 
 _PARITY_WORDS = {"odd": Parity.ODD, "even": Parity.EVEN}
 
@@ -81,11 +93,18 @@ class EdgeSeries:
         return out
 
 
-def _check_terms(terms) -> int:
+def _check_terms(terms, route: str = "frictionless") -> int:
+    """``terms`` checked against the limit of ``route`` (a key of :data:`TERM_LIMITS`)."""
     from paramres.inputs import InputError
 
-    if isinstance(terms, bool) or not isinstance(terms, int) or not 1 <= terms <= MAX_TERMS:
-        raise InputError(f"terms {terms!r} is outside the allowed range 1 to {MAX_TERMS}")
+    limit = TERM_LIMITS[route]
+    if isinstance(terms, bool) or not isinstance(terms, int) or not 1 <= terms <= limit:
+        extra = (
+            f" {_ROUTE_WORDS[route]} (the cost grows about like K^3; K = {limit} takes seconds)"
+            if isinstance(terms, int) and not isinstance(terms, bool) and terms > limit
+            else ""
+        )
+        raise InputError(f"terms {terms!r} is outside the allowed range 1 to {limit}{extra}")
     return terms
 
 

@@ -218,7 +218,7 @@ def _threshold_raw(n, damping: str, prec: int, system=None) -> tuple[Series, Ser
 def _check_terms(terms):
     from .series_result import _check_terms as check
 
-    return check(terms)
+    return check(terms, "friction")
 
 
 def threshold_series(

@@ -62,6 +62,7 @@ __all__ = [
     "edge_equation",
     "edge_equation_any",
     "edge_equation_linear",
+    "edge_equation_trig",
     "indicator",
     "order1_forms",
     "near_one_forms",
@@ -451,6 +452,28 @@ def edge_equation_linear() -> tuple[Form, Form]:
         ),
         Form("edge equation coefficients", (sgn, eps, odd, r), (A, B)),
     )
+
+
+@cache
+def edge_equation_trig() -> Form:
+    """:func:`edge_equation_linear` and its two ``theta``-derivatives as polynomials in the sines
+    and cosines they contain: ``sin(theta), cos(theta), sin(y), cos(y)`` (``y = beta (c + theta)``)
+    replaced by the arguments ``(st, ct, sy, cy)``; the form in ``(st, ct, sy, cy, beta, A, B)``.
+    The vectorised grid evaluates the sines once and moves them along with each Newton-type step
+    by the addition theorems (:func:`verify.grid.undamped_roots`), so each step costs no new
+    transcendental function."""
+    import sympy as sp
+
+    lin, _coef = edge_equation_linear()
+    th, c, beta, A, B = lin.args
+    st, ct, sy, cy = sp.symbols("s_t c_t s_y c_y", real=True)
+    y = beta * (c + th)
+    rep = {sp.sin(th): st, sp.cos(th): ct, sp.sin(y): sy, sp.cos(y): cy}
+    exprs = tuple(sp.expand(e.subs(rep)) for e in lin.exprs)
+    for e in exprs:
+        if e.has(th) or e.has(c):  # pragma: no cover - derivation guard
+            raise AssertionError(f"edge equation not polynomial in its sines: {e}")
+    return Form("edge equation in its sines", (st, ct, sy, cy, beta, A, B), exprs)
 
 
 @cache

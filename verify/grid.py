@@ -44,6 +44,7 @@ import numpy as np
 from .derived import (
     backend,
     edge_equation_linear,
+    edge_equation_trig,
     indicator,
     near_one_forms,
     order1_forms,
@@ -82,43 +83,124 @@ def _sgn(n) -> np.ndarray:
     return 1.0 - 2.0 * ((n // 2) % 2)
 
 
-def undamped_roots(n, r, beta, eps, *, iterations: int = 80):
+#: Halley steps of the fast path before a point is handed to the safeguarded iteration
+_FAST_STEPS = 8
+
+
+#: a Halley step below this (times ``K step^2``, checked) leaves the point converged
+_SMALL_STEP = 1e-7
+
+
+def _sin_cos(a):
+    """``sin(a)``, ``cos(a)`` from one tangent of the half angle (``h = tan(a/2)``: ``2h/(1+h^2)``,
+    ``(1-h)(1+h)/(1+h^2)``), each to a few ulp of 1: one transcendental call instead of two."""
+    h = np.tan(0.5 * a)
+    inv = 1.0 / (1.0 + h * h)
+    return 2.0 * h * inv, (1.0 - h) * (1.0 + h) * inv
+
+
+def undamped_roots(n, r, beta, eps, *, start=None, iterations: int = 80):
     """The root in ``(-pi/2, pi/2)`` of the edge equation ``eps`` (``+-1``) for order(s) ``n``;
     ``n``, ``r``, ``beta``, ``eps`` are broadcast together (orders of both parities may be mixed).
 
-    Safeguarded Halley iteration (the bracket starts as the window and shrinks with every sign
-    seen), started at ``asin(-k r f(beta c))``, the first fixed-point iterate; only the points not
-    yet converged are iterated further.  Returns float64 ``theta`` of the broadcast shape.
+    Started at ``asin(-k r f(beta c))`` (the first fixed-point iterate) improved by one Newton
+    step on the equation with ``f(beta (c + theta))`` linearised in ``theta``, or at ``start``
+    (starting values broadcast with the rest, e.g. from :func:`_table_start`); then Halley steps
+    on :func:`verify.derived.edge_equation_trig` (its four sines computed once per step), the
+    arrays compacted to the points still moving once half of them have stopped.  A point stops
+    when Halley's error estimate ``K step^3`` is below ``2^-57`` (an absolute angle next to ``c =
+    n pi/2``; the order-1 edge whose ``x = pi/2 + theta`` is small is solved in ``x`` by the
+    caller).  Points that leave the window or do not stop within :data:`_FAST_STEPS` steps are
+    solved again by the safeguarded iteration (:func:`_safeguarded`: the bracket starts as the
+    window and shrinks with every sign seen).  Returns float64 ``theta`` of the broadcast
+    shape.
     """
-    lin, coef = edge_equation_linear()
-    fn = lin.compiled("numpy", (0, 1, 2))
+    _lin, coef = edge_equation_linear()
     n = np.asarray(n)
     c, sgn, odd = n * _HALF_PI, _sgn(n), (n % 2).astype(float)  # on the small array of orders
-    c, sgn, odd, r, beta, eps = np.broadcast_arrays(
-        c, sgn, odd, np.asarray(r, float), np.asarray(beta, float), np.asarray(eps, float)
-    )
-    shape = c.shape
-    c, sgn, odd, r, beta, eps = (
-        np.ascontiguousarray(a).ravel() for a in (c, sgn, odd, r, beta, eps)
-    )
-    # start: theta0 = asin(-k f(beta c)) (first fixed-point iterate), then one Newton step on the
-    # equation with f(beta (c + theta)) linearised in theta (no new transcendental functions)
-    sb, cb = np.sin(beta * c), np.cos(beta * c)
-    f0 = np.where(odd == 1, cb, sb)
-    f1 = np.where(odd == 1, -sb, cb)
-    k = eps * sgn * r * np.where(odd == 1, 1.0, -1.0)
-    s0 = np.clip(-k * f0, -1.0, 1.0)
-    th = np.arcsin(s0)
-    with np.errstate(divide="ignore", invalid="ignore"):
-        th1 = th - k * f1 * beta * th / (np.sqrt((1 - s0) * (1 + s0)) + k * f1 * beta)
-    th = np.where(np.isfinite(th1) & (np.abs(th1) < _HALF_PI), th1, th)
+    r, beta, eps = np.asarray(r, float), np.asarray(beta, float), np.asarray(eps, float)
+    shape = np.broadcast(c, r, beta, eps).shape
+    # the coefficients on the unbroadcast arrays (orders x signs, depths), then one full array
+    A, B = coef.compiled("numpy", (0, 1))(sgn, eps, odd, r)
+
+    def full(a):
+        return np.ascontiguousarray(np.broadcast_to(np.asarray(a, float), shape)).ravel()
+
+    if start is None:
+        c, sgn, odd, r, eps = (full(a) for a in (c, sgn, odd, r, eps))
+        beta = full(beta)
+        # start: theta0 = asin(-k f(beta c)) (first fixed-point iterate), then one Newton step on
+        # the equation with f(beta (c + theta)) linearised in theta (no new transcendentals)
+        sb, cb = _sin_cos(beta * c)
+        isodd = odd == 1
+        f0 = np.where(isodd, cb, sb)
+        f1 = np.where(isodd, -sb, cb)
+        k = eps * sgn * r * np.where(isodd, 1.0, -1.0)
+        s0 = np.clip(-k * f0, -1.0, 1.0)
+        th = np.arcsin(s0)
+        kb = k * f1 * beta
+        with np.errstate(divide="ignore", invalid="ignore"):
+            th1 = th - kb * th / (np.sqrt((1 - s0) * (1 + s0)) + kb)
+        th = np.where(np.isfinite(th1) & (np.abs(th1) < _HALF_PI), th1, th)
+    else:
+        c, beta = full(c), full(beta)
+        th = np.clip(full(start), -1.57, 1.57)
+    A, B = full(A), full(B)
+    start = th
+    trig = edge_equation_trig().compiled("numpy", (0, 1, 2))
+    # Halley steps, the arrays compacted to the points still moving once half of them stopped
+    idx = np.arange(th.size)
+    th = th.copy()
+    t, bb, AA, BB = th, beta, A, B
+    bc = beta * c
+    done = np.zeros(th.size, bool)
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+        for it in range(_FAST_STEPS):
+            st, ct = np.sin(t), np.cos(t)  # to half an ulp: the last step's residual is the error
+            y = bc + bb * t
+            sy, cy = np.sin(y), np.cos(y)
+            f, d1, d2 = trig(st, ct, sy, cy, bb, AA, BB)
+            step = f / d1
+            h = 0.5 * d2 / d1
+            step /= 1.0 - step * h
+            t = t - step
+            a = np.abs(step)
+            moving = ~(a <= _SMALL_STEP)
+            last = it == _FAST_STEPS - 1
+            if not last and moving.sum() * 2 > moving.size:
+                continue
+            # Halley's error after the step is about K step^3, K = F3/(6 F1) - (F2/(2 F1))^2
+            # with |F3| <= 1 + r beta^3 <= 2: below 2^-57 (theta is an absolute angle next to
+            # c = n pi/2 >= pi/2; the order-1 edge where x = pi/2 + theta is small is solved in x
+            # by the caller)
+            stop = np.nonzero(~moving)[0]
+            sa, sd1, sh = a[stop], d1[stop], h[stop]
+            ok = (1.0 / (3.0 * np.abs(sd1)) + sh * sh) * (sa * sa * sa) <= 7e-18
+            ok &= np.abs(t[stop]) < _HALF_PI
+            th[idx] = t
+            done[idx[stop[ok]]] = True
+            if last or not moving.any():
+                break
+            moving[stop[~ok]] = True
+            idx, t, bc, bb, AA, BB = (v[moving] for v in (idx, t, bc, bb, AA, BB))
+    if not done.all():
+        redo = np.nonzero(~done)[0]
+        th[redo] = _safeguarded(
+            start[redo], c[redo], beta[redo], A[redo], B[redo], iterations=iterations
+        )
+    return th.reshape(shape)
+
+
+def _safeguarded(th, c, beta, A, B, *, iterations: int = 80):
+    """Safeguarded Halley iteration on :func:`verify.derived.edge_equation_linear` from ``th``:
+    the bracket starts as the window ``(-pi/2, pi/2)`` and shrinks with every sign seen; only the
+    points not yet converged are iterated further."""
+    lin, _coef = edge_equation_linear()
+    fn = lin.compiled("numpy", (0, 1, 2))
+    th = np.array(th, float, copy=True)
     lo = np.full(th.shape, -_HALF_PI)
     hi = np.full(th.shape, _HALF_PI)
     idx = np.arange(th.size)
-    A, B = (
-        np.asarray(v, float) * np.ones(th.shape)
-        for v in coef.compiled("numpy", (0, 1))(sgn, eps, odd, r)
-    )
     args = (c, beta, A, B)
     sub = args
     for _ in range(iterations):
@@ -147,15 +229,41 @@ def undamped_roots(n, r, beta, eps, *, iterations: int = 80):
         if not keep.all():
             idx = idx[keep]
             sub = tuple(a[idx] for a in args)
-    return th.reshape(shape)
+    return th
 
 
 def normal_edges(n, P, eps_pair=(1, -1)):
     """Both undamped edge roots ``(theta_eps=+1, theta_eps=-1)`` for parameters ``P``
     (arrays broadcast with ``n``)."""
     eps = np.array(eps_pair, float).reshape((len(eps_pair),) + (1,) * max(np.ndim(n), np.ndim(P.r)))
-    both = undamped_roots(np.asarray(n)[None], np.asarray(P.r)[None], np.asarray(P.beta)[None], eps)
+    n, r, beta = np.asarray(n), np.asarray(P.r), np.asarray(P.beta)
+    start = None
+    if beta.ndim == 1 and r.shape == beta.shape and beta.size >= _TABLE_MIN and n.ndim == 2:
+        start = _table_start(n, r, beta, eps)
+    both = undamped_roots(n[None], r[None], beta[None], eps, start=start)
     return tuple(both)
+
+
+#: grids with at least this many depths start from a table of roots at a few of their own depths
+_TABLE_MIN = 256
+_TABLE_NODES = 65
+
+
+def _table_start(n, r, beta, eps):
+    """Starting values for the roots at every depth: the roots at :data:`_TABLE_NODES` of the
+    depths (spread evenly in ``beta``), interpolated linearly in ``beta`` (each root is an
+    analytic function of the depth with the window theorem's one simple root, so the start is
+    right to ``O(h^2)`` and two Halley steps finish it)."""
+    order = np.argsort(beta, kind="stable")
+    pick = order[np.unique(np.linspace(0, beta.size - 1, _TABLE_NODES).round().astype(int))]
+    xb, keep = np.unique(beta[pick], return_index=True)
+    pick = pick[keep]
+    nodes = undamped_roots(n[None], r[pick][None], xb[None], eps)  # (len(eps), orders, nodes)
+    flat = nodes.reshape(-1, xb.size)
+    out = np.empty((flat.shape[0], beta.size))
+    for i, row in enumerate(flat):
+        out[i] = np.interp(beta, xb, row)
+    return out.reshape(nodes.shape[:-1] + (beta.size,))
 
 
 def _bisect_newton(f_and_df, lo, hi, x0, increasing, *, iterations=100, rtol=4e-16):
@@ -183,6 +291,39 @@ def _bisect_newton(f_and_df, lo, hi, x0, increasing, *, iterations=100, rtol=4e-
     return x
 
 
+def _bisect_newton_compact(fn, args, lo, hi, x0, increasing: bool, *, iterations=100, rtol=4e-16):
+    """:func:`_bisect_newton` for ``fn(x, *args) -> (f, df)`` on arrays: everything broadcast to
+    one shape, and each point dropped from the iteration once it has converged (the same rule per
+    point), so that the few slow points do not keep the whole array iterating."""
+    shape = np.broadcast(np.asarray(x0), np.asarray(lo), np.asarray(hi), *args).shape
+    flat = [np.broadcast_to(np.asarray(a, float), shape).ravel() for a in (x0, lo, hi, *args)]
+    x, lo, hi, args = flat[0].copy(), flat[1].copy(), flat[2].copy(), flat[3:]
+    out = x.copy()
+    idx = np.arange(x.size)
+    sign = 1.0 if increasing else -1.0
+    sub = args
+    with np.errstate(divide="ignore", invalid="ignore"):
+        for _ in range(iterations):
+            f, df = fn(x, *sub)
+            f, df = sign * np.asarray(f, float), sign * np.asarray(df, float)
+            lo = np.where(f < 0, x, lo)
+            hi = np.where(f > 0, x, hi)
+            step = f / df
+            xn = x - step
+            scale = np.maximum(np.abs(x), 1e-300)
+            small = np.abs(step) <= 0.5 * rtol * scale
+            bad = ~((xn > lo) & (xn < hi) | small) | ~np.isfinite(xn)
+            xn = np.where(bad, 0.5 * (lo + hi), xn)
+            out[idx] = xn
+            stop = small | (f == 0) | (hi - lo <= rtol * scale) | ~np.isfinite(x)
+            if stop.all():
+                break
+            keep = ~stop
+            idx, x, lo, hi = idx[keep], xn[keep], lo[keep], hi[keep]
+            sub = tuple(a[idx] for a in args)
+    return out.reshape(shape)
+
+
 def damped_normal(n, P):
     """Friction, normal form: ``dict(a, b, top, lo, hi)`` of float64 ``theta`` arrays (one parity):
     the undamped-form bracket ``[a, b]``, the maximiser ``top`` of ``D`` and the edges (NaN where
@@ -205,15 +346,15 @@ def damped_normal(n, P):
     top = np.where(d1a <= 0, a, b)
     if inside.any():
         x0 = 0.5 * (a + b)
-        root = _bisect_newton(lambda x: dd(x, *args), a, b, x0, False)
+        root = _bisect_newton_compact(dd, args, a, b, x0, False)
         top = np.where(inside, root, top)
     dtop = np.asarray(d01(top, *args)[0], float) * np.ones(shape)
     exists = dtop > 0
     lo = np.full(shape, np.nan)
     hi = np.full(shape, np.nan)
     if exists.any():
-        e_lo = _bisect_newton(lambda x: d01(x, *args), a, top, 0.5 * (a + top), True)
-        e_hi = _bisect_newton(lambda x: d01(x, *args), top, b, 0.5 * (top + b), False)
+        e_lo = _bisect_newton_compact(d01, args, a, top, 0.5 * (a + top), True)
+        e_hi = _bisect_newton_compact(d01, args, top, b, 0.5 * (top + b), False)
         lo = np.where(exists, e_lo, np.nan)
         hi = np.where(exists, e_hi, np.nan)
     return {"a": a, "b": b, "top": top, "dtop": dtop, "lo": lo, "hi": hi}
@@ -452,20 +593,20 @@ def boundary_grid(orders, m, *, Q=None, damping="exact", system="pendulum", duty
     damping = as_damping(damping)
     out = np.full((len(orders), 2, dep.size), np.nan)
     doubt = np.zeros((len(orders), dep.size), bool)
+    chunk = max(256, CHUNK_EDGES // (2 * len(orders)))  # depths per block: bounded memory
     if sysv.is_paper:
-        cols = np.nonzero(dep.double)[0]
-        if cols.size:
+        served = dep.double
+        for cols in _blocks(np.nonzero(served)[0], chunk):
             part, part_doubt = _double_grid(orders, dep, cols, Qx, damping)
             out[:, :, cols] = part
             doubt[:, cols] = part_doubt
-        doubt[:, ~dep.double] = True
+        doubt[:, ~served] = True
     else:
         served = dep.double & (dep.om >= FAMILY_OM_MIN)
         if Qx is not None and damping == "exact":
             served[:] = False
-        cols = np.nonzero(served)[0]
-        if cols.size:
-            Qf = None if Qx is None else float(Qx)
+        Qf = None if Qx is None else float(Qx)
+        for cols in _blocks(np.nonzero(served)[0], chunk):
             P = normal_params(dep.m[cols], Qf, damping, _NP, sysv, om=dep.om[cols])
             part = np.full((len(orders), 2, cols.size), np.nan)
             doubt[:, cols] = _fill_normal(part, orders, dep.m[cols], P, damped=Qx is not None)
@@ -478,6 +619,16 @@ def boundary_grid(orders, m, *, Q=None, damping="exact", system="pendulum", duty
 
 #: other members of the family: depths closer to 1 than this go to the certified route
 FAMILY_OM_MIN = 1e-9
+
+#: the grid is computed in blocks of depths of about this many edges each (the working arrays
+#: of a block take some hundred bytes per edge; the result itself 16 bytes per depth and order)
+CHUNK_EDGES = 1 << 18
+
+
+def _blocks(cols, size: int):
+    """``cols`` in consecutive pieces of at most ``size``."""
+    for start in range(0, cols.size, size):
+        yield cols[start : start + size]
 
 
 def _certified_point(n: int, m: Fraction, Q, damping: str, system=None) -> tuple[float, float]:
@@ -619,7 +770,7 @@ def _order1_lower(P, cols, x_hi, eps=None, *, x_theta=None, doubt=False):
 #: the order-1 lower edge is solved in ``x`` (:func:`_order1_lower`) where ``x`` is below this,
 #: without and with friction (an absolute error of ``theta`` is a relative error of ``x`` amplified
 #: by ``1/x``; with friction the indicator's error estimate asks for the wider range)
-ORDER1_X = 0.5
+ORDER1_X = 1.0
 ORDER1_X_DAMPED = 1.0
 
 #: below this ``1 - beta`` (``m > 0.975``) the grid polishes with the forms for ``m -> 1``

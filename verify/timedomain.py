@@ -9,7 +9,7 @@ Two models:
   to mpmath and numpy; the jump multiplies ``phi'`` by the derived ratio of the moments of inertia.
   Any precision (``digits``), everything inside ``mpmath.workdps``.
 * **nonlinear** (``phi'' + 2 gamma phi' + omega_i**2 sin phi = 0``): integrated between the jumps by
-  :func:`scipy.integrate.solve_ivp` (DOP853, explicit ``rtol``/``atol``), the same jump rule.
+  :class:`scipy.integrate.ode` (Hairer's DOP853, explicit ``rtol``/``atol``), the same jump rule.
 
 Where the run starts:
 
@@ -40,14 +40,10 @@ oscillation of the bob-down half through that state.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
 from fractions import Fraction
 from functools import cache
 
 import mpmath
-import numpy as np
-
-from analytic.system import PAPER, phase_regimes
 
 from .inputs import (
     InputError,
@@ -60,7 +56,11 @@ from .inputs import (
     as_quality,
     as_system,
 )
-from .params import exact_fraction
+from .pendulum_ode import amplitude_factor, run_nonlinear, saturation_estimate
+from .propagation import as_mp as _mp
+from .propagation import envelope as _envelope
+from .propagation import run_linear as _run_linear
+from .simulation import Segment, Simulation
 
 __all__ = [
     "Simulation",
@@ -116,48 +116,6 @@ def as_amplitude(A) -> Fraction:
 # the derived building blocks, lambdified once
 
 
-def _regime(m, Q, half: int, model: str, system=PAPER) -> str:
-    """``"under"``, ``"critical"`` or ``"over"``: the sign of ``omega_i**2 - gamma**2``
-    (:func:`analytic.system.phase_regimes`, exact for rational ``m`` and ``Q``)."""
-    if Q is None or model == "paper":
-        return "under"
-    mq = m if isinstance(m, Fraction) else exact_fraction(m)
-    Qq = Q if isinstance(Q, Fraction) else exact_fraction(Q)
-    return phase_regimes(system, mq, Qq, model)[half - 1]
-
-
-@cache
-def _propagator(model: str, regime: str, half: int, module: str):
-    """``(t, omega, gamma, Omega, Lambda) -> [[a, b], [c, d]]`` from
-    :func:`analytic.stitching.propagator` of the model's segment (the entries as four functions)."""
-    import sympy as sp
-
-    from analytic.model import Damping, Regime, S, segment
-    from analytic.stitching import propagator
-
-    damping = {"none": Damping.NONE, "paper": Damping.PAPER, "exact": Damping.EXACT}[model]
-    omega = S.omega1 if half == 1 else S.omega2
-    Omega = S.Omega1 if half == 1 else S.Omega2
-    Lam = S.Lambda1 if half == 1 else S.Lambda2
-    seg = segment(omega, S.A1, S.B1, damping, Regime(regime))
-    U = propagator(seg, S.t)
-    args = (S.t, omega, S.gamma, Omega, Lam)
-    return tuple(sp.lambdify(args, U[i, j], modules=module) for i in (0, 1) for j in (0, 1))
-
-
-@cache
-def _jump(module: str):
-    """The factor on ``phi'`` at the jumps 1 -> 2 and 2 -> 1 (:func:`analytic.model.jump_ratio`)."""
-    import sympy as sp
-
-    from analytic.model import S, jump_ratio
-
-    return (
-        sp.lambdify((S.m,), jump_ratio(1, 2), modules=module),
-        sp.lambdify((S.m,), jump_ratio(2, 1), modules=module),
-    )
-
-
 @cache
 def _initial_ratio(kind_value: str):
     """``phi'(0)/phi(0)`` on an undamped edge of the given shape, as ``(m, tau) -> (num, den)``:
@@ -202,236 +160,34 @@ def _edge_factors(parity_value: int):
     return out
 
 
-def _mp(x) -> mpmath.mpf:
-    if isinstance(x, Fraction):
-        return mpmath.mpf(x.numerator) / x.denominator
-    return mpmath.mpf(x)
-
-
 # ---------------------------------------------------------------------------------------------
-# the result
+# what is measured on the trajectory
 
 
-@dataclass(frozen=True)
-class Segment:
-    """One half period of a trajectory, sampled for plotting (double precision).
+class _LazyStates:
+    """The stroboscopic states as mpmath numbers, converted when first used (a long nonlinear run
+    needs only the first few and the last two)."""
 
-    ``half`` is 1 (bob down) or 2 (bob up); ``t`` runs over ``[t0, t0 + T/2]``; ``phi`` and ``dphi``
-    are the angle and the angular velocity (for the paper damping model: the model's velocity).
-    """
+    def __init__(self, strobe):
+        self._raw = strobe
+        self._done: dict = {}
 
-    half: int
-    t: np.ndarray
-    phi: np.ndarray
-    dphi: np.ndarray
+    def __len__(self) -> int:
+        return len(self._raw)
 
-
-@dataclass(frozen=True)
-class Simulation:
-    """A run and what was measured on it.
-
-    ``strobe``: the states ``(phi, phi')`` at ``t = kT`` (just after the jump into the bob-down
-    half), ``k = 0..max(periods, 2)`` (mpf for the linear model at ``digits``, float for the
-    nonlinear one).  ``closure_error``: on an edge, ``|s_P - s_0| / |s_0|`` with ``P = 2`` (odd
-    order) or ``1`` (even) in the amplitude norm; ``None`` elsewhere.  ``measured_multipliers``:
-    from the stroboscopic sequence (one value when the start was an eigenvector).
-    ``multipliers``: from :mod:`verify.floquet`.  ``envelope``: the largest ``|phi|`` in each
-    period (from the samples).
-    """
-
-    order: int
-    m: Fraction | mpmath.mpf
-    tau: mpmath.mpf
-    Q: Fraction | mpmath.mpf | None
-    damping: str
-    edge: str | None
-    edge_kind: str | None
-    nonlinear: bool
-    periods: int
-    amplitude: Fraction
-    digits: int
-    initial: tuple
-    strobe: tuple
-    closure_periods: int
-    closure_error: mpmath.mpf | float | None
-    max_return_error: mpmath.mpf | float | None
-    measured_multipliers: tuple
-    multipliers: tuple
-    interval: tuple | None
-    segments: tuple[Segment, ...] = field(repr=False)
-    envelope: tuple[float, ...] = field(repr=False)
-    method: str = ""
-    rtol: float | None = None
-    atol: float | None = None
-    saturation_estimate: float | None = None
-    #: the member of the family (:mod:`analytic.system`)
-    system: object = PAPER
-
-    # -- derived figures ---------------------------------------------------------------------
-
-    @property
-    def growth_per_period(self):
-        """The measured growth per period: the largest modulus of the measured multipliers."""
-        with mpmath.workdps(self.digits):
-            return +max(abs(mpmath.mpmathify(x)) for x in self.measured_multipliers)
-
-    @property
-    def floquet_multiplier(self):
-        """The Floquet multiplier of the largest modulus (:mod:`verify.floquet`)."""
-        return self.multipliers[0]
-
-    @property
-    def floquet_growth(self):
-        with mpmath.workdps(self.digits):
-            return +abs(mpmath.mpmathify(self.multipliers[0]))
-
-    @property
-    def growth_agreement(self):
-        """``|measured growth - max |mu|| / max |mu|``."""
-        with mpmath.workdps(self.digits):
-            g = self.floquet_growth
-            return abs(self.growth_per_period - g) / g
-
-    @property
-    def jump_times(self) -> np.ndarray:
-        return np.array([s.t[0] for s in self.segments[1:]])
-
-    @property
-    def peak_amplitude(self) -> float:
-        return max(self.envelope) if self.envelope else float("nan")
-
-    @property
-    def rotates(self) -> bool | None:
-        """Nonlinear runs: whether the pendulum went over the top (``|phi|`` passed ``pi``), after
-        which it rotates instead of swinging and the growth is no longer limited by the
-        amplitude-dependent period; ``None`` for the linear model."""
-        if not self.nonlinear:
-            return None
-        return bool(self.envelope) and max(self.envelope) > math.pi
-
-    def __str__(self) -> str:
-        def show(x, digits):
-            if x is None:
-                return "-"
-            with mpmath.workdps(max(digits, 15)):
-                return mpmath.nstr(mpmath.mpmathify(x), digits)
-
-        fr = "no friction" if self.Q is None else f"Q = {self.Q} ({self.damping} model)"
-        where = f"on the {self.edge} edge" if self.edge else "at a given period"
-        model = "nonlinear pendulum" if self.nonlinear else f"linear model, {self.digits} digits"
-        lines = [
-            f"Simulation: order {self.order}, m = {self.m}, {fr}, {self.periods} periods ({model})",
-            f"  T/T0 = {show(self.tau, min(self.digits, 20))} ({where})",
-        ]
-        if self.closure_error is not None:
-            lines.append(
-                f"  closure error after {self.closure_periods} T: {show(self.closure_error, 3)}"
-            )
-        lines.append(
-            f"  growth per period: measured {show(self.growth_per_period, 12)}, Floquet "
-            f"{show(self.floquet_growth, 12)}"
-        )
-        if self.nonlinear:
-            lines.append(f"  peak |phi| = {self.peak_amplitude:.6g} rad")
-            if self.rotates:
-                lines.append("  the pendulum went over the top (|phi| > pi): it rotates")
-        return "\n".join(lines)
-
-    @property
-    def inside(self) -> bool | None:
-        """Whether ``T`` lies strictly inside the interval of the order (``None``: none exists)."""
-        if self.interval is None:
-            return None
-        lo, hi = self.interval
-        return bool(lo < self.tau < hi)
-
-    def as_json(self) -> dict:
-        d = self.digits
-
-        def num(x):
-            if x is None:
-                return None
-            x = mpmath.mpmathify(x)
-            if isinstance(x, mpmath.mpc):
-                return {"re": float(x.real), "im": float(x.imag)}
-            return float(x)
-
-        def text(x):
-            if x is None:
-                return None
-            with mpmath.workdps(d):
-                return mpmath.nstr(mpmath.mpmathify(x), d, min_fixed=-5, max_fixed=5)
-
-        out = {
-            **self.system.as_json(),
-            "closure_error": num(self.closure_error),
-            "growth_per_period": num(self.growth_per_period),
-            "floquet_multiplier": num(self.floquet_multiplier),
-            "method": self.method,
-            "order": self.order,
-            "m": str(self.m),
-            "T": text(self.tau),
-            "Q": None if self.Q is None else str(self.Q),
-            "damping": self.damping,
-            "edge": self.edge,
-            "edge_kind": self.edge_kind,
-            "nonlinear": self.nonlinear,
-            "periods": self.periods,
-            "amplitude": float(self.amplitude),
-            "digits": None if self.nonlinear else d,
-            "initial": [text(x) for x in self.initial],
-            "closure_periods": self.closure_periods,
-            "max_return_error": num(self.max_return_error),
-            "measured_multipliers": [num(x) for x in self.measured_multipliers],
-            "floquet_multipliers": [num(x) for x in self.multipliers],
-            "growth_agreement": num(self.growth_agreement),
-            "interval": None if self.interval is None else [text(x) for x in self.interval],
-            "inside_interval": self.inside,
-        }
-        if self.nonlinear:
-            out["rtol"], out["atol"] = self.rtol, self.atol
-            out["peak_amplitude"] = self.peak_amplitude
-            out["rotates"] = self.rotates
-            out["saturation_estimate"] = self.saturation_estimate
-            out["envelope"] = list(self.envelope)
+    def __getitem__(self, k):
+        k = k % len(self._raw)
+        out = self._done.get(k)
+        if out is None:
+            a, b = self._raw[k]
+            out = self._done[k] = (mpmath.mpmathify(a), mpmath.mpmathify(b))
         return out
-
-
-# ---------------------------------------------------------------------------------------------
-# the run
-
-
-def amplitude_factor(A: float) -> float:
-    """The period of the free pendulum of amplitude ``A`` over that of small swings,
-    ``2 K(sin^2(A/2)) / pi`` (``K`` the complete elliptic integral of the first kind)."""
-    return float(2 * mpmath.ellipk(mpmath.sin(mpmath.mpf(A) / 2) ** 2) / mpmath.pi)
-
-
-def _saturation_estimate(tau, interval) -> float | None:
-    """The amplitude at which the lengthening of the free periods carries the lower edge of the
-    interval past ``T``: ``amplitude_factor(A) = T / T_-`` (adiabatic estimate; ``None`` when
-    ``T`` is not inside the interval)."""
-    if interval is None:
-        return None
-    lo, hi = (float(x) for x in interval)
-    t = float(tau)
-    if not lo < t < hi:
-        return None
-    target = t / lo
-    a, b = 1e-9, math.pi - 1e-12
-    for _ in range(200):
-        c = (a + b) / 2
-        if amplitude_factor(c) < target:
-            a = c
-        else:
-            b = c
-    return (a + b) / 2
 
 
 def _cayley_hamilton(strobe, digits):
     """Measured multipliers from the stroboscopic states (see the module docstring)."""
     with mpmath.workdps(digits + _GUARD):
-        S = [(mpmath.mpmathify(a), mpmath.mpmathify(b)) for a, b in strobe]
+        S = _LazyStates(strobe)
         tol = mpmath.mpf(10) ** (-(digits // 2))
         best, best_k = mpmath.mpf(-1), 0
         for k in range(len(S) - 2):
@@ -591,17 +347,19 @@ def simulate(
     steps = max(K, 2)
     loop = range(steps) if progress is None else progress(range(steps), total=steps)
     if nonlinear:
-        strobe, segments = _run_nonlinear(m, Q, tau, s0, loop, K, samples, rtol, atol, sysv)
-        with mpmath.workdps(work):
-            strobe_mp = [tuple(mpmath.mpf(float(x)) for x in s) for s in strobe]
+        strobe, segments, env = run_nonlinear(m, Q, tau, s0, loop, K, samples, rtol, atol, sysv)
+        strobe_mp = _LazyStates(strobe)  # float states, read as mpf where used
         method = (
-            f"nonlinear pendulum (sin phi), scipy solve_ivp DOP853 between the jumps, "
+            f"nonlinear pendulum (sin phi), DOP853 (Hairer's code, scipy.integrate.ode) between "
+            f"the jumps, "
             f"rtol={rtol:g}, atol={atol:g}; "
             + ("exact friction" if Q is not None else "no friction")
         )
     else:
         strobe_mp, segments = _run_linear(m, Q, eff, tau, s0, loop, K, samples, work, sysv)
         strobe = strobe_mp
+        env = _envelope(segments, K)
+        segments = tuple(segments)
         method = (
             f"linear model, exact piecewise propagation (closed-form segments of "
             f"analytic.stitching.propagator and the jump rule) at {digits} digits; "
@@ -631,8 +389,7 @@ def simulate(
         tau_out = +tau
         interval_out = None if interval is None else tuple(+x for x in interval)
 
-    env = _envelope(segments, K)
-    sat = _saturation_estimate(tau_out, interval_out) if nonlinear else None
+    sat = saturation_estimate(tau_out, interval_out) if nonlinear else None
     return Simulation(
         order=n,
         m=m,
@@ -653,7 +410,7 @@ def simulate(
         measured_multipliers=measured,
         multipliers=tuple(mus),
         interval=interval_out,
-        segments=tuple(segments),
+        dense=segments,
         envelope=env,
         method=method,
         rtol=rtol if nonlinear else None,
@@ -690,108 +447,3 @@ def _edge_kind(n: int, m, tau) -> str:
     vals = {kind: abs(f(_mp(m), tau)) for kind, f in factors.items()}
     return min(vals, key=vals.get).value
 
-
-def _frequencies(m, Q, eff, work, system=PAPER):
-    """``omega_i``, ``gamma``, ``Omega_i``, ``Lambda_i`` (the latter zero where not applicable),
-    from the system's description (``omega0 = 2 pi``)."""
-    with mpmath.workdps(work):
-        g = mpmath.mpf(0) if Q is None else mpmath.pi / _mp(Q)
-        out = []
-        W = system.values(m if system.uses_depth else None)[:2]
-        for half, Wi in ((1, W[0]), (2, W[1])):
-            w = 2 * mpmath.pi * mpmath.sqrt(_mp(Wi))
-            z = w * w - g * g
-            reg = _regime(m, Q, half, eff, system)
-            Om = mpmath.sqrt(z) if reg == "under" and eff == "exact" else mpmath.mpf(0)
-            La = mpmath.sqrt(-z) if reg == "over" else mpmath.mpf(0)
-            out.append((w, g, Om, La, reg))
-        return out
-
-
-def _run_linear(m, Q, eff, tau, s0, loop, K, samples, work, system=PAPER):
-    freqs = _frequencies(m, Q, eff, work, system)
-    U_mp = [_propagator(eff, freqs[h][4], h + 1, "mpmath") for h in (0, 1)]
-    U_np = [_propagator(eff, freqs[h][4], h + 1, "numpy") for h in (0, 1)]
-    with mpmath.workdps(work):
-        if system.is_paper:
-            j12, j21 = _jump("mpmath")
-            mm = _mp(m)
-            k12, k21 = j12(mm), j21(mm)
-        else:
-            k12 = _mp(Fraction(system.jump(m if system.uses_depth else None)))
-            k21 = 1 / k12
-        lengths = (tau * _mp(system.duty), tau - tau * _mp(system.duty))
-        maps = []
-        for h in (0, 1):
-            w, g, Om, La, _ = freqs[h]
-            maps.append([f(lengths[h], w, g, Om, La) for f in U_mp[h]])
-        tgrids = [np.linspace(0.0, float(lengths[h]), samples) for h in (0, 1)]
-        fl = [tuple(float(x) for x in freqs[h][:4]) for h in (0, 1)]
-        with np.errstate(all="ignore"):
-            dense = [
-                [
-                    np.broadcast_to(np.asarray(f(tgrids[h], *fl[h]), dtype=float), tgrids[h].shape)
-                    for f in U_np[h]
-                ]
-                for h in (0, 1)
-            ]
-        strobe = [s0]
-        segments = []
-        s = s0
-        for k in loop:
-            for h in (0, 1):
-                a, b, c, d = maps[h]
-                if k < K:  # the samples for plotting (beyond double range they become inf)
-                    p0, v0 = float(s[0]), float(s[1])
-                    A_, B_, C_, D_ = dense[h]
-                    with np.errstate(all="ignore"):
-                        phi, dphi = A_ * p0 + B_ * v0, C_ * p0 + D_ * v0
-                    t0 = float(k * tau + h * lengths[0])
-                    segments.append(Segment(h + 1, t0 + tgrids[h], phi, dphi))
-                s = (a * s[0] + b * s[1], c * s[0] + d * s[1])
-                s = (s[0], s[1] * (k12 if h == 0 else k21))
-            strobe.append(s)
-    return strobe, segments
-
-
-def _run_nonlinear(m, Q, tau, s0, loop, K, samples, rtol, atol, system=PAPER):
-    from scipy.integrate import solve_ivp
-
-    W = system.values(m)
-    w2 = [(2 * math.pi) ** 2 * float(W[0]), (2 * math.pi) ** 2 * float(W[1])]
-    g = 0.0 if Q is None else math.pi / float(Q)
-    k12 = float(W[2])
-    lengths = (float(tau) * float(system.duty), float(tau) * (1 - float(system.duty)))
-    s = np.array([float(s0[0]), float(s0[1])])
-    strobe = [tuple(s)]
-    segments = []
-    for k in loop:
-        for h in (0, 1):
-            w = w2[h]
-            half = lengths[h]
-            tgrid = np.linspace(0.0, half, samples)
-
-            def rhs(t, y, w=w):
-                return [y[1], -2 * g * y[1] - w * math.sin(y[0])]
-
-            sol = solve_ivp(
-                rhs, (0.0, half), s, method="DOP853", rtol=rtol, atol=atol, dense_output=k < K
-            )
-            if not sol.success:  # pragma: no cover - DOP853 on a smooth right-hand side
-                raise RuntimeError(f"integration failed in period {k}: {sol.message}")
-            if k < K:
-                y = sol.sol(tgrid)
-                t0 = k * float(tau) + h * lengths[0]
-                segments.append(Segment(h + 1, t0 + tgrid, y[0], y[1]))
-            s = sol.y[:, -1].copy()
-            s[1] *= k12 if h == 0 else 1 / k12
-        strobe.append(tuple(s))
-    return strobe, segments
-
-
-def _envelope(segments, K) -> tuple[float, ...]:
-    env = []
-    for k in range(K):
-        parts = segments[2 * k : 2 * k + 2]
-        env.append(float(max(np.max(np.abs(p.phi)) for p in parts)) if parts else float("nan"))
-    return tuple(env)

@@ -1,0 +1,122 @@
+"""The nonlinear simulation against a compiled DOP853 loop, timed side by side.
+
+The floor is the least the run can cost with the same integrator and tolerances, written here
+without engine code: the pendulum ``phi'' = -omega_i^2 sin(phi)`` (``omega_i^2 = (2 pi)^2/(1 +- m)``
+in units of ``T0``) integrated half period by half period by Hairer's DOP853 through
+``scipy.integrate.ode(f).set_integrator("dop853", rtol, atol)``, ``phi'`` multiplied by
+``((1+m)/(1-m))^2`` at the switch to the short length and divided by it at the switch back (eq. 4);
+nothing recorded but the state at each period.
+
+Ours is the public ``paramres.simulate(..., nonlinear=True)`` through its whole path: the certified
+edge and the Floquet multipliers at 30 digits, the run (the integrator's steps recorded, the plotted
+segments interpolated from them afterwards), the multipliers measured from the stroboscopic states
+and the envelope.  Scene: order 1 at ``m = 1/20``, ``T`` a third of the way into the first interval,
+amplitude 1/100 (the beats of the nonlinear pendulum), 2000 periods (200 with ``--quick``); target
+1.2x.
+
+Run ``python benchmarks/floor_simulate.py [--quick]`` for the ratio alone.
+"""
+
+from __future__ import annotations
+
+import math
+from fractions import Fraction
+
+M = Fraction(1, 20)
+#: a third of the way into the first interval at m = 1/20 (the lower and upper edges from
+#: ``paramres boundary --order 1 --m 1/20``, rounded to 12 digits; any T inside serves)
+T = Fraction(2 * 475_699_199_170 + 523_358_950_673, 3 * 10**12)
+AMPLITUDE = Fraction(1, 100)
+RTOL, ATOL = 1e-10, 1e-13
+
+
+def floor_run(periods: int):
+    """The states at ``t = k T`` for ``k = 0 .. periods`` (the floor)."""
+    from scipy.integrate import ode
+
+    m = float(M)
+    w2 = ((2 * math.pi) ** 2 / (1 + m), (2 * math.pi) ** 2 / (1 - m))
+    k12 = ((1 + m) / (1 - m)) ** 2
+    half = float(T) / 2
+    cur = [w2[0]]
+    sin = math.sin
+
+    def f(t, y):
+        return [y[1], -cur[0] * sin(y[0])]
+
+    solver = ode(f).set_integrator("dop853", rtol=RTOL, atol=ATOL, nsteps=10**7)
+    s = [float(AMPLITUDE), 0.0]
+    out = [tuple(s)]
+    for _ in range(periods):
+        for h, jump in ((0, k12), (1, 1 / k12)):
+            cur[0] = w2[h]
+            solver.set_initial_value(s, 0.0)
+            solver.integrate(half)
+            s = [float(solver.y[0]), float(solver.y[1]) * jump]
+        out.append(tuple(s))
+    return out
+
+
+def _ours(periods: int):
+    import paramres
+
+    return paramres.simulate(
+        1, M, T=T, periods=periods, amplitude=AMPLITUDE, nonlinear=True, rtol=RTOL, atol=ATOL
+    )
+
+
+def _agreement(periods: int) -> dict:
+    """The largest difference of the stroboscopic states, ours against the floor's (both DOP853
+    at the same tolerances; the step-size control differs only in ours starting each half period
+    afresh the same way)."""
+    a = _ours(periods).strobe
+    b = floor_run(periods)
+    return {
+        "max |phi_ours - phi_floor| over the strobe": max(
+            abs(float(x[0]) - y[0]) for x, y in zip(a, b, strict=True)
+        )
+    }
+
+
+def scenes(quick: bool) -> list[dict]:
+    periods = 200 if quick else 2000
+    return [
+        {
+            "name": f"simulate nonlinear {periods} periods",
+            "target": 1.2,
+            "ours": lambda: _ours(periods),
+            "floor": lambda: floor_run(periods),
+            "note": "scipy.integrate.ode dop853 per half period, same rtol/atol, no recording",
+            "extra": lambda: _agreement(periods),
+            "repeat": 1,
+        }
+    ]
+
+
+def _main(argv=None) -> int:  # pragma: no cover - a measurement
+    import statistics
+    import sys
+    import time
+
+    argv = argv if argv is not None else sys.argv[1:]
+    for sc in scenes("--quick" in argv):
+        sc["ours"](), sc["floor"]()
+        to, tf = [], []
+        for _ in range(3 if "--quick" not in argv else 5):
+            for fn, acc in ((sc["ours"], to), (sc["floor"], tf)):
+                t = time.process_time()
+                fn()
+                acc.append(time.process_time() - t)
+        a, b = statistics.median(to), statistics.median(tf)
+        print(
+            f"{sc['name']:<40} ours {a * 1e3:9.1f} ms  floor {b * 1e3:9.1f} ms  "
+            f"ratio {a / b:5.2f}  target {sc['target']}",
+            flush=True,
+        )
+        if "--extra" in argv:
+            print("   ", sc["extra"](), flush=True)
+    return 0
+
+
+if __name__ == "__main__":  # pragma: no cover
+    raise SystemExit(_main())

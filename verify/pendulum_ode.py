@@ -1,0 +1,175 @@
+"""The nonlinear pendulum (``phi'' + 2 gamma phi' + omega_i**2 sin phi = 0``) integrated between the
+jumps, and what the amplitude-dependent period predicts for it.
+
+The integrator is Hairer's DOP853 (the compiled code behind :class:`scipy.integrate.ode`), restarted
+at each jump; its accepted steps are recorded as they come.  The envelope (largest ``|phi|`` per
+period) and the plotted segments come from the cubic Hermite interpolant through those steps, after
+the run and for all half periods at once; the segments only when asked for.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from analytic.system import PAPER
+
+from .simulation import Segment
+
+__all__ = ["amplitude_factor", "saturation_estimate", "run_nonlinear"]
+
+
+def amplitude_factor(A: float) -> float:
+    """The period of the free pendulum of amplitude ``A`` over that of small swings,
+    ``2 K(sin^2(A/2)) / pi`` (``K`` the complete elliptic integral of the first kind)."""
+    from scipy.special import ellipk
+
+    return float(2 * ellipk(math.sin(A / 2) ** 2) / math.pi)
+
+
+def saturation_estimate(tau, interval) -> float | None:
+    """The amplitude at which the lengthening of the free periods carries the lower edge of the
+    interval past ``T``: ``amplitude_factor(A) = T / T_-`` (adiabatic estimate; ``None`` when
+    ``T`` is not inside the interval)."""
+    if interval is None:
+        return None
+    lo, hi = (float(x) for x in interval)
+    t = float(tau)
+    if not lo < t < hi:
+        return None
+    target = t / lo
+    a, b = 1e-9, math.pi - 1e-12
+    for _ in range(60):  # the bracket, pi wide, below an ulp of the result
+        c = (a + b) / 2
+        if amplitude_factor(c) < target:
+            a = c
+        else:
+            b = c
+    return (a + b) / 2
+
+
+def run_nonlinear(m, Q, tau, s0, loop, K, samples, rtol, atol, system=PAPER):
+    """The nonlinear pendulum, half period by half period: Hairer's DOP853 (the compiled code
+    behind :class:`scipy.integrate.ode`) from each jump to the next, the jump rule applied between
+    them.  The integrator's accepted steps are recorded as they come (``(t, phi, phi')``); the
+    samples of the plotted segments are interpolated from them afterwards, for all half periods at
+    once (:func:`_hermite_segments`): no dense output inside the loop."""
+    from scipy.integrate import ode
+
+    W = system.values(m)
+    w2 = [(2 * math.pi) ** 2 * float(W[0]), (2 * math.pi) ** 2 * float(W[1])]
+    g = 0.0 if Q is None else math.pi / float(Q)
+    k12 = float(W[2])
+    lengths = (float(tau) * float(system.duty), float(tau) * (1 - float(system.duty)))
+    cur = [w2[0]]
+    sin = math.sin
+
+    if g:
+
+        def rhs(t, y):
+            return [y[1], -2 * g * y[1] - cur[0] * sin(y[0])]
+
+    else:
+
+        def rhs(t, y):
+            return [y[1], -cur[0] * sin(y[0])]
+
+    steps: list = []
+    solver = ode(rhs).set_integrator("dop853", rtol=rtol, atol=atol, nsteps=10**7)
+    solver.set_solout(lambda t, y: steps.append((t, y[0], y[1])))
+    s = [float(s0[0]), float(s0[1])]
+    strobe = [tuple(s)]
+    halves = []  # (index of the first step of the half period, w^2) per recorded half period
+    jumps = (k12, 1 / k12)
+    for k in loop:
+        for h in (0, 1):
+            cur[0] = w2[h]
+            mark = len(steps)
+            if k < K:
+                halves.append(mark)
+            solver.set_initial_value(s, 0.0)
+            solver.integrate(lengths[h])
+            if not solver.successful():  # pragma: no cover - DOP853 on a smooth right-hand side
+                raise RuntimeError(f"integration failed in period {k} (half {h + 1})")
+            if k >= K:  # beyond the plotted periods: nothing kept
+                del steps[mark:]
+            y = solver.y
+            s = [float(y[0]), float(y[1]) * jumps[h]]
+        strobe.append(tuple(s))
+    env = _hermite_envelope(steps, halves, w2, g, K)
+
+    def dense():
+        return _hermite_segments(steps, halves, lengths, tau, w2, g, samples)
+
+    return strobe, dense, env
+
+
+def _hermite_envelope(steps, halves, w2, g, K) -> tuple[float, ...]:
+    """The largest ``|phi|`` in each of the first ``K`` periods: on each interval between two
+    accepted steps the cubic Hermite interpolant of ``phi`` (values and slopes ``phi'`` at both
+    ends) takes its extreme values at the ends or where its derivative (a quadratic) vanishes."""
+    if not halves:
+        return tuple(float("nan") for _ in range(K))
+    arr = np.asarray(steps, float)
+    t, p, v = arr[:, 0], arr[:, 1], arr[:, 2]
+    starts = np.asarray(halves + [len(steps)])
+    inner = np.ones(len(steps), bool)
+    inner[starts[1:] - 1] = False  # the last step of a half period starts no interval
+    i = np.nonzero(inner)[0]
+    h = t[i + 1] - t[i]
+    p0, p1, m0, m1 = p[i], p[i + 1], h * v[i], h * v[i + 1]
+    b = -3 * p0 - 2 * m0 + 3 * p1 - m1
+    a = 2 * p0 + m0 - 2 * p1 + m1
+    best = np.maximum(np.abs(p0), np.abs(p1))
+    with np.errstate(invalid="ignore", divide="ignore"):
+        disc = np.sqrt(b * b - 3 * a * m0)
+        for x in ((-b + disc) / (3 * a), (-b - disc) / (3 * a), -m0 / (2 * b)):
+            ok = (x > 0) & (x < 1)
+            val = np.abs(((a * x + b) * x + m0) * x + p0)
+            best = np.where(ok & (val > best), val, best)
+    period = (np.searchsorted(starts[:-1], i, side="right") - 1) // 2  # period of each interval
+    env = np.zeros(K)
+    np.maximum.at(env, period, best)
+    return tuple(float(x) for x in env)
+
+
+def _hermite_segments(steps, halves, lengths, tau, w2, g, samples):
+    """The plotted segments from the accepted steps: cubic Hermite interpolation of ``phi`` (with
+    ``phi'``) and of ``phi'`` (with ``phi''`` from the equation of motion) between consecutive
+    steps, at ``samples`` equally spaced times of each half period; all half periods at once."""
+    if not halves:
+        return []
+    arr = np.asarray(steps, float)
+    t, phi, dphi = arr[:, 0], arr[:, 1], arr[:, 2]
+    starts = np.asarray(halves + [len(steps)])
+    nh = len(halves)
+    which = np.repeat(np.arange(nh), np.diff(starts))  # the half period of every step
+    w = np.where(which % 2 == 0, w2[0], w2[1])
+    acc = -2 * g * dphi - w * np.sin(phi)
+    L = 2.0 * max(lengths) + 1.0
+    keys = which * L + t
+    halflen = np.where(np.arange(nh) % 2 == 0, lengths[0], lengths[1])
+    u = np.linspace(0.0, 1.0, samples)
+    ts = halflen[:, None] * u[None, :]  # (nh, samples) local times
+    skeys = (np.arange(nh)[:, None] * L + ts).ravel()
+    i = np.searchsorted(keys, skeys, side="right") - 1
+    lo = np.repeat(starts[:-1], samples)
+    hi = np.repeat(starts[1:] - 2, samples)
+    i = np.minimum(np.maximum(i, lo), hi)
+    h = t[i + 1] - t[i]
+    with np.errstate(invalid="ignore", divide="ignore"):
+        x = np.where(h > 0, (ts.ravel() - t[i]) / h, 0.0)
+    x2 = x * x
+    h00, h10 = (1 + 2 * x) * (1 - x) ** 2, x * (1 - x) ** 2
+    h01, h11 = x2 * (3 - 2 * x), x2 * (x - 1)
+    P = h00 * phi[i] + h10 * h * dphi[i] + h01 * phi[i + 1] + h11 * h * dphi[i + 1]
+    V = h00 * dphi[i] + h10 * h * acc[i] + h01 * dphi[i + 1] + h11 * h * acc[i + 1]
+    P, V = P.reshape(nh, samples), V.reshape(nh, samples)
+    tau = float(tau)
+    out = []
+    for j in range(nh):
+        k, half = divmod(j, 2)
+        t0 = k * tau + half * lengths[0]
+        out.append(Segment(half + 1, t0 + ts[j], P[j], V[j]))
+    return out

@@ -1,0 +1,143 @@
+"""Exact piecewise propagation of the linear model: each half period is a free oscillation whose
+map of ``(phi, phi')`` is the propagator :mod:`analytic.stitching` derives (lambdified to mpmath and
+numpy), the jump multiplies ``phi'`` by the derived ratio of the moments of inertia."""
+
+from __future__ import annotations
+
+from fractions import Fraction
+from functools import cache
+
+import mpmath
+import numpy as np
+
+from analytic.system import PAPER, phase_regimes
+
+from .params import exact_fraction
+from .simulation import Segment
+
+__all__ = ["run_linear", "envelope", "regime", "jump_factors", "as_mp"]
+
+
+def as_mp(x) -> mpmath.mpf:
+    """An exact rational (or any number mpmath takes) as an mpf at the working precision."""
+    if isinstance(x, Fraction):
+        return mpmath.mpf(x.numerator) / x.denominator
+    return mpmath.mpf(x)
+
+
+def _regime(m, Q, half: int, model: str, system=PAPER) -> str:
+    """``"under"``, ``"critical"`` or ``"over"``: the sign of ``omega_i**2 - gamma**2``
+    (:func:`analytic.system.phase_regimes`, exact for rational ``m`` and ``Q``)."""
+    if Q is None or model == "paper":
+        return "under"
+    mq = m if isinstance(m, Fraction) else exact_fraction(m)
+    Qq = Q if isinstance(Q, Fraction) else exact_fraction(Q)
+    return phase_regimes(system, mq, Qq, model)[half - 1]
+
+
+@cache
+def _propagator(model: str, regime: str, half: int, module: str):
+    """``(t, omega, gamma, Omega, Lambda) -> [[a, b], [c, d]]`` from
+    :func:`analytic.stitching.propagator` of the model's segment (the entries as four functions)."""
+    import sympy as sp
+
+    from analytic.model import Damping, Regime, S, segment
+    from analytic.stitching import propagator
+
+    damping = {"none": Damping.NONE, "paper": Damping.PAPER, "exact": Damping.EXACT}[model]
+    omega = S.omega1 if half == 1 else S.omega2
+    Omega = S.Omega1 if half == 1 else S.Omega2
+    Lam = S.Lambda1 if half == 1 else S.Lambda2
+    seg = segment(omega, S.A1, S.B1, damping, Regime(regime))
+    U = propagator(seg, S.t)
+    args = (S.t, omega, S.gamma, Omega, Lam)
+    return tuple(sp.lambdify(args, U[i, j], modules=module) for i in (0, 1) for j in (0, 1))
+
+
+@cache
+def _jump(module: str):
+    """The factor on ``phi'`` at the jumps 1 -> 2 and 2 -> 1 (:func:`analytic.model.jump_ratio`)."""
+    import sympy as sp
+
+    from analytic.model import S, jump_ratio
+
+    return (
+        sp.lambdify((S.m,), jump_ratio(1, 2), modules=module),
+        sp.lambdify((S.m,), jump_ratio(2, 1), modules=module),
+    )
+
+
+def _frequencies(m, Q, eff, work, system=PAPER):
+    """``omega_i``, ``gamma``, ``Omega_i``, ``Lambda_i`` (the latter zero where not applicable),
+    from the system's description (``omega0 = 2 pi``)."""
+    with mpmath.workdps(work):
+        g = mpmath.mpf(0) if Q is None else mpmath.pi / as_mp(Q)
+        out = []
+        W = system.values(m if system.uses_depth else None)[:2]
+        for half, Wi in ((1, W[0]), (2, W[1])):
+            w = 2 * mpmath.pi * mpmath.sqrt(as_mp(Wi))
+            z = w * w - g * g
+            reg = _regime(m, Q, half, eff, system)
+            Om = mpmath.sqrt(z) if reg == "under" and eff == "exact" else mpmath.mpf(0)
+            La = mpmath.sqrt(-z) if reg == "over" else mpmath.mpf(0)
+            out.append((w, g, Om, La, reg))
+        return out
+
+
+def run_linear(m, Q, eff, tau, s0, loop, K, samples, work, system=PAPER):
+    freqs = _frequencies(m, Q, eff, work, system)
+    U_mp = [_propagator(eff, freqs[h][4], h + 1, "mpmath") for h in (0, 1)]
+    U_np = [_propagator(eff, freqs[h][4], h + 1, "numpy") for h in (0, 1)]
+    with mpmath.workdps(work):
+        if system.is_paper:
+            j12, j21 = _jump("mpmath")
+            mm = as_mp(m)
+            k12, k21 = j12(mm), j21(mm)
+        else:
+            k12 = as_mp(Fraction(system.jump(m if system.uses_depth else None)))
+            k21 = 1 / k12
+        lengths = (tau * as_mp(system.duty), tau - tau * as_mp(system.duty))
+        maps = []
+        for h in (0, 1):
+            w, g, Om, La, _ = freqs[h]
+            maps.append([f(lengths[h], w, g, Om, La) for f in U_mp[h]])
+        tgrids = [np.linspace(0.0, float(lengths[h]), samples) for h in (0, 1)]
+        fl = [tuple(float(x) for x in freqs[h][:4]) for h in (0, 1)]
+        with np.errstate(all="ignore"):
+            dense = [
+                [
+                    np.broadcast_to(np.asarray(f(tgrids[h], *fl[h]), dtype=float), tgrids[h].shape)
+                    for f in U_np[h]
+                ]
+                for h in (0, 1)
+            ]
+        strobe = [s0]
+        segments = []
+        s = s0
+        for k in loop:
+            for h in (0, 1):
+                a, b, c, d = maps[h]
+                if k < K:  # the samples for plotting (beyond double range they become inf)
+                    p0, v0 = float(s[0]), float(s[1])
+                    A_, B_, C_, D_ = dense[h]
+                    with np.errstate(all="ignore"):
+                        phi, dphi = A_ * p0 + B_ * v0, C_ * p0 + D_ * v0
+                    t0 = float(k * tau + h * lengths[0])
+                    segments.append(Segment(h + 1, t0 + tgrids[h], phi, dphi))
+                s = (a * s[0] + b * s[1], c * s[0] + d * s[1])
+                s = (s[0], s[1] * (k12 if h == 0 else k21))
+            strobe.append(s)
+    return strobe, segments
+
+
+def envelope(segments, K) -> tuple[float, ...]:
+    env = []
+    for k in range(K):
+        parts = segments[2 * k : 2 * k + 2]
+        env.append(float(max(np.max(np.abs(p.phi)) for p in parts)) if parts else float("nan"))
+    return tuple(env)
+
+
+#: public names of the building blocks (the simulation's start needs the regimes and the jump)
+regime = _regime
+jump_factors = _jump
