@@ -8,15 +8,19 @@ Every module ``benchmarks/floor_*.py`` defines ``scenes(quick: bool) -> list[dic
 ``name``
     what is timed (unique over all modules);
 ``target``
-    the largest ratio ``ours / floor`` that passes;
+    the largest ratio ``ours / floor`` that passes (with ``floor=None``: the largest time, in
+    seconds, that passes);
 ``ours``, ``floor``
     zero-argument callables: the engine's path, and the best plain code written for the same job
-    in the benchmark module itself (no engine code in it);
+    in the benchmark module itself (no engine code in it); ``floor=None`` for a scene whose target
+    is absolute (a time the issue sets, where no plain code does the same job);
 ``note``
     one line: what the floor is;
 
-and optionally ``kind`` (``"cpu"``, the default: CPU time of this process, or ``"wall"``: wall
-time, for scenes that run a subprocess) and ``baseline`` (seconds per call of the same job in the
+and optionally ``repeat`` (a costly scene: that many single calls per sample set),
+``extra`` (a callable whose JSON-ready result joins the row: errors, memory), ``kind``
+(``"cpu"``, the default: CPU time of this process, or ``"wall"``: wall time, for scenes that run
+a subprocess) and ``baseline`` (seconds per call of the same job in the
 previous release, from ``benchmarks/results.json``: the table shows ``ours / baseline`` beside
 the ratio, so that nothing gets slower unnoticed -- measured on another day, so the load of the
 machine differs; the load of this run is printed).
@@ -77,20 +81,21 @@ def _batch(fn, clock, min_time: float) -> int:
 
 
 def measure(ours, floor, *, samples: int = 9, kind: str = "cpu", min_time: float = 0.02):
-    """Medians (seconds per call) of ``ours`` and ``floor``, timed alternately."""
+    """Medians (seconds per call) of ``ours`` and ``floor``, timed alternately.  ``floor=None``
+    (a scene whose target is absolute, in seconds): ``ours`` alone, and ``None`` for the floor."""
     clock = _clock(kind)
-    ours()
-    floor()  # warm
-    k_ours = _batch(ours, clock, min_time)
-    k_floor = _batch(floor, clock, min_time)
-    t_ours, t_floor = [], []
+    pairs = [(ours, [])] + ([] if floor is None else [(floor, [])])
+    for fn, _ in pairs:
+        fn()  # warm
+    ks = [_batch(fn, clock, min_time) if min_time > 0 else 1 for fn, _ in pairs]
     for _ in range(samples):
-        for fn, k, out in ((ours, k_ours, t_ours), (floor, k_floor, t_floor)):
+        for (fn, out), k in zip(pairs, ks, strict=True):
             t = clock()
             for _ in range(k):
                 fn()
             out.append((clock() - t) / k)
-    return statistics.median(t_ours), statistics.median(t_floor)
+    meds = [statistics.median(out) for _, out in pairs]
+    return meds[0], (meds[1] if floor is not None else None)
 
 
 def _machine() -> dict:
@@ -129,14 +134,17 @@ def run(quick: bool = False, only: str | None = None, progress=None) -> dict:
     items = progress(scenes) if progress else scenes
     for module, sc in items:
         kind = sc.get("kind", "cpu")
+        repeat = sc.get("repeat")  # a costly scene: that many single calls
         ours_s, floor_s = measure(
             sc["ours"],
             sc["floor"],
-            samples=5 if quick else 9,
+            samples=repeat or (5 if quick else 9),
             kind=kind,
-            min_time=0.01 if quick else 0.03,
+            min_time=0 if repeat else (0.01 if quick else 0.03),
         )
-        ratio = ours_s / floor_s
+        # no floor: the target is a time in seconds, and the "ratio" is ours against it
+        ratio = ours_s / (floor_s if floor_s is not None else sc["target"])
+        absolute = floor_s is None
         rows.append(
             {
                 "module": module,
@@ -145,7 +153,8 @@ def run(quick: bool = False, only: str | None = None, progress=None) -> dict:
                 "floor_seconds": floor_s,
                 "ratio": ratio,
                 "target": sc["target"],
-                "passed": ratio <= sc["target"],
+                "passed": ratio <= 1 if absolute else ratio <= sc["target"],
+                "target_is_seconds": absolute,
                 "clock": kind,
                 "note": sc.get("note", ""),
                 "baseline_seconds": sc.get("baseline"),
@@ -193,9 +202,12 @@ def render(doc: dict) -> str:
     ]
     for r in doc["scenes"]:
         mark = " (wall)" if r["clock"] == "wall" else ""
+        absolute = r.get("target_is_seconds")
+        floor = "-" if absolute else _fmt_time(r["floor_seconds"])
+        target = f"{r['target']:g} s" if absolute else f"{r['target']:.2f}"
         lines.append(
             f"{r['name']:<{w}}  {_fmt_time(r['ours_seconds']):>10}  "
-            f"{_fmt_time(r['floor_seconds']):>10}  {r['ratio']:>6.2f}  {r['target']:>6.2f}  "
+            f"{floor:>10}  {r['ratio']:>6.2f}  {target:>6}  "
             f"{'pass' if r['passed'] else 'FAIL'}{mark:7}"
             + ("" if r.get("vs_previous") is None else f"  {r['vs_previous']:.2f}")
         )

@@ -43,7 +43,11 @@ def register(subparsers) -> None:
         help="order of the resonance (1, 2, ..., or odd/even)",
     )
     p.add_argument(
-        "--terms", default="4", metavar="K", help="highest power of m kept, 1 to 40 (24 for odd/even, 12 with friction or another system; default 4)"
+        "--terms",
+        default="4",
+        metavar="K",
+        help="highest power of m kept, 1 to 40 (24 for odd/even, 12 with friction or another "
+        "system; default 4)",
     )
     add_friction(p)
     add_system(p)
