@@ -13,10 +13,9 @@ from pathlib import Path
 ROOT = Path(__file__).resolve().parent.parent
 PACKAGES = ("paramres", "analytic", "verify", "reports")
 
-#: edges not yet removed, each with the change that removes it: the double grid's fallback to
-#: the certified route imports the dispatcher ``verify.solve``; importing ``verify.certified``
-#: (the certified method alone) breaks the cycle grid -> solve -> auto -> grid
-KNOWN = {("verify.grid", "verify.solve")}
+#: edges not yet removed, each with the change that removes it (none left: the double grid's
+#: fallback imports ``verify.certified``, the certified method alone, not the dispatcher)
+KNOWN: set[tuple[str, str]] = set()
 
 
 def _module_name(path: Path) -> str:

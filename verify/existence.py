@@ -341,7 +341,8 @@ def max_indicator(n: int, ms, Q: Fraction, damping: str) -> np.ndarray:
 
     Normal form where it applies (vectorised), trace form elsewhere (``-inf`` where the order has
     no window)."""
-    from .grid import damped_normal, damped_trace, trace_window_ends
+    from .float_roots import damped_trace, trace_window_ends
+    from .grid import damped_normal
 
     ms = np.atleast_1d(np.asarray(ms, float))
     out = np.full(ms.shape, -np.inf)
@@ -755,7 +756,7 @@ def _in_trace_window(n, lo, hi, Q, regimes, z) -> bool:
 
 
 def _no_window_on_box(n, lo, hi, Q, regimes) -> bool:
-    from .grid import trace_window_ends  # noqa: F401  (the float tail bound below is its rule)
+    from .float_roots import trace_window_ends  # noqa: F401  (the float tail bound below is its rule)
     from .hump import prove_no_window
 
     if regimes[1] != "under":

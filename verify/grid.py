@@ -49,8 +49,17 @@ from .derived import (
     near_one_forms,
     order1_forms,
     term_sizes,
-    trace_indicator,
-    trace_window,
+)
+from .float_roots import (
+    DOUBT,
+    ERROR_BOUND,
+    NOISE_ULPS,
+    damped_trace,
+    regime_of,
+    trace_window_ends,
+)
+from .float_roots import (
+    bisect_newton as _bisect_newton,
 )
 from .inputs import InputError, as_damping, as_depth, as_orders, as_quality
 from .params import NEAR_CRITICAL, NormalParams, exact_fraction, normal_params, trace_params
@@ -266,31 +275,6 @@ def _table_start(n, r, beta, eps):
     return out.reshape(nodes.shape[:-1] + (beta.size,))
 
 
-def _bisect_newton(f_and_df, lo, hi, x0, increasing, *, iterations=100, rtol=4e-16):
-    """Vectorised safeguarded Newton for a root of ``f`` in ``[lo, hi]`` with a sign change
-    (``f(lo) < 0 < f(hi)`` if ``increasing`` else the reverse)."""
-    x = np.array(x0, float)
-    lo, hi = np.array(lo, float), np.array(hi, float)
-    sign = np.where(increasing, 1.0, -1.0)
-    for _ in range(iterations):
-        f, df = f_and_df(x)
-        f, df = sign * np.asarray(f, float), sign * np.asarray(df, float)
-        lo = np.where(f < 0, x, lo)
-        hi = np.where(f > 0, x, hi)
-        with np.errstate(divide="ignore", invalid="ignore"):
-            step = f / df
-        xn = x - step
-        scale = np.maximum(np.abs(x), 1e-300)
-        small = np.abs(step) <= 0.5 * rtol * scale
-        bad = ~((xn > lo) & (xn < hi) | small) | ~np.isfinite(xn)
-        xn = np.where(bad, 0.5 * (lo + hi), xn)
-        if np.all(small | (f == 0) | (hi - lo <= rtol * scale) | ~np.isfinite(x)):
-            x = xn
-            break
-        x = xn
-    return x
-
-
 def _bisect_newton_compact(fn, args, lo, hi, x0, increasing: bool, *, iterations=100, rtol=4e-16):
     """:func:`_bisect_newton` for ``fn(x, *args) -> (f, df)`` on arrays: everything broadcast to
     one shape, and each point dropped from the iteration once it has converged (the same rule per
@@ -361,128 +345,6 @@ def damped_normal(n, P):
 
 
 # ---------------------------------------------------------------------------------------------
-# trace form (exact model, a half critically or over-damped)
-
-
-def regime_of(u) -> str:
-    return "under" if u > 0 else ("critical" if u == 0 else "over")
-
-
-def trace_window_ends(n: int, regimes, T, *, bits: int = 60):
-    """The ``zeta``-window of order ``n`` (floats ``(za, zb)``; ``None`` if the order has none).
-
-    Half 2 under-damped: ``Phi(zeta) = n pi -+ pi/2`` (``Phi`` increases strictly), the upper end
-    capped where ``(2 + |kappa| zeta^2) exp(-(2 - nu1) zeta) < 1/2`` (``D < 0`` beyond).  Both
-    halves critically or over-damped: only ``n = 1``, from the zero of ``P = 2 C1 C2 - kappa S1 S2``
-    to a point beyond which ``D < 0`` is guaranteed by ``|kappa| zeta^2 exp(-(2 - nu1 - nu2) zeta) <
-    1``.
-    """
-    r1, r2 = regimes
-    kappa, nu1, nu2 = float(T.kappa), float(T.nu1), float(T.nu2)
-    win = trace_window(r1).compiled("math", (0, 1))
-    if r2 == "under":
-
-        def phi(z):
-            C1, S1 = win(z, 1.0, kappa, nu1, nu2)
-            return nu2 * z + math.atan2(kappa * S1, 2 * nu2 * C1)
-
-        # beyond ztail, D <= (2 + |kappa| zeta^2) exp(nu1 zeta) - exp(2 zeta) < 0 (|C2| <= 1,
-        # |S2| <= zeta, C1 <= exp(nu1 zeta), S1 <= zeta exp(nu1 zeta)): the window need not go on
-        a = 2 - nu1
-        ztail = max(2 / a, 1.0)
-        while (2 + abs(kappa) * ztail * ztail) * math.exp(-a * ztail) >= 0.5:
-            ztail *= 1.25
-
-        def solve(target):
-            lo, hi = 0.0, min((target + math.pi) / nu2, ztail)
-            if phi(hi) < target:
-                return hi, hi
-            for _ in range(bits + 10):
-                mid = 0.5 * (lo + hi)
-                if phi(mid) < target:
-                    lo = mid
-                else:
-                    hi = mid
-            return lo, hi
-
-        za = solve(n * math.pi - _HALF_PI)[0]
-        zb = min(solve(n * math.pi + _HALF_PI)[1], ztail)
-        if r1 == "under" and nu1 * zb >= _HALF_PI:  # pragma: no cover - Phi may not be monotone
-            raise ValueError("half 1 too far from critical damping for the trace-form window")
-        return (za, zb) if za < zb else None
-    if n != 1 or kappa <= 0:
-        return None
-    form = trace_indicator(r1, r2)
-    Pf = form.compiled("math", 0)
-
-    def P(z):  # D = sigma P - 2 cosh(2 zeta) with sigma = 1 gives P
-        return Pf(z, 1.0, kappa, nu1, nu2) + 2 * math.cosh(2 * z)
-
-    a = 2 - nu1 - nu2
-    zend = max(2 / a, 1.0)
-    while abs(kappa) * zend * zend * math.exp(-a * zend) >= 0.5:
-        zend *= 1.5
-    if P(zend) >= 0:
-        return None
-    lo, hi = 0.0, zend
-    for _ in range(bits + 10):
-        mid = 0.5 * (lo + hi)
-        if P(mid) > 0:
-            lo = mid
-        else:
-            hi = mid
-    return lo, zend
-
-
-def damped_trace(n: int, regimes, T, window):
-    """Friction, trace form, one order and depth: ``dict(a, b, top, dtop, lo, hi, doubt)`` in
-    ``zeta``; ``doubt``: the sign of ``D`` at the maximiser is within rounding, or an edge's
-    estimated relative error exceeds :data:`DOUBT` (as :func:`_normal_doubt`)."""
-    sigma = -1.0 if n % 2 else 1.0
-    form = trace_indicator(*regimes)
-    d01 = form.compiled("math", (0, 1))
-    d12 = form.compiled("math", (1, 2))
-    args = (sigma, float(T.kappa), float(T.nu1), float(T.nu2))
-    za, zb = window
-    out = {"a": za, "b": zb, "top": math.nan, "dtop": -math.inf, "lo": math.nan, "hi": math.nan}
-    # maximiser: scan then Newton on D' (the window holds at most a few oscillations of nothing)
-    zs = np.linspace(za, zb, 65)
-    vals = [d01(z, *args)[0] for z in zs]
-    k = int(np.argmax(vals))
-    lo, hi = zs[max(k - 1, 0)], zs[min(k + 1, len(zs) - 1)]
-
-    def fd(x):
-        return np.array(d12(float(x), *args))
-
-    d1lo, d1hi = d12(lo, *args)[0], d12(hi, *args)[0]
-    if d1lo > 0 > d1hi:
-        top = float(_bisect_newton(lambda x: fd(x), lo, hi, zs[k], False))
-    else:
-        top = float(zs[k])
-    dtop = d01(top, *args)[0]
-    sizes = term_sizes(form).compiled("math", (0, 1))
-
-    def noise(z):  # as :func:`_noise`, the angles of size zeta
-        total, slope = sizes(z, *args)
-        return NOISE_ULPS * 2.0**-53 * (abs(total) + z * abs(slope))
-
-    out.update(top=top, dtop=dtop, doubt=abs(dtop) <= noise(top))
-    if dtop <= 0:
-        return out
-
-    def f01(x):
-        return np.array(d01(float(x), *args))
-
-    out["lo"] = float(_bisect_newton(f01, za, top, 0.5 * (za + top), True))
-    out["hi"] = float(_bisect_newton(f01, top, zb, 0.5 * (top + zb), False))
-    for z in (out["lo"], out["hi"]):
-        slope = abs(d01(z, *args)[1])
-        if not noise(z) <= DOUBT * slope * z:
-            out["doubt"] = True
-    return out
-
-
-# ---------------------------------------------------------------------------------------------
 # the grid
 
 
@@ -491,8 +353,6 @@ def _halves_exact(m, Q: Fraction):
     return [regime_of(4 * Q * Q - 1 - x) for x in m], [regime_of(4 * Q * Q - 1 + x) for x in m]
 
 
-#: the relative error bound of every finite entry of :func:`boundary_grid`
-ERROR_BOUND = 1e-14
 #: the double path serves depths with ``1 - m`` at least this (the last double below 1 has
 #: ``1 - m = 2**-53``) and ``m`` at least the smallest normal double; exact depths outside are
 #: computed by the certified route
@@ -634,8 +494,8 @@ def _blocks(cols, size: int):
 def _certified_point(n: int, m: Fraction, Q, damping: str, system=None) -> tuple[float, float]:
     """Both edges from the certified route (NaN if the interval does not exist), at enough digits
     for a double: 20, more where the route asks for more."""
+    from .certified import boundary
     from .certify import CertificationError
-    from .solve import boundary
 
     err = None
     for digits in (20, 40, 80, 160):
@@ -855,12 +715,6 @@ def _fill_normal(out, orders, ms, P, damped: bool) -> np.ndarray:
                 lo_doubt[k, cols] = unsure
         doubt[rows] = top_doubt | lo_doubt | hi_doubt
     return doubt
-
-
-#: rounding of a form's value, in units of 2^-53 times its term sizes (:func:`_noise`)
-NOISE_ULPS = 4
-#: an edge is escalated when its estimated relative error exceeds this (a quarter of the bound)
-DOUBT = ERROR_BOUND / 4
 
 
 def _noise(form, v, args, scale):

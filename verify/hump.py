@@ -534,7 +534,7 @@ def hump_trace(
     the :class:`_Hump` in ``zeta`` on the proven window of order ``n``, and the parameters; or
     ``(None, reason)`` if the order has no window.  ``m_box`` as for :func:`hump_normal` (the
     regimes must be those of every depth in it)."""
-    from .grid import damped_trace, trace_window_ends
+    from .float_roots import damped_trace, trace_window_ends
 
     Tf = trace_params(m, Q, _MATH, system)
     window = window or trace_window_ends(n, regimes, Tf)
