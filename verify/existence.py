@@ -226,6 +226,12 @@ class Existence:
             )
         return "\n".join(lines)
 
+    def _repr_html_(self) -> str:
+        """The printed text in a notebook (every certified digit)."""
+        from paramres.display import pre_html
+
+        return pre_html(self)
+
 
 def _closing_in(n: int, Q, damping: str, lo, hi) -> str:
     """``"b:a"`` (``T1:T2``) of the closing of order ``n`` whose depth lies in ``[lo, hi]``."""
