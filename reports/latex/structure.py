@@ -151,10 +151,10 @@ def table(
     tab = environment(
         "tabular", Latex(f"\\toprule\n{head}\n\\midrule\n{body}\n\\bottomrule"), raw(columns)
     )
-    inner = (
+    floated = (
         "\n".join(["\\centering", *switches]) + "\n" + (cap + lab + "\n" if cap else "") + tab.raw
     )
-    return environment("table", Latex(inner), optional="htbp")
+    return environment("table", Latex(floated), optional="htbp")
 
 
 def short_caption(src: str, limit: int = 90) -> str | None:
