@@ -12,10 +12,10 @@ from __future__ import annotations
 
 import argparse
 
-from reports.output import dump_json
+from reports.output import dump_json, working
 from verify.existence import existence
 
-from ._arguments import add_friction, add_json, add_order
+from ._arguments import add_friction, add_json, add_order, add_quiet
 
 __all__ = ["register", "run"]
 
@@ -39,11 +39,13 @@ def register(subparsers) -> None:
         "--digits", default="15", metavar="D", help="digits of each end, 5 to 10000 (default 15)"
     )
     add_json(p)
+    add_quiet(p)
     p.set_defaults(func=run)
 
 
 def run(args) -> int:
-    result = existence(args.order, args.Q, damping=args.damping, digits=args.digits)
+    with working("existence", quiet=args.quiet):
+        result = existence(args.order, args.Q, damping=args.damping, digits=args.digits)
     if args.json:
         data = result.as_json()
         dump_json(

@@ -19,7 +19,15 @@ import mpmath
 from reports.output import dump_json, progress
 from verify.timedomain import EDGES, MAX_PERIODS
 
-from ._arguments import add_depth, add_friction, add_json, add_order, add_system, system_of
+from ._arguments import (
+    add_depth,
+    add_friction,
+    add_json,
+    add_order,
+    add_quiet,
+    add_system,
+    system_of,
+)
 
 __all__ = ["register", "run", "render_text"]
 
@@ -76,6 +84,7 @@ def register(subparsers) -> None:
         help="write phase trajectory, phi'(t), phi(t) (.pdf, .png or .svg)",
     )
     add_json(p)
+    add_quiet(p)
     p.set_defaults(func=run)
 
 
@@ -96,7 +105,7 @@ def run(args) -> int:
         amplitude=args.amplitude,
         nonlinear=args.nonlinear,
         digits=args.digits,
-        progress=lambda it, total: progress(it, total=total, label="simulate"),
+        progress=lambda it, total: progress(it, total=total, label="simulate", quiet=args.quiet),
         system=sysv,
     )
     if plot is not None:

@@ -35,7 +35,7 @@ from verify.inputs import (
     as_tolerance,
 )
 
-from ._arguments import add_friction, add_system, system_of
+from ._arguments import add_friction, add_quiet, add_system, system_of
 
 __all__ = ["register", "run", "rows", "decimal_text"]
 
@@ -86,6 +86,7 @@ def register(subparsers) -> None:
         help="write to FILE (atomically) instead of standard output",
     )
     p.add_argument("--jobs", metavar="J", default="1", help="worker processes (default 1)")
+    add_quiet(p)
     p.set_defaults(func=run)
 
 
@@ -122,11 +123,11 @@ def _certified(task):
     return (order, m, j["lower"], j["upper"], j["delta_lower"], j["delta_upper"], j["error_bound"])
 
 
-def _tol_rows(orders, ms, Q, damping, tol, label):
+def _tol_rows(orders, ms, Q, damping, tol, label, quiet=False):
     from verify.auto import boundaries_tol
 
     def prog(items):
-        return progress(items, total=len(items), label=label)
+        return progress(items, total=len(items), label=label, quiet=quiet)
 
     out = []
     for b in boundaries_tol(orders, ms, Q=Q, damping=damping, tol=tol, progress=prog):
@@ -136,10 +137,10 @@ def _tol_rows(orders, ms, Q, damping, tol, label):
     return out
 
 
-def rows(orders, ms, Q, damping, digits, jobs=1, label="table", tol=None, system=None):
+def rows(orders, ms, Q, damping, digits, jobs=1, label="table", tol=None, system=None, quiet=False):
     """Table rows ``(order, m, lower, upper[, delta_lower, delta_upper, error_bound[, method]])``
     as text (``method`` with a tolerance ``tol``), for ``system`` (default: the paper's
-    pendulum)."""
+    pendulum); ``quiet``: no progress bar."""
     from analytic.system import PAPER
 
     system = PAPER if system is None else system
@@ -149,7 +150,7 @@ def rows(orders, ms, Q, damping, digits, jobs=1, label="table", tol=None, system
             f"{system.label}"
         )
     if tol is not None:
-        return _tol_rows(orders, ms, Q, damping, tol, label)
+        return _tol_rows(orders, ms, Q, damping, tol, label, quiet)
     if digits is None:
         import mpmath
 
@@ -171,8 +172,9 @@ def rows(orders, ms, Q, damping, digits, jobs=1, label="table", tol=None, system
         ctx = multiprocessing.get_context("spawn" if os.name == "nt" else "fork")
         with ctx.Pool(jobs) as pool:
             it = pool.imap(_certified, tasks, chunksize=max(1, len(tasks) // (8 * jobs)))
-            return list(progress(it, total=len(tasks), label=label))
-    return [_certified(t) for t in progress(tasks, total=len(tasks), label=label)]
+            return list(progress(it, total=len(tasks), label=label, quiet=quiet))
+    bar = progress(tasks, total=len(tasks), label=label, quiet=quiet)
+    return [_certified(t) for t in bar]
 
 
 def run(args) -> int:
@@ -202,7 +204,7 @@ def run(args) -> int:
     sysv = system_of(args)
     if not sysv.uses_depth:
         raise InputError("a custom system has no depth: a table over m makes no sense for it")
-    data = rows(orders, ms, Q, damping, digits, jobs, tol=tol, system=sysv)
+    data = rows(orders, ms, Q, damping, digits, jobs, tol=tol, system=sysv, quiet=args.quiet)
     certified = digits is not None or tol is not None
     header = ["order", "m", "lower", "upper"]
     # error_bound: |printed - exact| for each number of the row, the rounding of the print included
