@@ -42,6 +42,7 @@ __all__ = [
     "save_figure",
     "check_plot_path",
     "draw_run",
+    "over_the_top",
     "FORMATS",
 ]
 
@@ -50,6 +51,8 @@ __all__ = [
 #: colours of the two halves: bob down (long pendulum), bob up (short pendulum)
 HALF_COLOURS = {1: "#0072B2", 2: "#D55E00"}
 JUMP_COLOUR = "0.45"
+#: the level |phi| = pi and the moment a nonlinear run passes it (goes over the top)
+ROTATION_COLOUR = "#CC79A7"
 
 
 @dataclass(frozen=True)
@@ -140,8 +143,44 @@ def _check_finite(sim) -> None:
             )
 
 
+def over_the_top(sim) -> tuple[float, float] | None:
+    """``(t, phi)`` where a nonlinear run first passes ``|phi| = pi`` (the pendulum goes over the
+    top and rotates from then on), or ``None``."""
+    if not getattr(sim, "rotates", None):
+        return None
+    for s in sim.segments:
+        phi = np.asarray(s.phi, dtype=float)
+        hit = np.nonzero(np.abs(phi) > np.pi)[0]
+        if hit.size:
+            k = int(hit[0])
+            return float(np.asarray(s.t, dtype=float)[k]), float(phi[k])
+    return None  # pragma: no cover - rotates means some sample passed pi
+
+
+def _mark_rotation(ax_phase, ax_angle, sim) -> None:
+    """The level ``|phi| = pi`` and the moment the pendulum first passes it, with a legend."""
+    top = over_the_top(sim)
+    if top is None:
+        return
+    t, phi = top
+    for level in (np.pi, -np.pi):
+        ax_angle.axhline(level, color=ROTATION_COLOUR, lw=0.6, ls=":", zorder=0)
+        ax_phase.axvline(level, color=ROTATION_COLOUR, lw=0.6, ls=":", zorder=0)
+    ax_angle.plot(
+        [t],
+        [phi],
+        marker="v",
+        ms=5,
+        color=ROTATION_COLOUR,
+        ls="none",
+        label=rf"over the top ($|\varphi| = \pi$) at $t/T_0 = {t:.3g}$: it rotates",
+    )
+    ax_angle.legend(fontsize=6.5, loc="upper left")
+
+
 def draw_run(ax_phase, ax_vel, ax_angle, sim, *, numbered: int = 8) -> None:
-    """Draw one run on three axes; number the first ``numbered`` segment end points."""
+    """Draw one run on three axes; number the first ``numbered`` segment end points.  A
+    nonlinear run that goes over the top is marked where it first passes ``|phi| = pi``."""
     _check_finite(sim)
     segs = sim.segments
     for i, s in enumerate(segs):
@@ -203,6 +242,7 @@ def draw_run(ax_phase, ax_vel, ax_angle, sim, *, numbered: int = 8) -> None:
     ax_vel.set_ylabel(r"$\dot\varphi$ (rad$/T_0$)")
     ax_angle.set_ylabel(r"$\varphi$ (rad)")
     ax_angle.set_xlabel(r"$t/T_0$")
+    _mark_rotation(ax_phase, ax_angle, sim)
 
 
 def time_figure(
@@ -233,7 +273,9 @@ def time_figure(
                 after = "2T" if sim.closure_periods == 2 else "T"
                 note.append(f"closure after ${after}$: {float(sim.closure_error):.1e}")
             note.append(f"growth per period {float(sim.growth_per_period):.6g}")
-            if sim.nonlinear:
+            if sim.nonlinear and sim.rotates:
+                note.append("over the top: it rotates")
+            elif sim.nonlinear:
                 note.append(f"peak amplitude {sim.peak_amplitude:.3g} rad")
             ax_vel.set_title(_label(sim) + "\n" + "; ".join(note), fontsize=7.5, loc="left")
         if envelope:
@@ -252,9 +294,14 @@ def _draw_envelope(ax, runs, labels) -> None:
             label = None if marked else "amplitude that detunes the lower edge past $T$ (estimate)"
             ax.axhline(sim.saturation_estimate, color="0.5", lw=0.6, ls=":", label=label)
             marked = True
+    rotating = any(getattr(s, "rotates", None) for s in runs)
+    if rotating:
+        ax.axhline(
+            np.pi, color=ROTATION_COLOUR, lw=0.6, ls=":", label=r"$|\varphi| = \pi$: over the top"
+        )
     ax.set_xlabel("period $k$")
     ax.set_ylabel(r"$\max|\varphi|$ in period $k$")
-    if len(labels) > 1 or any(s.saturation_estimate is not None for s in runs):
+    if len(labels) > 1 or rotating or any(s.saturation_estimate is not None for s in runs):
         ax.legend(fontsize=7)
 
 
