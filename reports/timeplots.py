@@ -29,6 +29,7 @@ from verify.inputs import InputError
 
 from . import figures
 from .figures import FORMATS, TEXT_WIDTH_IN, check_plot_path, figure_bytes, style
+from .i18n import say
 
 __all__ = [
     "PAPER_SCENES",
@@ -128,10 +129,19 @@ def _label(sim) -> str:
         T = mpmath.nstr(sim.tau, 10)
     parts = [f"$n = {sim.order}$, $m = {sim.m}$, $T/T_0 = {T}$"]
     if sim.edge:
-        parts.append(f"{sim.edge} edge")
-    parts.append("no friction" if sim.Q is None else f"$Q = {sim.Q}$ ({sim.damping})")
+        parts.append(
+            say(
+                f"{sim.edge} edge",
+                {"lower": "нижняя граница", "upper": "верхняя граница"}[sim.edge],
+            )
+        )
+    if sim.Q is None:
+        parts.append(say("no friction", "без трения"))
+    else:
+        model = say(sim.damping, {"exact": "точная модель", "paper": "модель статьи"}[sim.damping])
+        parts.append(f"$Q = {sim.Q}$ ({model})")
     if sim.nonlinear:
-        parts.append("nonlinear")
+        parts.append(say("nonlinear", "нелинейный"))
     return ", ".join(parts)
 
 
@@ -271,12 +281,17 @@ def time_figure(
             note = []
             if sim.closure_error is not None:
                 after = "2T" if sim.closure_periods == 2 else "T"
-                note.append(f"closure after ${after}$: {float(sim.closure_error):.1e}")
-            note.append(f"growth per period {float(sim.growth_per_period):.6g}")
+                closure = f"{float(sim.closure_error):.1e}"
+                note.append(
+                    say(f"closure after ${after}$: ", f"невязка через ${after}$: ") + closure
+                )
+            growth = f"{float(sim.growth_per_period):.6g}"
+            note.append(say("growth per period ", "рост за период ") + growth)
             if sim.nonlinear and sim.rotates:
-                note.append("over the top: it rotates")
+                note.append(say("over the top: it rotates", "переход через верх: вращение"))
             elif sim.nonlinear:
-                note.append(f"peak amplitude {sim.peak_amplitude:.3g} rad")
+                peak = f"{sim.peak_amplitude:.3g}"
+                note.append(say(f"peak amplitude {peak} rad", f"наибольший размах {peak} рад"))
             ax_vel.set_title(_label(sim) + "\n" + "; ".join(note), fontsize=7.5, loc="left")
         if envelope:
             _draw_envelope(fig.add_subplot(outer[rows]), sims, [_label(s) for s in sims])
@@ -291,7 +306,14 @@ def _draw_envelope(ax, runs, labels) -> None:
         env = np.asarray(sim.envelope, dtype=float)
         ax.semilogy(np.arange(1, len(env) + 1), env, lw=1.0, label=lab)
         if sim.saturation_estimate is not None:
-            label = None if marked else "amplitude that detunes the lower edge past $T$ (estimate)"
+            label = (
+                None
+                if marked
+                else say(
+                    "amplitude that detunes the lower edge past $T$ (estimate)",
+                    "амплитуда, при которой нижняя граница уходит за $T$ (оценка)",
+                )
+            )
             ax.axhline(sim.saturation_estimate, color="0.5", lw=0.6, ls=":", label=label)
             marked = True
     rotating = any(getattr(s, "rotates", None) for s in runs)
@@ -299,8 +321,8 @@ def _draw_envelope(ax, runs, labels) -> None:
         ax.axhline(
             np.pi, color=ROTATION_COLOUR, lw=0.6, ls=":", label=r"$|\varphi| = \pi$: over the top"
         )
-    ax.set_xlabel("period $k$")
-    ax.set_ylabel(r"$\max|\varphi|$ in period $k$")
+    ax.set_xlabel(say("period $k$", "период $k$"))
+    ax.set_ylabel(say(r"$\max|\varphi|$ in period $k$", r"$\max|\varphi|$ за период $k$"))
     if len(labels) > 1 or rotating or any(s.saturation_estimate is not None for s in runs):
         ax.legend(fontsize=7)
 
@@ -401,7 +423,11 @@ def saturation_figure(
         simulate(1, m, nonlinear=True, **common),
         simulate(1, m, Q=Q, nonlinear=True, **common),
     ]
-    labels = ["linear model", "pendulum, no friction", f"pendulum, $Q = {Q}$"]
+    labels = [
+        say("linear model", "линейная модель"),
+        say("pendulum, no friction", "маятник без трения"),
+        say(f"pendulum, $Q = {Q}$", f"маятник, $Q = {Q}$"),
+    ]
     with mpmath.workdps(10):
         Tt = mpmath.nstr(T, 8)
     return envelope_figure(
