@@ -89,10 +89,18 @@ ORDER_COLOURS = (
 FRICTION_SHADES = ("#c6dbef", "#6baed6", "#2171b5", "#08306b")
 
 
+#: what changes for a language whose letters Computer Modern lacks: DejaVu Serif (shipped with
+#: matplotlib, Cyrillic included) for the text and, so that the two match, for the formulas
+LANGUAGE_RC = {"ru": {"font.serif": ["DejaVu Serif"], "mathtext.fontset": "dejavuserif"}}
+
+
 @contextmanager
 def style():
-    """The report's matplotlib settings, local to the ``with`` block."""
-    with matplotlib.rc_context(RC):
+    """The report's matplotlib settings, local to the ``with`` block, in the fonts of the
+    language being built (:func:`reports.i18n.current`)."""
+    from .i18n import current
+
+    with matplotlib.rc_context({**RC, **LANGUAGE_RC.get(current(), {})}):
         yield
 
 
