@@ -338,9 +338,11 @@ def envelope_figure(runs, labels, *, title: str | None = None, ylim=None) -> Fig
         _draw_envelope(ax, runs, labels)
         if ylim is not None:
             ax.set_ylim(*ylim)
-        ax.legend(fontsize=7, loc="upper left")
+        # the legend above the axes, in two columns: inside, the growing curve crosses it
+        ax.legend(fontsize=7, loc="lower left", bbox_to_anchor=(0, 1.02), ncol=2, borderaxespad=0)
+        fig.subplots_adjust(top=0.8 if not title else 0.72)
         if title:
-            ax.set_title(title)
+            fig.suptitle(title, fontsize=9)
     return fig
 
 

@@ -34,7 +34,7 @@ def test_series_and_closings_and_steps():
     table = c._repr_html_()
     assert table.count("<tr>") == 1 + len(c.items) and "3/5" in table  # 2:1 closes at m = 3/5
     assert "$" in c.steps[0]._repr_latex_()
-    step = next(iter(chains().values())).steps[0]
+    step = chains()[0].steps[0]
     assert step._repr_latex_().startswith(r"$\displaystyle")
 
 
