@@ -40,6 +40,15 @@ class Row:
     how: str
     title: str = ""
 
+    def _repr_html_(self) -> str:
+        """The row as a small table; the formulas (LaTeX between ``$``) are left to MathJax."""
+        from paramres.display import html_table
+
+        return html_table(
+            ("eq.", "status", "printed", "derived", "how"),
+            [(self.equation, self.status, f"${self.printed}$", f"${self.derived}$", self.how)],
+        )
+
     def as_json(self) -> dict:
         d = asdict(self)
         return {k: d[k] for k in ("equation", "status", "printed", "derived", "how", "title")}

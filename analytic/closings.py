@@ -73,6 +73,13 @@ class Step:
     expr: sp.Expr
     verdict: Verdict
 
+    def _repr_latex_(self) -> str:
+        """The claim, the identity checked and the verdict (Jupyter)."""
+        return (
+            rf"{self.claim}: $\displaystyle {sp.latex(self.expr)}$ "
+            f"({self.verdict.describe()})"
+        )
+
 
 @dataclass(frozen=True)
 class Closing:
@@ -146,6 +153,15 @@ class Closings:
     steps: tuple[Step, ...]
     statement: str
     system: System = PAPER
+
+    def _repr_html_(self) -> str:
+        """The closings as a table (order, ``T1 : T2``, exact depth, certified period)."""
+        from paramres.display import html_table
+
+        return html_table(
+            ("order", "a", "b", "T1 : T2", "m", "T/T0"),
+            ((c.order, c.a, c.b, c.ratio, c.m, c.T_text) for c in self.items),
+        )
 
     def __iter__(self):
         return iter(self.items)

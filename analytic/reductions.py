@@ -58,6 +58,14 @@ class Step:
     why: str
     verdict: Verdict
 
+    def _repr_latex_(self) -> str:
+        """The equation with its number, and why it follows (Jupyter)."""
+        tag = rf" \qquad ({self.label})" if self.label else ""
+        return (
+            rf"$\displaystyle {sp.latex(self.expr)}{tag}$ "
+            f"{self.why}; {self.verdict.describe()}"
+        )
+
 
 @dataclass(frozen=True)
 class Chain:

@@ -58,6 +58,13 @@ class EdgeSeries:
     #: the member of the family (:mod:`analytic.system`); ``None``: the paper's pendulum
     system: object = None
 
+    def _repr_latex_(self) -> str:
+        """Both edges as formulas (Jupyter renders them)."""
+        from paramres.display import display_math
+
+        unit = "T_0" if self.units == "T0" else "T_{av}"
+        return display_math([(f"T_-/{unit}", self.lower), (f"T_+/{unit}", self.upper)])
+
     @property
     def lower(self) -> sp.Expr:
         return (self.in_T0 if self.units == "T0" else self.in_Tav)["lower"]

@@ -162,6 +162,12 @@ class System:
 
     # -- variants and text ----------------------------------------------------------------
 
+    def _constants(self) -> tuple[Fraction, Fraction, Fraction]:
+        """``(omega1^2, omega2^2, k)`` of a custom system."""
+        if self.omega_sq is None or self.jump_value is None:
+            raise ValueError(f"the {self.name} system has no constant frequencies")
+        return self.omega_sq[0], self.omega_sq[1], self.jump_value
+
     def with_duty(self, duty) -> System:
         return System(self.name, _as_duty(duty), self.omega_sq, self.jump_value)
 
@@ -170,26 +176,27 @@ class System:
         ``k -> 1/k`` (custom systems only; a built-in keeps phase 1 the low-frequency one)."""
         if self.name != "custom":
             raise InputError("only a custom system can swap its phases")
-        w1, w2 = self.omega_sq
-        return System("custom", 1 - self.duty, (w2, w1), 1 / self.jump_value)
+        w1, w2, k = self._constants()
+        return System("custom", 1 - self.duty, (w2, w1), 1 / k)
 
     @property
     def label(self) -> str:
         """Short text: ``pendulum``, ``meissner, D = 1/3``, ``custom (4/5, 6/5; k = 1)``."""
         head = self.name
         if self.name == "custom":
-            w1, w2 = self.omega_sq
-            head = f"custom (omega^2 = {_text(w1)}, {_text(w2)}; k = {_text(self.jump_value)})"
+            w1, w2, k = self._constants()
+            head = f"custom (omega^2 = {_text(w1)}, {_text(w2)}; k = {_text(k)})"
         if self.duty != Fraction(1, 2):
             head += f", D = {_text(self.duty)}"
         return head
 
     def as_json(self) -> dict:
         """The description as JSON: exact values as fraction strings."""
-        doc = {"system": self.name, "duty": _text(self.duty)}
+        doc: dict[str, object] = {"system": self.name, "duty": _text(self.duty)}
         if self.name == "custom":
-            doc["omega_sq"] = [_text(w) for w in self.omega_sq]
-            doc["jump"] = _text(self.jump_value)
+            w1, w2, k = self._constants()
+            doc["omega_sq"] = [_text(w1), _text(w2)]
+            doc["jump"] = _text(k)
         return doc
 
 
@@ -245,7 +252,8 @@ def custom(omega_sq, jump=1, duty="1/2") -> System:
         raise InputError(
             f"omega_sq = {omega_sq!r} must be two numbers omega1^2, omega2^2 > 0 (got {len(items)})"
         )
-    ws = tuple(_rational(w, "omega^2", "omega^2 > 0 (units of omega0^2)") for w in items)
+    w1, w2 = (_rational(w, "omega^2", "omega^2 > 0 (units of omega0^2)") for w in items)
+    ws = (w1, w2)
     for given, w in zip(items, ws, strict=True):
         if not w > 0:
             raise InputError(

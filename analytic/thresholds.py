@@ -240,7 +240,7 @@ def threshold_series(
 
     order = _check_order(order)
     terms = _check_terms(terms)
-    sysv = as_system(system, duty)
+    sysv = as_system(system, duty=duty)
     if not sysv.is_paper:
         if not sysv.uses_depth:
             raise InputError(

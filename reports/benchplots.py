@@ -20,6 +20,7 @@ from matplotlib.figure import Figure
 
 from . import figures
 from .figures import FORMATS, new_figure, style
+from .i18n import say
 
 __all__ = ["FAMILY_STYLE", "FORMATS", "pareto_figure", "save_figure"]
 
@@ -84,7 +85,7 @@ def pareto_figure(panels: Sequence[tuple[str, Sequence[dict]]], *, subtitle: str
                     )
             ax.axhline(FLOOR, color="0.6", lw=0.5, ls="--", zorder=1)
             ax.annotate(
-                "resolution of the reference",
+                say("resolution of the reference", "разрешение эталона"),
                 (0.02, FLOOR),
                 xycoords=("axes fraction", "data"),
                 textcoords="offset points",
@@ -93,10 +94,15 @@ def pareto_figure(panels: Sequence[tuple[str, Sequence[dict]]], *, subtitle: str
                 color="0.4",
             )
             ax.set_title(title)
-            ax.set_xlabel("median CPU time per edge (s)")
+            ax.set_xlabel(say("median CPU time per edge (s)", "медиана времени ЦП на границу (с)"))
             ax.set_ylim(FLOOR / 1e4, 10 ** (np.ceil(np.log10(top)) + 2))
             ax.grid(True, which="major", lw=0.3, color="0.85")
-        axes[0].set_ylabel(r"largest relative error of $T/T_0$")
+        axes[0].set_ylabel(
+            say(
+                r"largest relative error of $T/T_0$",
+                r"наибольшая относительная погрешность $T/T_0$",
+            )
+        )
         handles = {}
         for ax in axes:
             for h, lab in zip(*ax.get_legend_handles_labels(), strict=True):

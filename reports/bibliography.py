@@ -2,7 +2,11 @@
 
 Each entry is written once; only its descriptive words are translated (:func:`reports.i18n.say`).
 Details that the sources themselves do not give (the journal of Part II, the pages of Part I) are
-left out rather than guessed.
+left out rather than guessed.  Checked against the publishers' records: Butikov, Eur. J. Phys. 25
+(2004) 535-554 (the torsion pendulum; the journal's DOI record) and Am. J. Phys. 86 (2018) 257-267
+(the Mathieu equation; the AIP record); Meissner's title, journal and year as the literature on
+the Meissner equation cites them (its volume and pages were not confirmed, so they are left out).
+Part I and the simulation program are cited as the paper's own reference list gives them.
 """
 
 from __future__ import annotations
@@ -41,27 +45,31 @@ ENTRIES: tuple[tuple[str, str, str], ...] = (
     ),
     (
         "butikov-square",
-        r"E.\,I.~Butikov, \emph{Parametric resonance in a linear oscillator at square-wave "
-        r"modulation}, European Journal of Physics \textbf{26} (2005).",
-        r"E.\,I.~Butikov, \emph{Parametric resonance in a linear oscillator at square-wave "
-        r"modulation}, European Journal of Physics \textbf{26} (2005).",
+        r"E.\,I.~Butikov, \emph{Parametric excitation of a linear oscillator}, European "
+        r"Journal of Physics \textbf{25} (2004) 535--554, doi:10.1088/0143-0807/25/4/009: the "
+        r"torsion pendulum whose moment of inertia is switched as a square wave.",
+        r"E.\,I.~Butikov, \emph{Parametric excitation of a linear oscillator}, European "
+        r"Journal of Physics \textbf{25} (2004) 535--554, doi:10.1088/0143-0807/25/4/009: "
+        r"крутильный маятник, момент инерции которого переключается прямоугольной волной.",
     ),
     (
         "butikov-mathieu",
         r"E.\,I.~Butikov, \emph{Analytical expressions for stability regions in the Ince--Strutt "
-        r"diagram of Mathieu equation}, American Journal of Physics \textbf{86} (2018).",
+        r"diagram of Mathieu equation}, American Journal of Physics \textbf{86} (2018) 257--267, "
+        r"doi:10.1119/1.5021895.",
         r"E.\,I.~Butikov, \emph{Analytical expressions for stability regions in the Ince--Strutt "
-        r"diagram of Mathieu equation}, American Journal of Physics \textbf{86} (2018).",
+        r"diagram of Mathieu equation}, American Journal of Physics \textbf{86} (2018) 257--267, "
+        r"doi:10.1119/1.5021895.",
     ),
     (
         "meissner",
         r"E.~Meissner, "
         r"\emph{Ueber Sch{\"u}ttelerscheinungen in Systemen mit periodisch ver{\"a}nderlicher "
-        r"Elastizit{\"a}t}, Schweizerische Bauzeitung \textbf{72} (1918): the square-wave "
+        r"Elastizit{\"a}t}, Schweizerische Bauzeitung (1918): the square-wave "
         r"(Meissner) equation.",
         r"E.~Meissner, "
         r"\emph{Ueber Sch{\"u}ttelerscheinungen in Systemen mit periodisch ver{\"a}nderlicher "
-        r"Elastizit{\"a}t}, Schweizerische Bauzeitung \textbf{72} (1918): уравнение Мейснера "
+        r"Elastizit{\"a}t}, Schweizerische Bauzeitung (1918): уравнение Мейснера "
         r"(прямоугольная модуляция жёсткости).",
     ),
     (

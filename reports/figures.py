@@ -25,6 +25,7 @@ from matplotlib.figure import Figure
 
 from verify.inputs import InputError
 
+from .i18n import say
 from .output import BANNER, atomic_write
 
 __all__ = [
@@ -88,10 +89,18 @@ ORDER_COLOURS = (
 FRICTION_SHADES = ("#c6dbef", "#6baed6", "#2171b5", "#08306b")
 
 
+#: what changes for a language whose letters Computer Modern lacks: DejaVu Serif (shipped with
+#: matplotlib, Cyrillic included) for the text and, so that the two match, for the formulas
+LANGUAGE_RC = {"ru": {"font.serif": ["DejaVu Serif"], "mathtext.fontset": "dejavuserif"}}
+
+
 @contextmanager
 def style():
-    """The report's matplotlib settings, local to the ``with`` block."""
-    with matplotlib.rc_context(RC):
+    """The report's matplotlib settings, local to the ``with`` block, in the fonts of the
+    language being built (:func:`reports.i18n.current`)."""
+    from .i18n import current
+
+    with matplotlib.rc_context({**RC, **LANGUAGE_RC.get(current(), {})}):
         yield
 
 
@@ -205,8 +214,8 @@ def intervals_figure(
         for _, mc, tc, label in closings:
             ax.plot([tc], [mc], "o", ms=3, color="k", zorder=5)
             ax.annotate(label, (tc, mc), xytext=(4, 2), textcoords="offset points", fontsize=7)
-        ax.set_xlabel(r"modulation period $T/T_0$")
-        ax.set_ylabel(r"modulation depth $m$")
+        ax.set_xlabel(say(r"modulation period $T/T_0$", r"период модуляции $T/T_0$"))
+        ax.set_ylabel(say(r"modulation depth $m$", r"глубина модуляции $m$"))
         ax.set_ylim(0, float(np.nanmax(m)))
         hi = t_max if t_max is not None else float(np.nanmax(bounds)) + 0.05
         ax.set_xlim(0, hi)
@@ -240,7 +249,7 @@ def family_figure(
             ax.set_ylim(0, float(np.nanmax(m)))
             ax.set_xlabel(r"$T/T_0$")
             ax.set_title(name, fontsize=8, pad=12)
-        axes[0].set_ylabel(r"modulation depth $m$")
+        axes[0].set_ylabel(say(r"modulation depth $m$", r"глубина модуляции $m$"))
         fig.tight_layout(pad=0.4)
     return fig
 
@@ -273,7 +282,7 @@ def friction_figure(
             ax.set_xlim(0, hi)
             ax.set_xticks(np.arange(0, hi + 1e-9, 0.5))
             ax.set_ylim(0, float(np.nanmax(m)))
-        axes[0].set_ylabel(r"modulation depth $m$")
+        axes[0].set_ylabel(say(r"modulation depth $m$", r"глубина модуляции $m$"))
         axes[-1].legend(loc="upper right")
         fig.tight_layout(pad=0.4, w_pad=1.8)
     return fig
@@ -322,7 +331,7 @@ def island_figure(
                 )
             ax.set_title(title)
             ax.set_xlabel(r"$T/T_0$")
-        axes[0].set_ylabel(r"modulation depth $m$")
+        axes[0].set_ylabel(say(r"modulation depth $m$", r"глубина модуляции $m$"))
         fig.tight_layout(pad=0.4, w_pad=1.8)
     return fig
 
@@ -330,10 +339,12 @@ def island_figure(
 def error_figure(
     panels: Sequence[tuple[str, Mapping[str, tuple[np.ndarray, np.ndarray]]]],
     *,
-    ylabel: str = r"relative error of $T/T_0$",
+    ylabel: str | None = None,
 ) -> Figure:
     """Error against ``m`` on log-log axes: one panel per title, one curve per ``label: (m, err)``
     (non-positive errors are left out)."""
+    if ylabel is None:
+        ylabel = say(r"relative error of $T/T_0$", r"относительная погрешность $T/T_0$")
     with style():
         fig, axes = new_figure(height=3.2, ncols=len(panels), sharey=True)
         axes = axes if isinstance(axes, tuple) else (axes,)

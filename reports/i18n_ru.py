@@ -521,6 +521,131 @@ PHRASES: dict[str, str] = {
     r"(Figure~\ref{fig:pareto}, Table~\ref{tab:speed}).": (
         r"(рис.~\ref{fig:pareto}, таблица~\ref{tab:speed})."
     ),
+    # the stitching section: the general system and the normal form
+    ", with four amplitudes. Continuity of the angle and the angular-momentum jump at": (
+        ", с четырьмя амплитудами. Непрерывность угла и скачок момента импульса при"
+    ),
+    "give four homogeneous linear conditions. Without friction, for odd orders": (
+        "дают четыре однородных линейных условия. Без трения, для нечётных порядков"
+    ),
+    "The segments of the paper model and of the exact model (Table~\\ref{tab:segments}) give the "
+    "same four conditions with their own segments. Their determinant is, in every model, a "
+    "non-vanishing factor": (
+        "Решения модели статьи и точной модели (таблица~\\ref{tab:segments}) дают те же четыре "
+        "условия со своими решениями. Их определитель в любой модели равен необращающемуся в "
+        "нуль множителю"
+    ),
+    "times the Floquet condition: with": "на условие Флоке: при",
+    "the monodromy matrix (the period map of": "--- матрица монодромии (отображение за период для",
+    ". Its trace has one form for all models, with the phases": (
+        ". Её след имеет один вид для всех моделей, с фазами"
+    ),
+    "of the two halves over": "двух половин за",
+    "and one coupling constant": "и одной константой связи",
+    "where the coupling constant is": "где константа связи равна",
+    "without friction and in the paper model, and": "без трения и в модели статьи и",
+    "in the exact model. A product-to-sum lemma in": (
+        "в точной модели. Лемма о произведении и сумме по"
+    ),
+    "product to sum": "произведение в сумму",
+    "\\emph{product to sum.}": "\\emph{произведение в сумму.}",
+    "Together these give the normal form": "Вместе они дают нормальную форму",
+    "(the rest state is unstable where": "(состояние покоя неустойчиво, где",
+    "the engine defines the parameters as follows (exact model: the same with the damped "
+    "frequencies": (
+        "программа определяет параметры так (точная модель: то же с частотами затухающих колебаний"
+    ),
+    "The conditions across": "Условия при переходе через",
+    "repeat those at": "повторяют условия при",
+    "row by row up to sign": "построчно с точностью до знака",
+    "(the engine compares the rows), so two conditions remain.": (
+        "(программа сравнивает строки), так что остаются два условия."
+    ),
+    "Per-edge factor: the determinant is a non-vanishing multiple of": (
+        "Множитель границы: определитель --- необращающееся в нуль кратное"
+    ),
+    "(the paper's unknown in eqs. 15, 26, 39, 44). For every order the normal form becomes": (
+        "(неизвестная статьи в уравнениях 15, 26, 39, 44). Для любого порядка нормальная форма "
+        "принимает вид"
+    ),
+    "is a difference of squares, one factor per edge (": (
+        "--- разность квадратов, по одному множителю на границу ("
+    ),
+    "), and each edge of the": "), и каждая граница",
+    "-th interval is the root in": "-го интервала --- корень на",
+    "of one of the following equations, derived for each order:": (
+        "одного из следующих уравнений, выведенных для каждого порядка:"
+    ),
+    "each per-edge equation has exactly one root, and it is simple: at": (
+        "каждое уравнение границы имеет ровно один корень, и он простой: при"
+    ),
+    "term dominates because": "преобладает член, поскольку",
+    ", and at any root its derivative exceeds that of the other term because": (
+        ", а в любом корне его производная больше производной другого члена, поскольку"
+    ),
+    ", so all roots cross with the same sign. Each interval is therefore bounded by one root of "
+    "each equation; the lower edge is the smaller one, and where both vanish at once the": (
+        ", так что все корни пересекаются с одним знаком. Поэтому каждый интервал ограничен одним "
+        "корнем каждого уравнения; нижняя граница --- меньший из них, а где оба обращаются в нуль "
+        "одновременно,"
+    ),
+    # the expansions, thresholds and accuracy sections
+    "by Newton steps on exact power series, then": (
+        "шагами Ньютона над точными степенными рядами, затем"
+    ),
+    "with the parameters expanded from their definitions; through": (
+        "с параметрами, разложенными из их определений; до"
+    ),
+    "gives closed forms valid for every odd and every even order:": (
+        "даёт замкнутые формы, верные для любого нечётного и любого чётного порядка:"
+    ),
+    "the centre moves only at": "центр смещается лишь в порядке",
+    "; the two models part at": "; две модели расходятся в порядке",
+    "in the threshold series": "в ряду порога",
+    "bob shifted along a light rod": "груз смещается вдоль лёгкого стержня",
+    "gives certified edges to 35 significant digits at chosen depths, with and without friction. "
+    "Every digit is proven: the number is the midpoint of a ball (interval) that contains the "
+    "exact edge and is narrower than the last digit.": (
+        "даёт гарантированные границы с 35 значащими цифрами при выбранных глубинах модуляции, с "
+        "трением и без него. Каждая цифра доказана: число --- середина шара (интервала), который "
+        "содержит точную границу и уже последней цифры."
+    ),
+    "normal form with friction": "нормальная форма с трением",
+    # the catalogue's explanations that carry no computed numbers
+    "The limit m -> 0 of the exact tuning condition (6), T = n T_av/2 with T_av -> T_0; decided "
+    "symbolically.": (
+        "Предел m -> 0 точного условия настройки (6), T = n T_av/2 при T_av -> T_0; решено "
+        "символьно."
+    ),
+    "Derived from $J\\ddot\\varphi = $ torque with $J = Ml^2$, the torque of gravity "
+    "$-Mgl\\sin\\varphi$ and of the drag $-cl^2\\dot\\varphi$ on the bob: $2\\gamma = c/M$ does "
+    "not depend on $l$ (the same in both halves), $\\omega_i^2 = g/l_i$ with "
+    "$l_{1,2} = l_0(1 \\pm m)$; decided symbolically.": (
+        "Выведено из $J\\ddot\\varphi = $ момент сил при $J = Ml^2$, моменте силы тяжести "
+        "$-Mgl\\sin\\varphi$ и силы сопротивления $-cl^2\\dot\\varphi$, действующей на груз: "
+        "$2\\gamma = c/M$ не зависит от $l$ (одинаково в обеих половинах), "
+        "$\\omega_i^2 = g/l_i$ при $l_{1,2} = l_0(1 \\pm m)$; решено символьно."
+    ),
+    "Printed and derived forms are the same equation; decided symbolically (exact rational "
+    "identity after expanding the abbreviations). The angular momentum $J\\dot\\varphi$ with "
+    "$J = Ml^2$ is conserved.": (
+        "Напечатанная и выведенная формы --- одно и то же уравнение; решено символьно (точное "
+        "рациональное тождество после раскрытия сокращений). Момент импульса $J\\dot\\varphi$ "
+        "при $J = Ml^2$ сохраняется."
+    ),
+    "After eq. (39): 'at zero friction p = 1, and (39) coincides with (14)'. At p = 1 the "
+    "(squared) equation (39) is a non-vanishing multiple of (15); the reference should be (15), "
+    "not (14).": (
+        "После уравнения (39): «при нулевом трении p = 1, и (39) совпадает с (14)». При p = 1 "
+        "(возведённое в квадрат) уравнение (39) --- необращающееся в нуль кратное (15); ссылка "
+        "должна быть на (15), а не на (14)."
+    ),
+    "After eq. (44): 'at zero friction p = 1, and (44) coincides with (26)'. At p = 1 the "
+    "(squared) equation (44) is a non-vanishing multiple of (26); the reference is right.": (
+        "После уравнения (44): «при нулевом трении p = 1, и (44) совпадает с (26)». При p = 1 "
+        "(возведённое в квадрат) уравнение (44) --- необращающееся в нуль кратное (26); ссылка "
+        "верна."
+    ),
 }
 
 PATTERNS: list[tuple[str, object]] = [
@@ -583,5 +708,11 @@ PATTERNS: list[tuple[str, object]] = [
     (
         r"The paper's Fig\.~(\d+) redrawn: (.*)",
         r"Рис.~\1 статьи, перестроенный: \2",
+    ),
+    (
+        r"numeric, at (\d+) random points with (\d+) digits, largest relative residual "
+        r"([0-9.e+-]+) \(sympy did not reduce it to zero\)",
+        r"численно, в \1 случайных точках с \2 знаками, наибольшая относительная невязка \3 "
+        r"(sympy не свёл к нулю)",
     ),
 ]

@@ -18,6 +18,7 @@ __all__ = [
     "check_writable",
     "dump_json",
     "progress",
+    "working",
     "BANNER",
 ]
 
@@ -118,24 +119,71 @@ def dump_json(obj, stream=None) -> None:
     stream.write("\n")
 
 
+def _shows(stream, quiet: bool) -> bool:
+    """Whether progress is drawn on ``stream``: never with ``quiet``, else on a terminal or when
+    ``PARAMRES_PROGRESS=1`` is set (never in a pipe or a log file, whose text stays as it was)."""
+    if quiet:
+        return False
+    return os.environ.get("PARAMRES_PROGRESS") == "1" or (
+        hasattr(stream, "isatty") and stream.isatty()
+    )
+
+
+@contextmanager
+def working(label: str, *, quiet: bool = False, stream=None, min_seconds: float = 2.0):
+    """A sign of life for a computation whose steps are not counted (a proof, a derivation): after
+    ``min_seconds`` the elapsed time is drawn on ``stream`` (stderr) every half second and the line
+    is cleared at the end -- on a terminal only (see :func:`progress`), never with ``quiet``."""
+    import threading
+
+    stream = sys.stderr if stream is None else stream
+    if not _shows(stream, quiet):
+        yield
+        return
+    done = threading.Event()
+    start = time.monotonic()
+    drawn = False
+
+    def draw() -> None:
+        nonlocal drawn
+        if done.wait(min_seconds):
+            return
+        while not done.is_set():
+            stream.write(f"\r{label}: working, {time.monotonic() - start:5.0f} s")
+            stream.flush()
+            drawn = True
+            done.wait(0.5)
+
+    thread = threading.Thread(target=draw, daemon=True)
+    thread.start()
+    try:
+        yield
+    finally:
+        done.set()
+        thread.join()
+        if drawn:
+            stream.write("\r" + " " * (len(label) + 20) + "\r")
+            stream.flush()
+
+
 def progress(
     items: Iterable,
     total: int | None = None,
     label: str = "",
     stream=None,
     min_seconds: float = 1.0,
+    quiet: bool = False,
 ):
     """Yield from ``items``, drawing a progress bar on ``stream`` (stderr) if the run takes longer
-    than ``min_seconds`` and the stream is a terminal or ``PARAMRES_PROGRESS=1`` is set."""
+    than ``min_seconds`` and the stream is a terminal or ``PARAMRES_PROGRESS=1`` is set (never
+    with ``quiet``)."""
     stream = sys.stderr if stream is None else stream
     if total is None:
         try:
             total = len(items)  # type: ignore[arg-type]
         except TypeError:
             total = None
-    show = os.environ.get("PARAMRES_PROGRESS") == "1" or (
-        hasattr(stream, "isatty") and stream.isatty()
-    )
+    show = _shows(stream, quiet)
     start = time.monotonic()
     last = 0.0
     done = 0

@@ -29,6 +29,7 @@ from verify.inputs import InputError
 
 from . import figures
 from .figures import FORMATS, TEXT_WIDTH_IN, check_plot_path, figure_bytes, style
+from .i18n import say
 
 __all__ = [
     "PAPER_SCENES",
@@ -42,6 +43,7 @@ __all__ = [
     "save_figure",
     "check_plot_path",
     "draw_run",
+    "over_the_top",
     "FORMATS",
 ]
 
@@ -50,6 +52,8 @@ __all__ = [
 #: colours of the two halves: bob down (long pendulum), bob up (short pendulum)
 HALF_COLOURS = {1: "#0072B2", 2: "#D55E00"}
 JUMP_COLOUR = "0.45"
+#: the level |phi| = pi and the moment a nonlinear run passes it (goes over the top)
+ROTATION_COLOUR = "#CC79A7"
 
 
 @dataclass(frozen=True)
@@ -125,10 +129,19 @@ def _label(sim) -> str:
         T = mpmath.nstr(sim.tau, 10)
     parts = [f"$n = {sim.order}$, $m = {sim.m}$, $T/T_0 = {T}$"]
     if sim.edge:
-        parts.append(f"{sim.edge} edge")
-    parts.append("no friction" if sim.Q is None else f"$Q = {sim.Q}$ ({sim.damping})")
+        parts.append(
+            say(
+                f"{sim.edge} edge",
+                {"lower": "нижняя граница", "upper": "верхняя граница"}[sim.edge],
+            )
+        )
+    if sim.Q is None:
+        parts.append(say("no friction", "без трения"))
+    else:
+        model = say(sim.damping, {"exact": "точная модель", "paper": "модель статьи"}[sim.damping])
+        parts.append(f"$Q = {sim.Q}$ ({model})")
     if sim.nonlinear:
-        parts.append("nonlinear")
+        parts.append(say("nonlinear", "нелинейный"))
     return ", ".join(parts)
 
 
@@ -140,8 +153,44 @@ def _check_finite(sim) -> None:
             )
 
 
+def over_the_top(sim) -> tuple[float, float] | None:
+    """``(t, phi)`` where a nonlinear run first passes ``|phi| = pi`` (the pendulum goes over the
+    top and rotates from then on), or ``None``."""
+    if not getattr(sim, "rotates", None):
+        return None
+    for s in sim.segments:
+        phi = np.asarray(s.phi, dtype=float)
+        hit = np.nonzero(np.abs(phi) > np.pi)[0]
+        if hit.size:
+            k = int(hit[0])
+            return float(np.asarray(s.t, dtype=float)[k]), float(phi[k])
+    return None  # pragma: no cover - rotates means some sample passed pi
+
+
+def _mark_rotation(ax_phase, ax_angle, sim) -> None:
+    """The level ``|phi| = pi`` and the moment the pendulum first passes it, with a legend."""
+    top = over_the_top(sim)
+    if top is None:
+        return
+    t, phi = top
+    for level in (np.pi, -np.pi):
+        ax_angle.axhline(level, color=ROTATION_COLOUR, lw=0.6, ls=":", zorder=0)
+        ax_phase.axvline(level, color=ROTATION_COLOUR, lw=0.6, ls=":", zorder=0)
+    ax_angle.plot(
+        [t],
+        [phi],
+        marker="v",
+        ms=5,
+        color=ROTATION_COLOUR,
+        ls="none",
+        label=rf"over the top ($|\varphi| = \pi$) at $t/T_0 = {t:.3g}$: it rotates",
+    )
+    ax_angle.legend(fontsize=6.5, loc="upper left")
+
+
 def draw_run(ax_phase, ax_vel, ax_angle, sim, *, numbered: int = 8) -> None:
-    """Draw one run on three axes; number the first ``numbered`` segment end points."""
+    """Draw one run on three axes; number the first ``numbered`` segment end points.  A
+    nonlinear run that goes over the top is marked where it first passes ``|phi| = pi``."""
     _check_finite(sim)
     segs = sim.segments
     for i, s in enumerate(segs):
@@ -203,6 +252,7 @@ def draw_run(ax_phase, ax_vel, ax_angle, sim, *, numbered: int = 8) -> None:
     ax_vel.set_ylabel(r"$\dot\varphi$ (rad$/T_0$)")
     ax_angle.set_ylabel(r"$\varphi$ (rad)")
     ax_angle.set_xlabel(r"$t/T_0$")
+    _mark_rotation(ax_phase, ax_angle, sim)
 
 
 def time_figure(
@@ -231,10 +281,17 @@ def time_figure(
             note = []
             if sim.closure_error is not None:
                 after = "2T" if sim.closure_periods == 2 else "T"
-                note.append(f"closure after ${after}$: {float(sim.closure_error):.1e}")
-            note.append(f"growth per period {float(sim.growth_per_period):.6g}")
-            if sim.nonlinear:
-                note.append(f"peak amplitude {sim.peak_amplitude:.3g} rad")
+                closure = f"{float(sim.closure_error):.1e}"
+                note.append(
+                    say(f"closure after ${after}$: ", f"невязка через ${after}$: ") + closure
+                )
+            growth = f"{float(sim.growth_per_period):.6g}"
+            note.append(say("growth per period ", "рост за период ") + growth)
+            if sim.nonlinear and sim.rotates:
+                note.append(say("over the top: it rotates", "переход через верх: вращение"))
+            elif sim.nonlinear:
+                peak = f"{sim.peak_amplitude:.3g}"
+                note.append(say(f"peak amplitude {peak} rad", f"наибольший размах {peak} рад"))
             ax_vel.set_title(_label(sim) + "\n" + "; ".join(note), fontsize=7.5, loc="left")
         if envelope:
             _draw_envelope(fig.add_subplot(outer[rows]), sims, [_label(s) for s in sims])
@@ -249,12 +306,24 @@ def _draw_envelope(ax, runs, labels) -> None:
         env = np.asarray(sim.envelope, dtype=float)
         ax.semilogy(np.arange(1, len(env) + 1), env, lw=1.0, label=lab)
         if sim.saturation_estimate is not None:
-            label = None if marked else "amplitude that detunes the lower edge past $T$ (estimate)"
+            label = (
+                None
+                if marked
+                else say(
+                    "amplitude that detunes the lower edge past $T$ (estimate)",
+                    "амплитуда, при которой нижняя граница уходит за $T$ (оценка)",
+                )
+            )
             ax.axhline(sim.saturation_estimate, color="0.5", lw=0.6, ls=":", label=label)
             marked = True
-    ax.set_xlabel("period $k$")
-    ax.set_ylabel(r"$\max|\varphi|$ in period $k$")
-    if len(labels) > 1 or any(s.saturation_estimate is not None for s in runs):
+    rotating = any(getattr(s, "rotates", None) for s in runs)
+    if rotating:
+        ax.axhline(
+            np.pi, color=ROTATION_COLOUR, lw=0.6, ls=":", label=r"$|\varphi| = \pi$: over the top"
+        )
+    ax.set_xlabel(say("period $k$", "период $k$"))
+    ax.set_ylabel(say(r"$\max|\varphi|$ in period $k$", r"$\max|\varphi|$ за период $k$"))
+    if len(labels) > 1 or rotating or any(s.saturation_estimate is not None for s in runs):
         ax.legend(fontsize=7)
 
 
@@ -269,9 +338,11 @@ def envelope_figure(runs, labels, *, title: str | None = None, ylim=None) -> Fig
         _draw_envelope(ax, runs, labels)
         if ylim is not None:
             ax.set_ylim(*ylim)
-        ax.legend(fontsize=7, loc="upper left")
+        # the legend above the axes, in two columns: inside, the growing curve crosses it
+        ax.legend(fontsize=7, loc="lower left", bbox_to_anchor=(0, 1.02), ncol=2, borderaxespad=0)
+        fig.subplots_adjust(top=0.8 if not title else 0.72)
         if title:
-            ax.set_title(title)
+            fig.suptitle(title, fontsize=9)
     return fig
 
 
@@ -354,7 +425,11 @@ def saturation_figure(
         simulate(1, m, nonlinear=True, **common),
         simulate(1, m, Q=Q, nonlinear=True, **common),
     ]
-    labels = ["linear model", "pendulum, no friction", f"pendulum, $Q = {Q}$"]
+    labels = [
+        say("linear model", "линейная модель"),
+        say("pendulum, no friction", "маятник без трения"),
+        say(f"pendulum, $Q = {Q}$", f"маятник, $Q = {Q}$"),
+    ]
     with mpmath.workdps(10):
         Tt = mpmath.nstr(T, 8)
     return envelope_figure(

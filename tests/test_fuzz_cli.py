@@ -121,9 +121,12 @@ def _cheap_valid(dest: str):
         "terms": st.sampled_from(["1", "2", "4", "6"]),
         "max_order": st.sampled_from(["1", "3", "6", "12"]),
         "only": st.sampled_from(["agrees", "differs"]),
-        # existence proves every threshold and closing: its cheap cases
-        "existence_Q": st.sampled_from(["0.4", "1/2", "3", "7", "100"]),
-        "small_order": st.sampled_from(["1", "2", "3", "4"]),
+        # existence proves every threshold and closing on the whole depth axis (1-20 s a call):
+        # its cheapest case; the hard ones (Q <= 1/2, orders 1-4) are tests of their own
+        # (tests/test_existence.py, tests/test_cli_refusals.py)
+        "existence_Q": st.sampled_from(["3"]),
+        "existence_digits": st.sampled_from(["5", "15"]),
+        "small_order": st.sampled_from(["3"]),
     }.get(dest)
 
 
@@ -200,6 +203,7 @@ def argv_for(draw, tmp: Path):
                 ("table", "m"): "table_m",
                 ("atlas", "m"): "table_m",
                 ("existence", "Q"): "existence_Q",
+                ("existence", "digits"): "existence_digits",
             }.get((name, dest))
             key = key or {("existence", "order"): "small_order"}.get((name, dest), dest)
             valid = _cheap_valid(key)
@@ -289,6 +293,28 @@ def _warm():
     catalogue()
 
 
+@pytest.fixture(scope="module", autouse=True)
+def _existence_once():
+    """``existence`` computed once per distinct argument list: the command still parses, checks
+    and prints on every call, but a repeated valid input (hypothesis draws the cheap valid values
+    often) does not prove the same ranges again."""
+    import reports.commands.existence as command
+
+    inner = command.existence
+    memo: dict = {}
+
+    def once(*args, **kwargs):
+        key = repr((args, sorted(kwargs.items())))
+        if key not in memo:
+            memo[key] = inner(*args, **kwargs)
+        return memo[key]
+
+    mp = pytest.MonkeyPatch()
+    mp.setattr(command, "existence", once)
+    yield
+    mp.undo()
+
+
 @settings(
     max_examples=EXAMPLES,
     deadline=None,
@@ -339,3 +365,27 @@ def test_the_checker_catches_a_traceback_and_a_hang(monkeypatch):
     monkeypatch.setattr(boundary_command, "run", slow)
     with pytest.raises(pytest.fail.Exception):
         call(["boundary", "--order", "1", "--m", "0.3"])
+
+
+@pytest.mark.parametrize(
+    "argv, expected",
+    [
+        (["boundary", "--order", "1", "--m", "1e999999999"], 2),
+        (["existence", "--order", "3", "--Q", "1e400"], 2),
+        (["table", "--orders", "1", "--m", "0.3", "--output", "/proc/x.csv"], 2),
+        (["boundary", "--order", "1", "--m", "0.3", "--json"], 0),
+    ],
+)
+def test_a_real_process_exits_as_the_in_process_call_says(argv, expected):
+    # the fuzz test calls main() in-process; a few command lines run as a real process too, so
+    # that the exit status the shell sees and the absence of a traceback are checked end to end
+    import subprocess
+
+    proc = subprocess.run(
+        [sys.executable, "-m", "paramres", *argv],
+        capture_output=True,
+        text=True,
+        timeout=120,
+    )
+    assert proc.returncode == expected, (argv, proc.returncode, proc.stderr)
+    check(argv, proc.returncode, proc.stdout, proc.stderr)

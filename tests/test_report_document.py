@@ -236,6 +236,39 @@ def test_pdf_metadata_and_text(reports, lang):
     assert "paramres report --out" in text
 
 
+#: English sentences the Russian report once showed (figure captions, the general system, the
+#: normal form, the window theorem, the threshold sections); each now has its Russian version
+KNOWN_ENGLISH = (
+    "Growth inside the first interval",
+    "row by row up to sign",
+    "so two conditions remain",
+    "with four amplitudes",
+    "where the coupling constant is",
+    "Together these give the normal form",
+    "so all roots cross with the same sign",
+    "the two models part at",
+    "in the threshold series",
+    "the number is the midpoint of a ball",
+    "the reference should be (15), not (14)",
+    "The angular momentum",
+)
+
+
+def test_the_russian_report_has_no_english_sentence(reports):
+    # every English entry of the phrasebook (whole sentences and phrases of four words or more)
+    # and the sentences above must not appear in the Russian prose: each has a translation
+    from reports.i18n_ru import PHRASES
+
+    prose = re.sub(r"\s+", " ", _prose(_tex(reports, "ru")))
+    english = [en for en in PHRASES if len(en.split()) >= 4 and "$" not in en]
+    english += list(KNOWN_ENGLISH)
+    found = [en for en in english if re.sub(r"\s+", " ", en) in prose]
+    assert not found, found
+    # and the English report does say them (so the check looks at the right text)
+    en_prose = re.sub(r"\s+", " ", _prose(_tex(reports, "en")))
+    assert all(k in en_prose for k in ("row by row up to sign", "so two conditions remain"))
+
+
 def test_bad_language_is_refused(tmp_path, capsys):
     with pytest.raises(SystemExit) as exc:
         main(["report", "--out", str(tmp_path / "r"), "--lang", "de"])

@@ -234,6 +234,12 @@ class Existence:
             )
         return "\n".join(lines)
 
+    def _repr_html_(self) -> str:
+        """The printed text in a notebook (every certified digit)."""
+        from paramres.display import pre_html
+
+        return pre_html(self)
+
 
 def _closing_in(n: int, Q, damping: str, lo, hi, system: System = PAPER):
     """The frictionless closing (:class:`analytic.closings.Closing`) of order ``n`` whose gap with

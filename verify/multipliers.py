@@ -169,6 +169,12 @@ class Multipliers:
         lines += [f"  note: {n}" for n in self.notes]
         return "\n".join(lines)
 
+    def _repr_html_(self) -> str:
+        """The printed text in a notebook (every certified digit)."""
+        from paramres.display import pre_html
+
+        return pre_html(self)
+
 
 def _text(x: Fraction) -> str:
     return str(x.numerator) if x.denominator == 1 else f"{x.numerator}/{x.denominator}"

@@ -217,6 +217,12 @@ class RampEdges:
     factors: tuple
     boundary: object = field(repr=False, default=None)
 
+    def _repr_html_(self) -> str:
+        """The certified edges as the command line prints them (every certified digit)."""
+        from paramres.display import pre_html
+
+        return pre_html(self.boundary if self.boundary is not None else self)
+
     @property
     def shifts(self) -> tuple[arb, arb]:
         return self.lower - self.jump_lower, self.upper - self.jump_upper
@@ -601,6 +607,12 @@ class Validity:
         tail = "  [certified: the shifts are differences of proven enclosures (ball arithmetic)]"
         notes = [f"  note: {x}" for x in self.notes]
         return "\n".join([head, answer, lead, *rows, tail, *notes])
+
+    def _repr_html_(self) -> str:
+        """The printed text in a notebook (every certified digit)."""
+        from paramres.display import pre_html
+
+        return pre_html(self)
 
 
 def _ball_text(x: arb, k: int = 10) -> str:

@@ -97,6 +97,11 @@ def add_json(p, help: str = "machine-readable output") -> None:
     p.add_argument("--json", action="store_true", help=help)
 
 
+def add_quiet(p) -> None:
+    """``-q/--quiet``: no progress on stderr (progress is drawn only on a terminal anyway)."""
+    p.add_argument("-q", "--quiet", action="store_true", help="no progress display on stderr")
+
+
 def add_modulation(p) -> None:
     """``--modulation square|ramp|sine`` and ``--switch-time S`` (the ramp's duration)."""
     g = p.add_argument_group("the modulation (how the length switches)")

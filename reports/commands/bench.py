@@ -53,6 +53,7 @@ def register(subparsers) -> None:
         "--plot", metavar="FILE", help="write the time-against-error plot (.pdf, .png or .svg)"
     )
     p.add_argument("--output", metavar="FILE", help="write the JSON to FILE (atomically)")
+    p.add_argument("-q", "--quiet", action="store_true", help="no progress display on stderr")
     p.set_defaults(func=run)
 
 
@@ -157,7 +158,7 @@ def run(args) -> int:
     from reports.benchmark import run as bench_run
 
     def bar(items):
-        return progress(items, total=len(items), label="bench")
+        return progress(items, total=len(items), label="bench", quiet=args.quiet)
 
     result = bench_run(quick=args.quick, progress=bar)
     doc = result.as_json()

@@ -5,7 +5,9 @@ from __future__ import annotations
 import argparse
 import textwrap
 
-from reports.output import dump_json
+from reports.output import dump_json, working
+
+from ._arguments import add_quiet
 
 __all__ = ["register", "run"]
 
@@ -28,13 +30,16 @@ def register(sub) -> None:
         choices=("agrees", "differs"),
         help="show only the rows with this status",
     )
+    add_quiet(p)
     p.set_defaults(func=run)
 
 
 def run(args) -> int:
     from analytic.catalogue import catalogue
 
-    rows = [r for r in catalogue() if args.only is None or r.status == args.only]
+    with working("catalogue", quiet=args.quiet):  # a cold derivation takes seconds
+        every = catalogue()
+    rows = [r for r in every if args.only is None or r.status == args.only]
     if args.json:
         dump_json(
             {

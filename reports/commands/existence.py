@@ -13,10 +13,10 @@ from __future__ import annotations
 
 import argparse
 
-from reports.output import dump_json
+from reports.output import dump_json, working
 from verify.existence import existence
 
-from ._arguments import add_friction, add_json, add_order, add_system, system_of
+from ._arguments import add_friction, add_json, add_order, add_quiet, add_system, system_of
 
 __all__ = ["register", "run"]
 
@@ -41,12 +41,16 @@ def register(subparsers) -> None:
     )
     add_system(p)
     add_json(p)
+    add_quiet(p)
     p.set_defaults(func=run)
 
 
 def run(args) -> int:
     sysv = system_of(args)
-    result = existence(args.order, args.Q, system=sysv, damping=args.damping, digits=args.digits)
+    with working("existence", quiet=args.quiet):
+        result = existence(
+            args.order, args.Q, system=sysv, damping=args.damping, digits=args.digits
+        )
     if args.json:
         data = result.as_json()
         dump_json(

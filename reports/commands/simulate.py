@@ -26,6 +26,7 @@ from ._arguments import (
     add_json,
     add_modulation,
     add_order,
+    add_quiet,
     add_system,
     system_of,
 )
@@ -86,6 +87,7 @@ def register(subparsers) -> None:
         help="write phase trajectory, phi'(t), phi(t) (.pdf, .png or .svg)",
     )
     add_json(p)
+    add_quiet(p)
     p.set_defaults(func=run)
 
 
@@ -108,7 +110,7 @@ def run(args) -> int:
         amplitude=args.amplitude,
         nonlinear=args.nonlinear,
         digits=args.digits,
-        progress=lambda it, total: progress(it, total=total, label="simulate"),
+        progress=lambda it, total: progress(it, total=total, label="simulate", quiet=args.quiet),
         system=sysv,
     )
     if plot is not None:

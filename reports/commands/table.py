@@ -37,7 +37,7 @@ from verify.inputs import (
     as_tolerance,
 )
 
-from ._arguments import add_friction, add_modulation, add_system, system_of
+from ._arguments import add_friction, add_modulation, add_quiet, add_system, system_of
 
 __all__ = ["register", "run", "rows", "decimal_text"]
 
@@ -89,6 +89,7 @@ def register(subparsers) -> None:
         help="write to FILE (atomically) instead of standard output",
     )
     p.add_argument("--jobs", metavar="J", default="1", help="worker processes (default 1)")
+    add_quiet(p)
     p.set_defaults(func=run)
 
 
@@ -134,11 +135,11 @@ def _certified(task):
     return (order, m, j["lower"], j["upper"], j["delta_lower"], j["delta_upper"], j["error_bound"])
 
 
-def _tol_rows(orders, ms, Q, damping, tol, label):
+def _tol_rows(orders, ms, Q, damping, tol, label, quiet=False):
     from verify.auto import boundaries_tol
 
     def prog(items):
-        return progress(items, total=len(items), label=label)
+        return progress(items, total=len(items), label=label, quiet=quiet)
 
     out = []
     for b in boundaries_tol(orders, ms, Q=Q, damping=damping, tol=tol, progress=prog):
@@ -161,12 +162,14 @@ def rows(
     modulation="square",
     switch_time=None,
     scheduler=None,
+    quiet=False,
 ):
     """Table rows ``(order, m, lower, upper[, delta_lower, delta_upper, error_bound[, method]])``
     as text (``method`` with a tolerance ``tol``), for ``system`` (default: the paper's
     pendulum); a modulation other than ``square`` (:mod:`verify.modulation`) is certified
     only.  Certified rows run on :mod:`verify.engine`: ``jobs`` local worker processes, or the
-    dask cluster ``scheduler`` (an address or a ``distributed.Client``)."""
+    dask cluster ``scheduler`` (an address or a ``distributed.Client``); ``quiet``: no progress
+    bar."""
     from analytic.system import PAPER
 
     system = PAPER if system is None else system
@@ -181,7 +184,7 @@ def rows(
             f"{system.label}"
         )
     if tol is not None:
-        return _tol_rows(orders, ms, Q, damping, tol, label)
+        return _tol_rows(orders, ms, Q, damping, tol, label, quiet)
     if digits is None:
         import mpmath
 
@@ -212,7 +215,7 @@ def rows(
             client,
             _certified,
             tasks,
-            progress=lambda it: progress(it, total=len(tasks), label=label),
+            progress=lambda it: progress(it, total=len(tasks), label=label, quiet=quiet),
         )
 
 
@@ -255,6 +258,7 @@ def run(args) -> int:
         system=sysv,
         modulation=kind,
         switch_time=S,
+        quiet=args.quiet,
     )
     certified = digits is not None or tol is not None
     header = ["order", "m", "lower", "upper"]

@@ -11,6 +11,7 @@ import numpy as np
 import sympy as sp
 
 from .. import figures
+from ..i18n import say
 from ..latex import Latex, figure, inline, paragraph, raw, ref, table, text
 from . import Context, Part
 from .closings import digit_groups
@@ -113,10 +114,14 @@ def build(ctx: Context) -> Part:
     panels = []
     for n in ERROR_ORDERS:
         curves = {
-            f"through $m^{{{k}}}$": (np.array(ms), np.array(errs[n][k])) for k in SERIES_TERMS
+            say(f"through $m^{{{k}}}$", f"до $m^{{{k}}}$"): (np.array(ms), np.array(errs[n][k]))
+            for k in SERIES_TERMS
         }
-        panels.append((f"$n = {n}$, lower edge", curves))
-    fig = figures.error_figure(panels, ylabel=r"relative error of $T_-/T_0$")
+        panels.append((say(f"$n = {n}$, lower edge", f"$n = {n}$, нижняя граница"), curves))
+    fig = figures.error_figure(
+        panels,
+        ylabel=say(r"relative error of $T_-/T_0$", r"относительная погрешность $T_-/T_0$"),
+    )
     figs = [("accuracy-series.pdf", figures.pdf_bytes(fig))]
     slopes = {}
     for n in ERROR_ORDERS:

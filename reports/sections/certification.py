@@ -9,8 +9,9 @@ from . import Context, Part
 TITLE = "How the numbers are certified"
 LABEL = "sec:certification"
 CACHED = False
-#: start on a new page, after the figures of the time domain
-NEW_PAGE = True
+#: no page break before it: the last figure of the time domain may share its page (a break
+#: here left that figure alone on a float page, mostly blank)
+NEW_PAGE = False
 
 
 def t(en: str, ru: str) -> Latex:

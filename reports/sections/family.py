@@ -157,9 +157,7 @@ def build(ctx: Context) -> Part:
             ],
             _system_rows(cfg),
             columns="llccc",
-            caption=say(
-                "The built-in members of the family.", "Встроенные члены семейства."
-            ),
+            caption=say("The built-in members of the family.", "Встроенные члены семейства."),
             label="tab:family",
         ),
         paragraph(

@@ -38,7 +38,11 @@ def _time_domain(ctx: Context) -> tuple[list[Latex], list[tuple[str, bytes]]]:
         out["saturation.pdf"] = figures.pdf_bytes(timeplots.saturation_figure())
         return out
 
-    files = ctx.cache.get("time-domain-figures", make)
+    from ..i18n import current
+
+    # the figures carry text in the report's language
+    key = "time-domain-figures" if current() == "en" else f"time-domain-figures-{current()}"
+    files = ctx.cache.get(key, make)
     blocks = [
         head,
         paragraph(
@@ -81,9 +85,15 @@ def _time_domain(ctx: Context) -> tuple[list[Latex], list[tuple[str, bytes]]]:
         figure(
             "figures/saturation.pdf",
             raw(
-                r"Growth inside the first interval: the linear model grows without bound, the real "
-                r"pendulum's period lengthens with the amplitude, which detunes it (beats); with "
-                r"friction the beats die out to a steady swing."
+                say(
+                    r"Growth inside the first interval: the linear model grows without bound, the "
+                    r"real pendulum's period lengthens with the amplitude, which detunes it "
+                    r"(beats); with friction the beats die out to a steady swing.",
+                    r"Рост внутри первого интервала: в линейной модели колебания растут "
+                    r"неограниченно, у реального маятника период растёт с амплитудой, что выводит "
+                    r"его из резонанса (биения); с трением биения затухают до установившихся "
+                    r"колебаний.",
+                )
             ),
             label="fig:saturation",
         )
