@@ -119,7 +119,7 @@ def test_simulate_is_the_time_domain_run(server):
         ("/api/multipliers?T=1&m=0.3&Q=0", "quality factor Q = 0 is outside"),
         ("/api/multipliers?T=1&m=0.3&damping=wet", "damping model"),
         ("/api/multipliers?T=1&m=0.3&system=rocket", "rocket"),
-        ("/api/multipliers?T=1&m=0.3&modulation=sine", "modulation 'sine' is not one of"),
+        ("/api/multipliers?T=1&m=0.3&modulation=triangle", "modulation 'triangle' is not one of"),
         ("/api/chart?nt=100000", "nt 100000 is outside the allowed range 2 to 600"),
         ("/api/chart?max_order=50", "max_order 50 is outside the allowed range 1 to 12"),
         ("/api/chart?tmin=2&tmax=1", "must be smaller than"),

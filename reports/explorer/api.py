@@ -130,7 +130,7 @@ def _flag(p: dict, name: str) -> bool:
 
 
 def _modulation(p: dict) -> tuple[str, str | None]:
-    from verify.modulation import MODULATIONS
+    from paramres.inputs import MODULATIONS
 
     mod = p.get("modulation", "square").strip().lower()
     if mod not in MODULATIONS:
