@@ -275,36 +275,49 @@ def _table_start(n, r, beta, eps):
     return out.reshape(nodes.shape[:-1] + (beta.size,))
 
 
-def _bisect_newton_compact(fn, args, lo, hi, x0, increasing: bool, *, iterations=100, rtol=4e-16):
-    """:func:`_bisect_newton` for ``fn(x, *args) -> (f, df)`` on arrays: everything broadcast to
-    one shape, and each point dropped from the iteration once it has converged (the same rule per
-    point), so that the few slow points do not keep the whole array iterating."""
+def _bisect_newton_compact(
+    fn, args, lo, hi, x0, increasing: bool, *, scale=None, halley=False, rtol=4e-16, iterations=100
+):
+    """Safeguarded Newton (``halley=True``: Halley, ``fn`` also giving ``f''``) for ``fn(x, *args)
+    -> (f, df[, d2f])`` on arrays, one root per point in ``[lo, hi]`` with a sign change
+    (``f(lo) < 0 < f(hi)`` if ``increasing`` else the reverse): everything broadcast to one shape,
+    the bracket shrunk with every sign seen, a step that leaves it replaced by bisection, and each
+    point dropped from the iteration once it has converged, so that the few slow points do not keep
+    the whole array iterating.  A point has converged when its last step or its bracket is below
+    ``rtol`` of ``scale`` (the size that sets the relative error: ``c + theta``, where ``T`` is
+    proportional to it; ``|x|`` when ``scale`` is None), or when ``f`` is exactly 0."""
     shape = np.broadcast(np.asarray(x0), np.asarray(lo), np.asarray(hi), *args).shape
-    flat = [np.broadcast_to(np.asarray(a, float), shape).ravel() for a in (x0, lo, hi, *args)]
-    x, lo, hi, args = flat[0].copy(), flat[1].copy(), flat[2].copy(), flat[3:]
+    if scale is None:
+        scale = np.abs(np.asarray(x0, float))
+    flat = [np.broadcast_to(np.asarray(a, float), shape).ravel() for a in (x0, lo, hi, scale, *args)]
+    x, lo, hi, sc, args = flat[0].copy(), flat[1].copy(), flat[2].copy(), flat[3], flat[4:]
+    tol = rtol * np.maximum(np.abs(sc), 1e-300)
     out = x.copy()
     idx = np.arange(x.size)
     sign = 1.0 if increasing else -1.0
-    sub = args
-    with np.errstate(divide="ignore", invalid="ignore"):
+    sub, tl = args, tol
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
         for _ in range(iterations):
-            f, df = fn(x, *sub)
-            f, df = sign * np.asarray(f, float), sign * np.asarray(df, float)
+            vals = fn(x, *sub)
+            f, df = sign * np.asarray(vals[0], float), sign * np.asarray(vals[1], float)
             lo = np.where(f < 0, x, lo)
             hi = np.where(f > 0, x, hi)
             step = f / df
+            if halley:
+                step = step / (1.0 - 0.5 * step * (sign * np.asarray(vals[2], float)) / df)
             xn = x - step
-            scale = np.maximum(np.abs(x), 1e-300)
-            small = np.abs(step) <= 0.5 * rtol * scale
+            small = np.abs(step) <= 0.5 * tl
             bad = ~((xn > lo) & (xn < hi) | small) | ~np.isfinite(xn)
             xn = np.where(bad, 0.5 * (lo + hi), xn)
             out[idx] = xn
-            stop = small | (f == 0) | (hi - lo <= rtol * scale) | ~np.isfinite(x)
+            stop = small | (f == 0) | (hi - lo <= tl) | ~np.isfinite(x)
             if stop.all():
                 break
-            keep = ~stop
-            idx, x, lo, hi = idx[keep], xn[keep], lo[keep], hi[keep]
-            sub = tuple(a[idx] for a in args)
+            if stop.any():
+                keep = ~stop
+                idx, xn, lo, hi, tl = idx[keep], xn[keep], lo[keep], hi[keep], tl[keep]
+                sub = tuple(a[idx] for a in args)
+            x = xn
     return out.reshape(shape)
 
 
@@ -323,24 +336,38 @@ def damped_normal(n, P):
     args = (c, P.r2, P.u, P.beta, P.g)
     shape = np.broadcast(a, *args).shape
     a, b = np.broadcast_to(a, shape), np.broadcast_to(b, shape)
-    # maximiser: zero of D' (decreasing through it)
+    # maximiser: zero of D' (decreasing through it), started where the secant of D' through the
+    # ends vanishes
     d1a = np.asarray(dd(a, *args)[0], float) * np.ones(shape)
     d1b = np.asarray(dd(b, *args)[0], float) * np.ones(shape)
     inside = (d1a > 0) & (d1b < 0)
     top = np.where(d1a <= 0, a, b)
+    scale = np.maximum(np.broadcast_to(c, shape) + 0.5 * (a + b), 1.0)
     if inside.any():
-        x0 = 0.5 * (a + b)
-        root = _bisect_newton_compact(dd, args, a, b, x0, False)
+        with np.errstate(divide="ignore", invalid="ignore"):
+            x0 = a + d1a * (b - a) / (d1a - d1b)
+        x0 = np.where(inside & (x0 > a) & (x0 < b), x0, 0.5 * (a + b))
+        # to 1e-12 of c + theta: D(top) is then below its maximum by ~D'' 1e-24, far below
+        # the rounding of D (the existence decision and the edge brackets need no more)
+        root = _bisect_newton_compact(dd, args, a, b, x0, False, scale=scale, rtol=1e-12)
         top = np.where(inside, root, top)
     dtop = np.asarray(d01(top, *args)[0], float) * np.ones(shape)
     exists = dtop > 0
     lo = np.full(shape, np.nan)
     hi = np.full(shape, np.nan)
     if exists.any():
-        e_lo = _bisect_newton_compact(d01, args, a, top, 0.5 * (a + top), True)
-        e_hi = _bisect_newton_compact(d01, args, top, b, 0.5 * (top + b), False)
-        lo = np.where(exists, e_lo, np.nan)
-        hi = np.where(exists, e_hi, np.nan)
+        # Halley from the undamped roots (each edge lies between its undamped root and the
+        # maximiser, where D is negative at the one end and positive at the other)
+        # (only where the interval exists: elsewhere there is no sign change)
+        d012 = form.compiled("numpy", (0, 1, 2))
+        sel = np.nonzero(exists.ravel())[0]
+        cc = np.broadcast_to(c, shape).ravel()[sel]
+        aa, bb, tt = (np.ravel(v)[sel] for v in (a, b, top))
+        sub = tuple(np.broadcast_to(v, shape).ravel()[sel] for v in args)
+        e_lo = _bisect_newton_compact(d012, sub, aa, tt, aa, True, scale=np.maximum(cc + aa, 1.0), halley=True)
+        e_hi = _bisect_newton_compact(d012, sub, tt, bb, bb, False, scale=np.maximum(cc + bb, 1.0), halley=True)
+        lo.ravel()[sel] = e_lo
+        hi.ravel()[sel] = e_hi
     return {"a": a, "b": b, "top": top, "dtop": dtop, "lo": lo, "hi": hi}
 
 
@@ -351,6 +378,24 @@ def damped_normal(n, P):
 def _halves_exact(m, Q: Fraction):
     """Regime names per depth for the exact model (exact rational decision on the exact depths)."""
     return [regime_of(4 * Q * Q - 1 - x) for x in m], [regime_of(4 * Q * Q - 1 + x) for x in m]
+
+
+def _halves(dep, cols, Q: Fraction):
+    """:func:`_halves_exact` for the depths ``cols`` of ``dep``, decided in floats where
+    ``4 Q^2 - 1 -+ m`` is far from 0 (its float value is within a few ulp of ``4 Q^2 + 1`` of
+    the exact one: ``4 Q^2 - 1`` and ``m`` are each rounded once) and from the exact depth
+    elsewhere."""
+    q = 4 * Q * Q - 1
+    qf, ms = float(q), dep.m[cols]
+    margin = 1e-12 * (abs(qf) + 2.0)
+    names = []
+    for sign in (-1, 1):
+        u = qf + sign * ms
+        out = np.where(u > 0, "under", "over").astype(object)
+        for j in np.nonzero(np.abs(u) <= margin)[0]:
+            out[j] = regime_of(q + sign * dep.exact(int(cols[j])))
+        names.append(list(out))
+    return names[0], names[1]
 
 
 #: the double path serves depths with ``1 - m`` at least this (the last double below 1 has
@@ -525,20 +570,19 @@ def _double_grid(orders, dep: _Depths, cols, Qx, damping):
         doubt[:] = _fill_normal(out, orders, ms, P, damped=Qx is not None)
         return out, doubt
     Qexact = Fraction(Qx) if not isinstance(Qx, Fraction) else Qx
-    exact = dep.exact_all(cols)
-    h1, h2 = _halves_exact(exact, Qexact)
+    h1, h2 = _halves(dep, cols, Qexact)
     u1 = (4 * float(Qexact) ** 2 - 1 - ms) / (1 + ms)
     normal = np.array([a == "under" for a in h1]) & (u1 >= NEAR_CRITICAL**2)
     if normal.any():
         idx = np.nonzero(normal)[0]
         sub = ms[idx]
         P = normal_params(sub, float(Qexact), "exact", _NP, om=om[idx])
-        P = _exact_near_critical(P, sub, [exact[j] for j in idx], Qexact)
+        P = _exact_near_critical(P, sub, lambda k: dep.exact(int(cols[idx[k]])), Qexact)
         part = np.full((len(orders), 2, sub.size), np.nan)
         doubt[:, idx] = _fill_normal(part, orders, sub, P, damped=True)
         out[:, :, idx] = part
     for j in np.nonzero(~normal)[0]:
-        T = trace_params(exact[j], Qexact, backend("math"))
+        T = trace_params(dep.exact(int(cols[j])), Qexact, backend("math"))
         for i, n in enumerate(orders):
             window = trace_window_ends(n, (h1[j], h2[j]), T)
             if window is None:
@@ -553,13 +597,14 @@ def _double_grid(orders, dep: _Depths, cols, Qx, damping):
 
 def _exact_near_critical(P, ms, exact, Q: Fraction):
     """Recompute the parameters of depths next to critical damping of half 1 (``4 Q^2 - 1 - m``
-    tiny, where its float value has few correct digits) from the exact depths ``exact``."""
+    tiny, where its float value has few correct digits) from the exact depths (``exact(k)``: the
+    exact depth of ``ms[k]``)."""
     near = np.nonzero(np.abs(4 * float(Q) ** 2 - 1 - ms) < 1e-8)[0]
     if near.size == 0:
         return P
     cols = {f.name: np.array(getattr(P, f.name), float, copy=True) for f in fields(NormalParams)}
     for j in near:
-        pm = normal_params(exact[j], Q, "exact", backend("math"))
+        pm = normal_params(exact(int(j)), Q, "exact", backend("math"))
         for k in cols:
             cols[k][j] = float(getattr(pm, k))
     return NormalParams(**cols)
