@@ -289,7 +289,9 @@ def _bisect_newton_compact(
     shape = np.broadcast(np.asarray(x0), np.asarray(lo), np.asarray(hi), *args).shape
     if scale is None:
         scale = np.abs(np.asarray(x0, float))
-    flat = [np.broadcast_to(np.asarray(a, float), shape).ravel() for a in (x0, lo, hi, scale, *args)]
+    flat = [
+        np.broadcast_to(np.asarray(a, float), shape).ravel() for a in (x0, lo, hi, scale, *args)
+    ]
     x, lo, hi, sc, args = flat[0].copy(), flat[1].copy(), flat[2].copy(), flat[3], flat[4:]
     tol = rtol * np.maximum(np.abs(sc), 1e-300)
     out = x.copy()
@@ -364,8 +366,12 @@ def damped_normal(n, P):
         cc = np.broadcast_to(c, shape).ravel()[sel]
         aa, bb, tt = (np.ravel(v)[sel] for v in (a, b, top))
         sub = tuple(np.broadcast_to(v, shape).ravel()[sel] for v in args)
-        e_lo = _bisect_newton_compact(d012, sub, aa, tt, aa, True, scale=np.maximum(cc + aa, 1.0), halley=True)
-        e_hi = _bisect_newton_compact(d012, sub, tt, bb, bb, False, scale=np.maximum(cc + bb, 1.0), halley=True)
+        e_lo = _bisect_newton_compact(
+            d012, sub, aa, tt, aa, True, scale=np.maximum(cc + aa, 1.0), halley=True
+        )
+        e_hi = _bisect_newton_compact(
+            d012, sub, tt, bb, bb, False, scale=np.maximum(cc + bb, 1.0), halley=True
+        )
         lo.ravel()[sel] = e_lo
         hi.ravel()[sel] = e_hi
     return {"a": a, "b": b, "top": top, "dtop": dtop, "lo": lo, "hi": hi}
@@ -518,6 +524,13 @@ def boundary_grid(orders, m, *, Q=None, damping="exact", system="pendulum", duty
             out[:, :, cols] = part
         doubt[:, ~served] = True
     for i, j in zip(*np.nonzero(doubt), strict=True):
+        edges = out[i, :, j]
+        if (
+            Qx is not None
+            and served[j]
+            and _confirmed(orders[i], dep.exact(j), Qx, damping, sysv, edges)
+        ):
+            continue
         out[i, :, j] = _certified_point(orders[i], dep.exact(j), Qx, damping, sysv)
     return out[..., 0] if scalar else out
 
@@ -534,6 +547,49 @@ def _blocks(cols, size: int):
     """``cols`` in consecutive pieces of at most ``size``."""
     for start in range(0, cols.size, size):
         yield cols[start : start + size]
+
+
+#: working precision (bits) of :func:`_confirmed`
+CONFIRM_BITS = 128
+#: :func:`_confirmed` proves each edge within this relative distance of the exact one (a proof,
+#: not an estimate: it needs no margin below the bound other than for the checks' own rounding,
+#: which ball arithmetic includes)
+CONFIRM_REL = 0.8 * ERROR_BOUND
+
+
+def _confirmed(n: int, m: Fraction, Q, damping: str, system, edges) -> bool:
+    """Whether the double edges ``edges = (lower, upper)`` (``T/T0``) of a friction entry that the
+    error estimate could not bound are within a relative :data:`CONFIRM_REL` of the exact edges,
+    proved in ball arithmetic: the indicator ``D`` of the normal form, with the parameters
+    enclosed at the exact depth, is negative at ``lower (1 - d)`` and positive at ``lower (1 + d)``,
+    and positive at ``upper (1 - d)`` and negative at ``upper (1 + d)`` (``d =``
+    :data:`CONFIRM_REL`, ``theta = pi (T w - n/2)``).  So each edge has a zero of ``D`` within the bound, and the
+    interval exists; that these zeros are the edges is the structure the double path relies on
+    everywhere (one zero of ``D`` each side of its maximiser, inside the undamped interval).
+    ``False`` (the entry then goes to the certified route) where a sign is not decided, the
+    entry is NaN, or the normal form does not apply (a half critically or over-damped)."""
+    from flint import arb, ctx
+
+    lo, hi = (float(e) for e in edges)
+    if not (math.isfinite(lo) and math.isfinite(hi) and lo < hi):
+        return False
+    Qf = Fraction(Q) if not isinstance(Q, Fraction) else Q
+    if damping == "exact" and not 4 * Qf * Qf - 1 - m > 0:
+        return False
+    form = indicator(int(_parity(n))).compiled("arb", 0)
+    with ctx.workprec(CONFIRM_BITS):
+        P = normal_params(m, Qf, damping, backend("arb"), system)
+        half_pi = arb.pi() / 2
+        c = n * half_pi
+        d = arb(CONFIRM_REL)  # the double, exactly
+        for T, first in ((lo, -1), (hi, 1)):
+            for side in (-1, 1):
+                theta = 2 * half_pi * (arb(T) * (1 + side * d) * P.w - arb(n) / 2)
+                v = form(theta, c, P.r2, P.u, P.beta, P.g)
+                want = first * side  # lower: -, +; upper: +, -
+                if not (v < 0 if want > 0 else v > 0):
+                    return False
+    return True
 
 
 def _certified_point(n: int, m: Fraction, Q, damping: str, system=None) -> tuple[float, float]:
