@@ -561,11 +561,12 @@ def _confirmed(n: int, m: Fraction, Q, damping: str, system, edges) -> bool:
     """Whether the double edges ``edges = (lower, upper)`` (``T/T0``) of a friction entry that the
     error estimate could not bound are within a relative :data:`CONFIRM_REL` of the exact edges,
     proved in ball arithmetic: the indicator ``D`` of the normal form, with the parameters
-    enclosed at the exact depth, is negative at ``lower (1 - d)`` and positive at ``lower (1 + d)``,
-    and positive at ``upper (1 - d)`` and negative at ``upper (1 + d)`` (``d =``
-    :data:`CONFIRM_REL`, ``theta = pi (T w - n/2)``).  So each edge has a zero of ``D`` within the bound, and the
-    interval exists; that these zeros are the edges is the structure the double path relies on
-    everywhere (one zero of ``D`` each side of its maximiser, inside the undamped interval).
+    enclosed at the exact depth, is negative at ``lower (1 - d)`` and positive at ``lower
+    (1 + d)``, and positive at ``upper (1 - d)`` and negative at ``upper (1 + d)`` (``d =``
+    :data:`CONFIRM_REL`, ``theta = pi (T w - n/2)``).  So each edge has a zero of ``D`` within
+    the bound, and the interval exists; that these zeros are the edges is the structure the
+    double path relies on everywhere (one zero of ``D`` each side of its maximiser, inside the
+    undamped interval).
     ``False`` (the entry then goes to the certified route) where a sign is not decided, the
     entry is NaN, or the normal form does not apply (a half critically or over-damped)."""
     from flint import arb, ctx
