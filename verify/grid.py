@@ -280,24 +280,28 @@ def _bisect_newton_compact(
 ):
     """Safeguarded Newton (``halley=True``: Halley, ``fn`` also giving ``f''``) for ``fn(x, *args)
     -> (f, df[, d2f])`` on arrays, one root per point in ``[lo, hi]`` with a sign change
-    (``f(lo) < 0 < f(hi)`` if ``increasing`` else the reverse): everything broadcast to one shape,
+    (``f(lo) < 0 < f(hi)`` if ``increasing`` else the reverse; ``increasing`` may be an array of
+    ``+-1``, per point): everything broadcast to one shape,
     the bracket shrunk with every sign seen, a step that leaves it replaced by bisection, and each
     point dropped from the iteration once it has converged, so that the few slow points do not keep
     the whole array iterating.  A point has converged when its last step or its bracket is below
     ``rtol`` of ``scale`` (the size that sets the relative error: ``c + theta``, where ``T`` is
     proportional to it; ``|x|`` when ``scale`` is None), or when ``f`` is exactly 0."""
     shape = np.broadcast(np.asarray(x0), np.asarray(lo), np.asarray(hi), *args).shape
+    if isinstance(increasing, bool):
+        increasing = 1.0 if increasing else -1.0
     if scale is None:
         scale = np.abs(np.asarray(x0, float))
     flat = [
-        np.broadcast_to(np.asarray(a, float), shape).ravel() for a in (x0, lo, hi, scale, *args)
+        np.broadcast_to(np.asarray(a, float), shape).ravel()
+        for a in (x0, lo, hi, scale, increasing, *args)
     ]
-    x, lo, hi, sc, args = flat[0].copy(), flat[1].copy(), flat[2].copy(), flat[3], flat[4:]
+    x, lo, hi, sc, sgn = flat[0].copy(), flat[1].copy(), flat[2].copy(), flat[3], flat[4]
+    args = flat[5:]
     tol = rtol * np.maximum(np.abs(sc), 1e-300)
     out = x.copy()
     idx = np.arange(x.size)
-    sign = 1.0 if increasing else -1.0
-    sub, tl = args, tol
+    sub, tl, sign = args, tol, sgn
     with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
         for _ in range(iterations):
             vals = fn(x, *sub)
@@ -318,6 +322,7 @@ def _bisect_newton_compact(
             if stop.any():
                 keep = ~stop
                 idx, xn, lo, hi, tl = idx[keep], xn[keep], lo[keep], hi[keep], tl[keep]
+                sign = sign[keep]
                 sub = tuple(a[idx] for a in args)
             x = xn
     return out.reshape(shape)
@@ -331,7 +336,6 @@ def damped_normal(n, P):
     parity = _parity(int(n.flat[0]))
     form = indicator(parity)
     dd = form.compiled("numpy", (1, 2))
-    d01 = form.compiled("numpy", (0, 1))
     t1, t2 = normal_edges(n, P)
     a, b = np.minimum(t1, t2), np.maximum(t1, t2)
     c = n * _HALF_PI
@@ -345,35 +349,43 @@ def damped_normal(n, P):
     inside = (d1a > 0) & (d1b < 0)
     top = np.where(d1a <= 0, a, b)
     scale = np.maximum(np.broadcast_to(c, shape) + 0.5 * (a + b), 1.0)
-    if inside.any():
+    if inside.any():  # (only there: elsewhere D' has no sign change)
+        sel = np.nonzero(inside.ravel())[0]
+        aa, bb, ya, yb, sc = (np.ravel(v)[sel] for v in (a, b, d1a, d1b, scale))
+        sub = tuple(np.broadcast_to(v, shape).ravel()[sel] for v in args)
         with np.errstate(divide="ignore", invalid="ignore"):
-            x0 = a + d1a * (b - a) / (d1a - d1b)
-        x0 = np.where(inside & (x0 > a) & (x0 < b), x0, 0.5 * (a + b))
+            x0 = aa + ya * (bb - aa) / (ya - yb)
+        x0 = np.where((x0 > aa) & (x0 < bb), x0, 0.5 * (aa + bb))
         # to 1e-12 of c + theta: D(top) is then below its maximum by ~D'' 1e-24, far below
         # the rounding of D (the existence decision and the edge brackets need no more)
-        root = _bisect_newton_compact(dd, args, a, b, x0, False, scale=scale, rtol=1e-12)
-        top = np.where(inside, root, top)
-    dtop = np.asarray(d01(top, *args)[0], float) * np.ones(shape)
+        top = np.array(top, float, copy=True)
+        top.ravel()[sel] = _bisect_newton_compact(dd, sub, aa, bb, x0, False, scale=sc, rtol=1e-12)
+    d012 = form.compiled("numpy", (0, 1, 2))
+    dtop = np.asarray(d012(top, *args)[0], float) * np.ones(shape)
     exists = dtop > 0
     lo = np.full(shape, np.nan)
     hi = np.full(shape, np.nan)
     if exists.any():
-        # Halley from the undamped roots (each edge lies between its undamped root and the
-        # maximiser, where D is negative at the one end and positive at the other)
-        # (only where the interval exists: elsewhere there is no sign change)
-        d012 = form.compiled("numpy", (0, 1, 2))
+        # both edges in one Halley iteration (only where the interval exists: elsewhere there
+        # is no sign change), each from its undamped root, in the bracket between it and the
+        # maximiser (D negative at the one end, positive at the other)
         sel = np.nonzero(exists.ravel())[0]
         cc = np.broadcast_to(c, shape).ravel()[sel]
         aa, bb, tt = (np.ravel(v)[sel] for v in (a, b, top))
-        sub = tuple(np.broadcast_to(v, shape).ravel()[sel] for v in args)
-        e_lo = _bisect_newton_compact(
-            d012, sub, aa, tt, aa, True, scale=np.maximum(cc + aa, 1.0), halley=True
+        sub = tuple(np.tile(np.broadcast_to(v, shape).ravel()[sel], 2) for v in args)
+        k = sel.size
+        both = _bisect_newton_compact(
+            d012,
+            sub,
+            np.concatenate([aa, tt]),
+            np.concatenate([tt, bb]),
+            np.concatenate([aa, bb]),
+            np.concatenate([np.ones(k), -np.ones(k)]),
+            scale=np.maximum(np.concatenate([cc + aa, cc + bb]), 1.0),
+            halley=True,
         )
-        e_hi = _bisect_newton_compact(
-            d012, sub, tt, bb, bb, False, scale=np.maximum(cc + bb, 1.0), halley=True
-        )
-        lo.ravel()[sel] = e_lo
-        hi.ravel()[sel] = e_hi
+        lo.ravel()[sel] = both[:k]
+        hi.ravel()[sel] = both[k:]
     return {"a": a, "b": b, "top": top, "dtop": dtop, "lo": lo, "hi": hi}
 
 
