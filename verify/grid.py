@@ -19,7 +19,9 @@ Method (all orders and depths at once):
   ``theta = asin(-k r f(beta c))``;
 * friction, normal form: the undamped-form roots (same ``r``, ``beta``) bracket the interval
   (``D <= D0`` and ``D0 < 0`` outside them); the maximiser of ``D`` is the root of ``D'`` (Newton
-  safeguarded by bisection); the edges are the zeros of ``D`` left and right of it;
+  safeguarded by bisection, from the secant start, where ``D'`` changes sign); where ``D`` is
+  positive there, the edges are the zeros of ``D`` left and right of it (Halley safeguarded by
+  bisection, started at the undamped roots);
 * exact model with a critically or over-damped half: the same on the trace form in
   ``zeta = gamma T/2``, inside the window of the order (see :mod:`verify.solve`);
 * near ``m = 1`` (``1 - beta < NEAR_ONE``): Newton steps on the forms for ``m -> 1``
@@ -28,7 +30,9 @@ Method (all orders and depths at once):
   is always computed from the exact depth;
 * with friction every entry carries an error estimate (the rounding of the indicator over its
   slope at the edge); next to a threshold or a closing gap, where the edges are a near-double
-  root, the few entries that cannot meet the bound go to the certified route.
+  root, the few entries that cannot meet the bound are proved in ball arithmetic
+  (:func:`_confirmed`: the sign of the indicator at the exact depth on both sides of each edge)
+  and go to the certified route only where that fails.
 """
 
 from __future__ import annotations
@@ -490,7 +494,8 @@ def boundary_grid(orders, m, *, Q=None, damping="exact", system="pendulum", duty
     The double path serves ``1 - m >= 2**-53`` (every double depth) and ``m >= 2**-1022``; exact
     depths outside, and the points next to a threshold or a closing gap where the double
     computation cannot decide the edges to that bound (a double root of the indicator), are
-    computed by the certified route (:func:`verify.solve.boundary`).  ``tests/test_grid.py`` and
+    proved in ball arithmetic (:func:`_confirmed`) or, where that fails, computed by the
+    certified route (:func:`verify.solve.boundary`).  ``tests/test_grid.py`` and
     ``tests/test_grid_hard.py`` check the claim against the certified edges on log-spaced samples
     (``1 - m`` down to ``2**-53``, ``m`` down to 1e-300, orders 1-6 and up to 100).  The order-1
     lower edge, which goes to 0 like ``1 - m``, is solved in ``x = omega_av T/2`` itself
