@@ -206,3 +206,69 @@ def test_next_to_a_threshold(n, Q, damping, lo, hi):
     ks = np.arange(2, 15, 2.0)
     ms = np.concatenate([m0 * (1 + 10.0**-ks), m0 * (1 - 10.0**-ks), [m0, np.nextafter(m0, 1)]])
     _assert_grid([n], np.sort(ms), Q, damping)
+
+
+def _assert_family_grid(orders, ms, Q, damping, sysv):
+    """:func:`_assert_grid` for another member of the family (certified reference with the same
+    ``system``)."""
+    grid = boundary_grid(orders, ms, Q=Q, damping=damping, system=sysv)
+    bad = []
+    for i, n in enumerate(orders):
+        for j, m in enumerate(ms):
+            b = boundary(n, m, Q=Q, damping=damping, system=sysv, digits=20)
+            if not b.exists:
+                if not np.isnan(grid[i, :, j]).all():
+                    bad.append((n, m, "grid has an interval, certified has none"))
+                continue
+            for k, want in ((0, b.lower), (1, b.upper)):
+                rel = abs(grid[i, k, j] - float(want)) / float(want)
+                if not rel <= ERROR_BOUND:
+                    bad.append((n, m, k, grid[i, k, j], want, rel))
+    assert not bad, bad
+
+
+def test_next_to_a_threshold_torsion_duty_third():
+    """Torsion, duty 1/3, paper model, Q = 7: the order-2 interval appears between m = 0.375 and
+    0.385 (located on a coarse grid); within a relative 1e-12 .. 1e-2 of the threshold (found by
+    bisection on the certified route) the grid meets the bound or is NaN where the certified
+    route says no interval."""
+    from analytic.system import system
+
+    sysv = system("torsion", duty="1/3")
+    lo, hi = 0.375, 0.385
+    has_lo = boundary(2, lo, Q=7, damping="paper", system=sysv, digits=20).exists
+    for _ in range(40):
+        mid = 0.5 * (lo + hi)
+        if boundary(2, mid, Q=7, damping="paper", system=sysv, digits=20).exists == has_lo:
+            lo = mid
+        else:
+            hi = mid
+    ks = np.arange(2, 13, 2.0)
+    ms = np.sort(np.concatenate([lo * (1 + 10.0**-ks), lo * (1 - 10.0**-ks)]))
+    _assert_family_grid([1, 2, 3], ms, 7, "paper", sysv)
+
+
+@pytest.mark.parametrize("damping", ["exact", "paper"])
+def test_next_to_critical_damping(damping):
+    """Q = 3/5: half 1 is critically damped at m = 4 Q^2 - 1 = 0.44 exactly (exact model; the
+    regimes are decided in floats only away from it); depths within a relative 1e-15 .. 1e-2 of
+    it, both sides, and 0.44 itself."""
+    ks = np.arange(2, 16, 1.0)
+    ms = np.sort(np.concatenate([0.44 * (1 + 10.0**-ks), 0.44 * (1 - 10.0**-ks), [0.44]]))
+    _assert_grid([1, 2, 3], ms, Fraction(3, 5), damping)
+
+
+def test_confirmation_rejects_a_wrong_edge():
+    """The ball-arithmetic confirmation of an escalated entry proves a right edge and refuses one
+    moved by 3e-14 (a relative error three times the bound), either edge, so that such an entry
+    would go to the certified route.  Reference: the certified edges at 30 digits."""
+    from verify.grid import _confirmed
+    from verify.inputs import as_system
+
+    sysv = as_system("pendulum", "1/2")
+    m = Fraction("0.5095")  # order 5, Q = 7, paper: an entry the double estimate escalates
+    b = boundary(5, m, Q=7, damping="paper", digits=30)
+    lo, hi = float(b.lower), float(b.upper)
+    assert _confirmed(5, m, 7, "paper", sysv, (lo, hi))
+    for bad in ((lo * (1 + 3e-14), hi), (lo * (1 - 3e-14), hi), (lo, hi * (1 + 3e-14))):
+        assert not _confirmed(5, m, 7, "paper", sysv, bad)

@@ -19,7 +19,9 @@ Method (all orders and depths at once):
   ``theta = asin(-k r f(beta c))``;
 * friction, normal form: the undamped-form roots (same ``r``, ``beta``) bracket the interval
   (``D <= D0`` and ``D0 < 0`` outside them); the maximiser of ``D`` is the root of ``D'`` (Newton
-  safeguarded by bisection); the edges are the zeros of ``D`` left and right of it;
+  safeguarded by bisection, from the secant start, where ``D'`` changes sign); where ``D`` is
+  positive there, the edges are the zeros of ``D`` left and right of it (Halley safeguarded by
+  bisection, started at the undamped roots);
 * exact model with a critically or over-damped half: the same on the trace form in
   ``zeta = gamma T/2``, inside the window of the order (see :mod:`verify.solve`);
 * near ``m = 1`` (``1 - beta < NEAR_ONE``): Newton steps on the forms for ``m -> 1``
@@ -28,7 +30,9 @@ Method (all orders and depths at once):
   is always computed from the exact depth;
 * with friction every entry carries an error estimate (the rounding of the indicator over its
   slope at the edge); next to a threshold or a closing gap, where the edges are a near-double
-  root, the few entries that cannot meet the bound go to the certified route.
+  root, the few entries that cannot meet the bound are proved in ball arithmetic
+  (:func:`_confirmed`: the sign of the indicator at the exact depth on both sides of each edge)
+  and go to the certified route only where that fails.
 """
 
 from __future__ import annotations
@@ -275,36 +279,56 @@ def _table_start(n, r, beta, eps):
     return out.reshape(nodes.shape[:-1] + (beta.size,))
 
 
-def _bisect_newton_compact(fn, args, lo, hi, x0, increasing: bool, *, iterations=100, rtol=4e-16):
-    """:func:`_bisect_newton` for ``fn(x, *args) -> (f, df)`` on arrays: everything broadcast to
-    one shape, and each point dropped from the iteration once it has converged (the same rule per
-    point), so that the few slow points do not keep the whole array iterating."""
+def _bisect_newton_compact(
+    fn, args, lo, hi, x0, increasing: bool, *, scale=None, halley=False, rtol=4e-16, iterations=100
+):
+    """Safeguarded Newton (``halley=True``: Halley, ``fn`` also giving ``f''``) for ``fn(x, *args)
+    -> (f, df[, d2f])`` on arrays, one root per point in ``[lo, hi]`` with a sign change
+    (``f(lo) < 0 < f(hi)`` if ``increasing`` else the reverse; ``increasing`` may be an array of
+    ``+-1``, per point): everything broadcast to one shape,
+    the bracket shrunk with every sign seen, a step that leaves it replaced by bisection, and each
+    point dropped from the iteration once it has converged, so that the few slow points do not keep
+    the whole array iterating.  A point has converged when its last step or its bracket is below
+    ``rtol`` of ``scale`` (the size that sets the relative error: ``c + theta``, where ``T`` is
+    proportional to it; ``|x|`` when ``scale`` is None), or when ``f`` is exactly 0."""
     shape = np.broadcast(np.asarray(x0), np.asarray(lo), np.asarray(hi), *args).shape
-    flat = [np.broadcast_to(np.asarray(a, float), shape).ravel() for a in (x0, lo, hi, *args)]
-    x, lo, hi, args = flat[0].copy(), flat[1].copy(), flat[2].copy(), flat[3:]
+    if isinstance(increasing, bool):
+        increasing = 1.0 if increasing else -1.0
+    if scale is None:
+        scale = np.abs(np.asarray(x0, float))
+    flat = [
+        np.broadcast_to(np.asarray(a, float), shape).ravel()
+        for a in (x0, lo, hi, scale, increasing, *args)
+    ]
+    x, lo, hi, sc, sgn = flat[0].copy(), flat[1].copy(), flat[2].copy(), flat[3], flat[4]
+    args = flat[5:]
+    tol = rtol * np.maximum(np.abs(sc), 1e-300)
     out = x.copy()
     idx = np.arange(x.size)
-    sign = 1.0 if increasing else -1.0
-    sub = args
-    with np.errstate(divide="ignore", invalid="ignore"):
+    sub, tl, sign = args, tol, sgn
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
         for _ in range(iterations):
-            f, df = fn(x, *sub)
-            f, df = sign * np.asarray(f, float), sign * np.asarray(df, float)
+            vals = fn(x, *sub)
+            f, df = sign * np.asarray(vals[0], float), sign * np.asarray(vals[1], float)
             lo = np.where(f < 0, x, lo)
             hi = np.where(f > 0, x, hi)
             step = f / df
+            if halley:
+                step = step / (1.0 - 0.5 * step * (sign * np.asarray(vals[2], float)) / df)
             xn = x - step
-            scale = np.maximum(np.abs(x), 1e-300)
-            small = np.abs(step) <= 0.5 * rtol * scale
+            small = np.abs(step) <= 0.5 * tl
             bad = ~((xn > lo) & (xn < hi) | small) | ~np.isfinite(xn)
             xn = np.where(bad, 0.5 * (lo + hi), xn)
             out[idx] = xn
-            stop = small | (f == 0) | (hi - lo <= rtol * scale) | ~np.isfinite(x)
+            stop = small | (f == 0) | (hi - lo <= tl) | ~np.isfinite(x)
             if stop.all():
                 break
-            keep = ~stop
-            idx, x, lo, hi = idx[keep], xn[keep], lo[keep], hi[keep]
-            sub = tuple(a[idx] for a in args)
+            if stop.any():
+                keep = ~stop
+                idx, xn, lo, hi, tl = idx[keep], xn[keep], lo[keep], hi[keep], tl[keep]
+                sign = sign[keep]
+                sub = tuple(a[idx] for a in args)
+            x = xn
     return out.reshape(shape)
 
 
@@ -316,31 +340,56 @@ def damped_normal(n, P):
     parity = _parity(int(n.flat[0]))
     form = indicator(parity)
     dd = form.compiled("numpy", (1, 2))
-    d01 = form.compiled("numpy", (0, 1))
     t1, t2 = normal_edges(n, P)
     a, b = np.minimum(t1, t2), np.maximum(t1, t2)
     c = n * _HALF_PI
     args = (c, P.r2, P.u, P.beta, P.g)
     shape = np.broadcast(a, *args).shape
     a, b = np.broadcast_to(a, shape), np.broadcast_to(b, shape)
-    # maximiser: zero of D' (decreasing through it)
+    # maximiser: zero of D' (decreasing through it), started where the secant of D' through the
+    # ends vanishes
     d1a = np.asarray(dd(a, *args)[0], float) * np.ones(shape)
     d1b = np.asarray(dd(b, *args)[0], float) * np.ones(shape)
     inside = (d1a > 0) & (d1b < 0)
     top = np.where(d1a <= 0, a, b)
-    if inside.any():
-        x0 = 0.5 * (a + b)
-        root = _bisect_newton_compact(dd, args, a, b, x0, False)
-        top = np.where(inside, root, top)
-    dtop = np.asarray(d01(top, *args)[0], float) * np.ones(shape)
+    scale = np.maximum(np.broadcast_to(c, shape) + 0.5 * (a + b), 1.0)
+    if inside.any():  # (only there: elsewhere D' has no sign change)
+        sel = np.nonzero(inside.ravel())[0]
+        aa, bb, ya, yb, sc = (np.ravel(v)[sel] for v in (a, b, d1a, d1b, scale))
+        sub = tuple(np.broadcast_to(v, shape).ravel()[sel] for v in args)
+        with np.errstate(divide="ignore", invalid="ignore"):
+            x0 = aa + ya * (bb - aa) / (ya - yb)
+        x0 = np.where((x0 > aa) & (x0 < bb), x0, 0.5 * (aa + bb))
+        # to 1e-12 of c + theta: D(top) is then below its maximum by ~D'' 1e-24, far below
+        # the rounding of D (the existence decision and the edge brackets need no more)
+        top = np.array(top, float, copy=True)
+        top.ravel()[sel] = _bisect_newton_compact(dd, sub, aa, bb, x0, False, scale=sc, rtol=1e-12)
+    d012 = form.compiled("numpy", (0, 1, 2))
+    dtop = np.asarray(d012(top, *args)[0], float) * np.ones(shape)
     exists = dtop > 0
     lo = np.full(shape, np.nan)
     hi = np.full(shape, np.nan)
     if exists.any():
-        e_lo = _bisect_newton_compact(d01, args, a, top, 0.5 * (a + top), True)
-        e_hi = _bisect_newton_compact(d01, args, top, b, 0.5 * (top + b), False)
-        lo = np.where(exists, e_lo, np.nan)
-        hi = np.where(exists, e_hi, np.nan)
+        # both edges in one Halley iteration (only where the interval exists: elsewhere there
+        # is no sign change), each from its undamped root, in the bracket between it and the
+        # maximiser (D negative at the one end, positive at the other)
+        sel = np.nonzero(exists.ravel())[0]
+        cc = np.broadcast_to(c, shape).ravel()[sel]
+        aa, bb, tt = (np.ravel(v)[sel] for v in (a, b, top))
+        sub = tuple(np.tile(np.broadcast_to(v, shape).ravel()[sel], 2) for v in args)
+        k = sel.size
+        both = _bisect_newton_compact(
+            d012,
+            sub,
+            np.concatenate([aa, tt]),
+            np.concatenate([tt, bb]),
+            np.concatenate([aa, bb]),
+            np.concatenate([np.ones(k), -np.ones(k)]),
+            scale=np.maximum(np.concatenate([cc + aa, cc + bb]), 1.0),
+            halley=True,
+        )
+        lo.ravel()[sel] = both[:k]
+        hi.ravel()[sel] = both[k:]
     return {"a": a, "b": b, "top": top, "dtop": dtop, "lo": lo, "hi": hi}
 
 
@@ -351,6 +400,24 @@ def damped_normal(n, P):
 def _halves_exact(m, Q: Fraction):
     """Regime names per depth for the exact model (exact rational decision on the exact depths)."""
     return [regime_of(4 * Q * Q - 1 - x) for x in m], [regime_of(4 * Q * Q - 1 + x) for x in m]
+
+
+def _halves(dep, cols, Q: Fraction):
+    """:func:`_halves_exact` for the depths ``cols`` of ``dep``, decided in floats where
+    ``4 Q^2 - 1 -+ m`` is far from 0 (its float value is within a few ulp of ``4 Q^2 + 1`` of
+    the exact one: ``4 Q^2 - 1`` and ``m`` are each rounded once) and from the exact depth
+    elsewhere."""
+    q = 4 * Q * Q - 1
+    qf, ms = float(q), dep.m[cols]
+    margin = 1e-12 * (abs(qf) + 2.0)
+    names = []
+    for sign in (-1, 1):
+        u = qf + sign * ms
+        out = np.where(u > 0, "under", "over").astype(object)
+        for j in np.nonzero(np.abs(u) <= margin)[0]:
+            out[j] = regime_of(q + sign * dep.exact(int(cols[j])))
+        names.append(list(out))
+    return names[0], names[1]
 
 
 #: the double path serves depths with ``1 - m`` at least this (the last double below 1 has
@@ -427,7 +494,8 @@ def boundary_grid(orders, m, *, Q=None, damping="exact", system="pendulum", duty
     The double path serves ``1 - m >= 2**-53`` (every double depth) and ``m >= 2**-1022``; exact
     depths outside, and the points next to a threshold or a closing gap where the double
     computation cannot decide the edges to that bound (a double root of the indicator), are
-    computed by the certified route (:func:`verify.solve.boundary`).  ``tests/test_grid.py`` and
+    proved in ball arithmetic (:func:`_confirmed`) or, where that fails, computed by the
+    certified route (:func:`verify.solve.boundary`).  ``tests/test_grid.py`` and
     ``tests/test_grid_hard.py`` check the claim against the certified edges on log-spaced samples
     (``1 - m`` down to ``2**-53``, ``m`` down to 1e-300, orders 1-6 and up to 100).  The order-1
     lower edge, which goes to 0 like ``1 - m``, is solved in ``x = omega_av T/2`` itself
@@ -473,6 +541,13 @@ def boundary_grid(orders, m, *, Q=None, damping="exact", system="pendulum", duty
             out[:, :, cols] = part
         doubt[:, ~served] = True
     for i, j in zip(*np.nonzero(doubt), strict=True):
+        edges = out[i, :, j]
+        if (
+            Qx is not None
+            and served[j]
+            and _confirmed(orders[i], dep.exact(j), Qx, damping, sysv, edges)
+        ):
+            continue
         out[i, :, j] = _certified_point(orders[i], dep.exact(j), Qx, damping, sysv)
     return out[..., 0] if scalar else out
 
@@ -489,6 +564,50 @@ def _blocks(cols, size: int):
     """``cols`` in consecutive pieces of at most ``size``."""
     for start in range(0, cols.size, size):
         yield cols[start : start + size]
+
+
+#: working precision (bits) of :func:`_confirmed`
+CONFIRM_BITS = 128
+#: :func:`_confirmed` proves each edge within this relative distance of the exact one (a proof,
+#: not an estimate: it needs no margin below the bound other than for the checks' own rounding,
+#: which ball arithmetic includes)
+CONFIRM_REL = 0.8 * ERROR_BOUND
+
+
+def _confirmed(n: int, m: Fraction, Q, damping: str, system, edges) -> bool:
+    """Whether the double edges ``edges = (lower, upper)`` (``T/T0``) of a friction entry that the
+    error estimate could not bound are within a relative :data:`CONFIRM_REL` of the exact edges,
+    proved in ball arithmetic: the indicator ``D`` of the normal form, with the parameters
+    enclosed at the exact depth, is negative at ``lower (1 - d)`` and positive at ``lower
+    (1 + d)``, and positive at ``upper (1 - d)`` and negative at ``upper (1 + d)`` (``d =``
+    :data:`CONFIRM_REL`, ``theta = pi (T w - n/2)``).  So each edge has a zero of ``D`` within
+    the bound, and the interval exists; that these zeros are the edges is the structure the
+    double path relies on everywhere (one zero of ``D`` each side of its maximiser, inside the
+    undamped interval).
+    ``False`` (the entry then goes to the certified route) where a sign is not decided, the
+    entry is NaN, or the normal form does not apply (a half critically or over-damped)."""
+    from flint import arb, ctx
+
+    lo, hi = (float(e) for e in edges)
+    if not (math.isfinite(lo) and math.isfinite(hi) and lo < hi):
+        return False
+    Qf = Fraction(Q) if not isinstance(Q, Fraction) else Q
+    if damping == "exact" and not 4 * Qf * Qf - 1 - m > 0:
+        return False
+    form = indicator(int(_parity(n))).compiled("arb", 0)
+    with ctx.workprec(CONFIRM_BITS):
+        P = normal_params(m, Qf, damping, backend("arb"), system)
+        half_pi = arb.pi() / 2
+        c = n * half_pi
+        d = arb(CONFIRM_REL)  # the double, exactly
+        for T, first in ((lo, -1), (hi, 1)):
+            for side in (-1, 1):
+                theta = 2 * half_pi * (arb(T) * (1 + side * d) * P.w - arb(n) / 2)
+                v = form(theta, c, P.r2, P.u, P.beta, P.g)
+                want = first * side  # lower: -, +; upper: +, -
+                if not (v < 0 if want > 0 else v > 0):
+                    return False
+    return True
 
 
 def _certified_point(n: int, m: Fraction, Q, damping: str, system=None) -> tuple[float, float]:
@@ -525,20 +644,19 @@ def _double_grid(orders, dep: _Depths, cols, Qx, damping):
         doubt[:] = _fill_normal(out, orders, ms, P, damped=Qx is not None)
         return out, doubt
     Qexact = Fraction(Qx) if not isinstance(Qx, Fraction) else Qx
-    exact = dep.exact_all(cols)
-    h1, h2 = _halves_exact(exact, Qexact)
+    h1, h2 = _halves(dep, cols, Qexact)
     u1 = (4 * float(Qexact) ** 2 - 1 - ms) / (1 + ms)
     normal = np.array([a == "under" for a in h1]) & (u1 >= NEAR_CRITICAL**2)
     if normal.any():
         idx = np.nonzero(normal)[0]
         sub = ms[idx]
         P = normal_params(sub, float(Qexact), "exact", _NP, om=om[idx])
-        P = _exact_near_critical(P, sub, [exact[j] for j in idx], Qexact)
+        P = _exact_near_critical(P, sub, lambda k: dep.exact(int(cols[idx[k]])), Qexact)
         part = np.full((len(orders), 2, sub.size), np.nan)
         doubt[:, idx] = _fill_normal(part, orders, sub, P, damped=True)
         out[:, :, idx] = part
     for j in np.nonzero(~normal)[0]:
-        T = trace_params(exact[j], Qexact, backend("math"))
+        T = trace_params(dep.exact(int(cols[j])), Qexact, backend("math"))
         for i, n in enumerate(orders):
             window = trace_window_ends(n, (h1[j], h2[j]), T)
             if window is None:
@@ -553,13 +671,14 @@ def _double_grid(orders, dep: _Depths, cols, Qx, damping):
 
 def _exact_near_critical(P, ms, exact, Q: Fraction):
     """Recompute the parameters of depths next to critical damping of half 1 (``4 Q^2 - 1 - m``
-    tiny, where its float value has few correct digits) from the exact depths ``exact``."""
+    tiny, where its float value has few correct digits) from the exact depths (``exact(k)``: the
+    exact depth of ``ms[k]``)."""
     near = np.nonzero(np.abs(4 * float(Q) ** 2 - 1 - ms) < 1e-8)[0]
     if near.size == 0:
         return P
     cols = {f.name: np.array(getattr(P, f.name), float, copy=True) for f in fields(NormalParams)}
     for j in near:
-        pm = normal_params(exact[j], Q, "exact", backend("math"))
+        pm = normal_params(exact(int(j)), Q, "exact", backend("math"))
         for k in cols:
             cols[k][j] = float(getattr(pm, k))
     return NormalParams(**cols)
