@@ -233,13 +233,14 @@ def threshold_series(
     the scaling ``1/Q = lam m^p`` with ``p`` read off the forms (:func:`family_scaling_power`).
     A custom system has no depth and is refused.  See :class:`ThresholdSeries`.
     """
-    from paramres.inputs import InputError, as_damping, as_system
+    from paramres.inputs import InputError, as_damping
 
     from .series_result import _check_order
+    from .system import system as as_system
 
     order = _check_order(order)
     terms = _check_terms(terms)
-    sysv = as_system(system, duty)
+    sysv = as_system(system, duty=duty)
     if not sysv.is_paper:
         if not sysv.uses_depth:
             raise InputError(

@@ -38,8 +38,8 @@ from paramres.inputs import (
     as_number,
     as_period,
     as_quality,
-    as_system,
 )
+from verify.inputs import as_system
 
 __all__ = ["ENDPOINTS", "LIMITS", "PRESETS", "handle", "warm_up", "warm_up_tasks"]
 
