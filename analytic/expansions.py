@@ -55,7 +55,6 @@ __all__ = [
 ]
 
 
-
 def _ring(symbolic_n: bool) -> LaurentRing:
     return LaurentRing(["pi", "n"] if symbolic_n else ["pi"])
 
@@ -159,7 +158,14 @@ def _to_period(n, theta: Series, inv_w: Series | None) -> Series:
 
 
 def edge_series(
-    order, terms: int = 4, *, units: str = "T0", Q=None, damping: str = "exact", system=None
+    order,
+    terms: int = 4,
+    *,
+    units: str = "T0",
+    Q=None,
+    damping: str = "exact",
+    system=None,
+    duty="1/2",
 ) -> EdgeSeries:
     """The two edges of the interval of order ``order`` through ``m**terms``.
 
@@ -169,37 +175,45 @@ def edge_series(
     distinguished scaling of :mod:`analytic.thresholds` (``1/Q`` of order ``m`` for odd orders,
     ``m**2`` for even ones), as expressions in ``m`` valid above the threshold.
 
-    ``system``: another member of the family or duty (:mod:`analytic.system`): frictionless series
-    for integer orders (:mod:`analytic.family_series`).
+    ``system``, ``duty``: another member of the family (:mod:`analytic.system`; a name or a
+    :class:`~analytic.system.System`, which passes through), integer orders only: frictionless
+    series from :mod:`analytic.family_series`, with ``Q`` the edges above the threshold from
+    :func:`analytic.thresholds.near_threshold_edges` (scaling ``1/Q ~ m^p``).  A custom system
+    has no depth and is refused.
     """
     from paramres.inputs import InputError, as_damping, as_quality
+
+    from .system import system as as_system
 
     order = _check_order(order)
     terms = _check_terms(terms)  # the widest range first: a bad value names the general limit
     if units not in ("T0", "Tav"):
         raise InputError(f"units {units!r} is not one of: T0, Tav")
     Qv = as_quality(Q)
-    if system is not None and not system.is_paper:
-        if not system.uses_depth:
+    model = as_damping(damping)
+    sysv = as_system("pendulum" if system is None else system, duty=duty)
+    if not sysv.is_paper:
+        if not sysv.uses_depth:
             raise InputError("a custom system has no depth: there is no series in m")
-        if Qv is not None:
-            raise InputError(
-                f"series with friction are derived for the paper's system only, not {system.label}"
-            )
         if isinstance(order, str):
             raise InputError(
                 f"closed forms in n (--order odd/even) are for the paper's system; give an integer "
-                f"order for {system.label}"
+                f"order for {sysv.label}"
             )
+        if Qv is not None:
+            from .thresholds import near_threshold_edges
+
+            _check_terms(terms, "friction")
+            return near_threshold_edges(order, terms, Q=Qv, damping=model, units=units, system=sysv)
         from .family_series import family_edge_series
 
         _check_terms(terms, "family")
-        return family_edge_series(order, terms, units, system)
+        return family_edge_series(order, terms, units, sysv)
     if Qv is not None:
         from .thresholds import near_threshold_edges
 
         _check_terms(terms, "friction")
-        return near_threshold_edges(order, terms, Q=Qv, damping=as_damping(damping), units=units)
+        return near_threshold_edges(order, terms, Q=Qv, damping=model, units=units)
     _check_terms(terms, "parity" if isinstance(order, str) else "frictionless")
     return _frictionless(order, terms, units)
 

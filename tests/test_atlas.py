@@ -91,11 +91,41 @@ def test_growth_and_thresholds_in_the_atlas(full):
     for o, n in enumerate(req.orders):
         ex = existence(n, 7, digits=DIGITS)
         first = next(t for t in ex.thresholds if t.appears)
-        here = ds.isel(Q=q7, order=o)
+        here = ds.isel(system=0, duty=0, Q=q7, order=o)
         assert str(here.threshold_text.values) == first.text()
         lo, hi = first.enclosure
         assert float(here.threshold_min) <= lo and float(here.threshold_max) >= hi
     assert np.all(np.isnan(ds.threshold.isel(Q=list(req.Q).index(None)).values))
+
+
+def test_thresholds_for_another_system_and_duty():
+    """Thresholds are computed for every system and duty of the grid, not only the paper's: each
+    equals the one ``paramres.existence`` proves for that system and duty (the same proof, run
+    independently here), and the dims are those of the edges."""
+    import paramres
+
+    ds = paramres.atlas(
+        "1,2", ["0.3"], Q="none,7", system="pendulum,torsion", duty="1/3", digits=15, workers=1
+    )
+    assert ds.threshold.dims == ("system", "duty", "Q", "order")
+    assert ds.threshold_text.dims == ds.threshold.dims
+    q7 = list(ds.Q.values).index(7.0)
+    seen = set()
+    for s, name in enumerate(ds.system.values):
+        for o, n in enumerate(ds.order.values):
+            ex = paramres.existence(int(n), 7, system=str(name), duty="1/3", digits=15)
+            first = next(t for t in ex.thresholds if t.appears)
+            assert not [u for u in ex.undecided if u[0] < first.enclosure[0]]
+            here = ds.isel(system=s, duty=0, Q=q7, order=o)
+            assert str(here.threshold_text.values) == first.text()
+            lo, hi = first.enclosure
+            assert float(here.threshold_min) <= lo and float(here.threshold_max) >= hi
+            seen.add(str(here.threshold_text.values))
+    assert len(seen) == 4  # torsion's thresholds differ from the pendulum's at D = 1/3
+    # no friction: no threshold, NaN and empty text
+    none = ds.isel(Q=list(ds.Q.values).index(math.inf))
+    assert np.all(np.isnan(none.threshold.values))
+    assert all(str(t) == "" for t in none.threshold_text.values.ravel())
 
 
 def test_table_jobs_runs_on_the_engine(client):

@@ -377,3 +377,58 @@ def test_against_certified_boundaries(order):
         with mpmath.workdps(60):
             val = sp.lambdify(m, es.in_T0[name], "mpmath")(mpmath.mpf("0.001"))
             assert abs(val - mpmath.mpf(str(getattr(b, name)))) < mpmath.mpf("1e-32"), (order, name)
+
+
+@pytest.mark.parametrize("order", [1, 2])
+def test_series_with_friction_for_torsion_is_one_route_and_meets_certified_edges(order):
+    """``paramres.series(order, K, Q=..., system="torsion")`` goes through
+    :func:`analytic.thresholds.near_threshold_edges` (equal expressions), and agrees with the
+    certified edges of ``paramres.boundary(..., Q=..., system="torsion")`` (ball arithmetic, another
+    route) to the order of its truncation.
+
+    The series is in powers of ``m`` at fixed ``nu = (m_min0/m)^p`` (``m_min0 = pi/(2Q)`` for
+    order 1, ``p = 1``; ``sqrt(2/Q)`` for order 2, ``p = 2``, from ``threshold_series``): at a
+    fixed ``Q`` it is not a Taylor series in ``m``, so the bound tested is the one along fixed
+    ``nu = 0.6``: halving ``m`` (and scaling ``Q`` like ``m^-p``) divides the error by
+    ``2^(K+1)`` (slope in ``log m`` above ``K + 0.9``), and the error is the first omitted terms
+    (series through ``m^(K+2)`` minus through ``m^K``) to 15 %.  The certified edges are exact to
+    ``1e-25``, far below the errors (measured 1e-12 and above)."""
+    from fractions import Fraction
+
+    import paramres
+    from analytic.system import system
+    from analytic.thresholds import near_threshold_edges, threshold_series
+
+    K = 2
+    torsion = system("torsion")
+    es = paramres.series(order, K, Q=7, system="torsion")
+    direct = near_threshold_edges(order, K, Q=7, system=torsion)
+    for name in ("lower", "upper"):
+        assert sp.simplify(es.in_T0[name] - direct.in_T0[name]) == 0
+        assert sp.simplify(es.in_Tav[name] - direct.in_Tav[name]) == 0
+    th = threshold_series(order, 1, system="torsion")
+    (Q,) = th.m_min_leading.free_symbols
+    c = th.m_min_leading * Q ** sp.Rational(1, th.p)  # m_min0 = c Q^(-1/p)
+    assert sp.simplify(sp.diff(c, Q)) == 0
+    ms = ["0.002", "0.004"]
+    errs, preds = {"lower": [], "upper": []}, {"lower": [], "upper": []}
+    for x in ms:
+        mm = mpmath.mpf(x)
+        with mpmath.workdps(40):
+            q = Fraction(mpmath.nstr(mpmath.mpf(str(sp.N(c**th.p, 45))) / (0.6 * mm**th.p), 30))
+        short = paramres.series(order, K, Q=q, system="torsion")
+        longer = paramres.series(order, K + 2, Q=q, system="torsion")
+        b = paramres.boundary(order, x, Q=q, system="torsion", digits=25)
+        assert b.exists
+        for name in ("lower", "upper"):
+            with mpmath.workdps(40):
+                f = sp.lambdify(m, short.in_T0[name], "mpmath")(mm)
+                g = sp.lambdify(m, longer.in_T0[name] - short.in_T0[name], "mpmath")(mm)
+                errs[name].append(abs(mpmath.mpf(str(getattr(b, name))) - f))
+                preds[name].append(abs(g))
+    for name in ("lower", "upper"):
+        slope = mpmath.log(errs[name][1] / errs[name][0]) / mpmath.log(2)
+        assert slope > K + 0.9, (order, name, slope, errs[name])
+        assert errs[name][0] > mpmath.mpf("1e-15")
+        for e, p in zip(errs[name], preds[name], strict=True):
+            assert abs(e / p - 1) < 0.15, (order, name, e, p)

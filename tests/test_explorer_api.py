@@ -313,3 +313,28 @@ def test_the_command_serves_until_stopped(tmp_path):
         proc.terminate()
         proc.wait(30)
     assert "Traceback" not in proc.stderr.read()
+
+
+def test_the_threshold_preset_is_above_the_threshold_and_inside_the_interval():
+    """The "threshold" preset says: order 1 with Q = 5, m just above pi/(6Q) (the leading
+    threshold, eq. 38).  Its depth is above pi/(6Q) and above the proven threshold of its own
+    damping model (``verify.existence``, branch and bound), and its period lies inside the certified
+    interval of order 1 there (``boundary``), so the clicked point is unstable."""
+    from fractions import Fraction
+
+    import mpmath
+
+    (pre,) = [p for p in api.PRESETS if p["id"] == "threshold"]
+    Qv, model = Fraction(pre["chart"]["Q"]), pre["chart"]["damping"]
+    m, T = Fraction(pre["point"]["m"]), Fraction(pre["point"]["T"])
+    assert Qv == 5 and pre["chart"]["system"] == "pendulum"
+    ex = paramres.existence(1, Qv, damping=model, digits=15)
+    first = next(t for t in ex.thresholds if t.appears)
+    assert not ex.undecided and first.enclosure[1] < m  # exact rationals
+    with mpmath.workdps(30):  # the margins are above 1e-3: 30 digits decide them
+        mm = mpmath.mpf(m.numerator) / m.denominator
+        assert mm > mpmath.pi / (6 * Qv)
+        assert [iv for iv in ex.intervals if iv[0] < mm <= iv[1]]  # m in a proven range
+    b = paramres.boundary(1, m, Q=Qv, damping=model, digits=15)
+    Tm = mpmath.mpf(T.numerator) / T.denominator  # 1/2, exact
+    assert b.exists and b.lower_enclosure[1] < Tm < b.upper_enclosure[0]

@@ -11,17 +11,19 @@ system) and computes on it
 * the **growth-rate map** ``log max|mu|`` over ``(T, m)`` for every ``(Q, D, system)``, in double
   precision (:func:`verify.growth.growth_map`), when periods ``T`` are given;
 * **thresholds** with friction (:func:`verify.existence.existence`, proven by branch and bound):
-  the depth where each order's interval first appears, with its enclosure, for the paper's system
-  (the existence proofs are built for it).
+  the depth where each order's interval first appears, with its enclosure, for every system and
+  duty of the grid (a custom system has no depth, so it has no threshold and no place in an
+  atlas; a threshold with an undecided depth range below it is left unset, NaN and empty text).
 
 The work is cut into tasks (:data:`EDGE_CHUNK` depths of one order; blocks of rows of the growth
-map; one threshold per ``(Q, order)``) and run on :mod:`verify.engine` (a local cluster sized to
-the machine by default, or an existing one).  Results are written as they finish: to a Zarr store
-chunk by chunk, each task one Zarr chunk, its completion recorded in a ``*_done`` variable *after*
-its data, so an interrupted atlas resumes and skips what is done; to netCDF (engine ``h5netcdf``)
-through a temporary file renamed at the end.  A store is reused only for the very same request
-(grid, digits, damping, version), checked before any work; anything else is refused, so a store
-can never change a result.  Before any work the cost and the memory are estimated
+map; one threshold per ``(system, duty, Q, order)``) and run on :mod:`verify.engine` (a local
+cluster sized to the machine by default, or an existing one).  Results are written as they
+finish: to a Zarr store chunk by chunk, each task one Zarr chunk, its completion recorded in a
+``*_done`` variable *after* its data, so an interrupted atlas resumes and skips what is done; to
+netCDF (engine ``h5netcdf``) through a temporary file renamed at the end.  A store is reused only
+for the very same request (grid, digits, damping, version, :data:`LAYOUT`), checked before any
+work; anything else is refused, so a store can never change a result.  Before any work the cost
+and the memory are estimated
 (:func:`estimate`) and absurd sizes refused.
 """
 
@@ -97,6 +99,9 @@ _EDGE_VARS = (
 _EDGE_TEXT = ("lower_text", "upper_text")
 _THRESHOLD_VARS = ("threshold", "threshold_min", "threshold_max")
 _THRESHOLD_TEXT = ("threshold_text", "existence")
+#: the layout of the variables, part of the request a stored atlas must match (2: thresholds
+#: over (system, duty, Q, order))
+LAYOUT = 2
 
 
 def _text(x: Fraction | None) -> str:
@@ -135,14 +140,8 @@ class Request:
         doc["orders"] = list(self.orders)
         doc["system"] = list(self.system)
         doc["version"] = __version__
+        doc["layout"] = LAYOUT
         return doc
-
-    @property
-    def paper_index(self) -> tuple[int, int] | None:
-        """``(system, duty)`` indices of the paper's system (pendulum, D = 1/2) if in the grid."""
-        if "pendulum" in self.system and Fraction(1, 2) in self.duty:
-            return self.system.index("pendulum"), self.duty.index(Fraction(1, 2))
-        return None
 
     @property
     def friction(self) -> list[int]:
@@ -178,9 +177,17 @@ class Request:
         ]
 
     def threshold_tasks(self) -> list[tuple]:
-        if not self.thresholds or self.paper_index is None:
+        """``(s, d, q, o)`` indices of every threshold task: each system and duty (every system
+        of an atlas has a depth), each finite ``Q``, each order."""
+        if not self.thresholds:
             return []
-        return [(q, o) for q in self.friction for o in range(len(self.orders))]
+        return [
+            (s, d, q, o)
+            for s in range(len(self.system))
+            for d in range(len(self.duty))
+            for q in self.friction
+            for o in range(len(self.orders))
+        ]
 
 
 def _list(value, name: str, check) -> tuple:
@@ -397,15 +404,21 @@ def growth_task(args) -> np.ndarray:
 
 
 def threshold_task(args) -> dict:
-    """The first depth where the interval of one order appears with friction ``Q``, proven."""
+    """The first depth where the interval of one order appears with friction ``Q``, proven
+    (unset when no interval appears, or when a depth range below it is undecided, so that the
+    value is never claimed as the lowest without a proof)."""
     from .existence import existence
 
-    order, Q, damping, digits = args
-    ex = existence(order, Q, damping=damping, digits=min(digits, 30))
+    system, duty, order, Q, damping, digits = args
+    ex = existence(order, Q, system=system, duty=duty, damping=damping, digits=min(digits, 30))
     out = dict.fromkeys(_THRESHOLD_VARS, np.nan)
     out["threshold_text"] = ""
     out["existence"] = json.dumps(ex.as_json())
     first = next((t for t in ex.thresholds if t.appears), None)
+    if first is not None and any(
+        Fraction(u[0]) < Fraction(first.enclosure[0]) for u in ex.undecided
+    ):
+        first = None
     if first is not None:
         lo, hi = first.enclosure
         out["threshold"] = float(first.value)
@@ -425,8 +438,8 @@ def _task_args(req: Request, kind: str, idx: tuple):
         m = np.array([float(x) for x in req.m[c * rows : (c + 1) * rows]])
         tau = np.array([float(t) for t in req.T])
         return (req.system[s], req.duty[d], req.Q[q], req.damping, tau, m)
-    q, o = idx
-    return (req.orders[o], req.Q[q], req.damping, req.digits)
+    s, d, q, o = idx
+    return (req.system[s], req.duty[d], req.orders[o], req.Q[q], req.damping, req.digits)
 
 
 _TASKS = {"edges": edge_task, "growth": growth_task, "thresholds": threshold_task}
@@ -536,10 +549,10 @@ def _shapes(req: Request) -> dict:
             (1, 1, 1, 1),
         )
     if req.threshold_tasks():
-        t = ("Q", "order")
-        out.update(dict.fromkeys(_THRESHOLD_VARS, (t, (Qn, O), np.float64, (1, 1))))
-        out.update(dict.fromkeys(_THRESHOLD_TEXT, (t, (Qn, O), object, (1, 1))))
-        out["thresholds_done"] = (t, (Qn, O), np.int8, (1, 1))
+        t, ts, tc = ("system", "duty", "Q", "order"), (S, D, Qn, O), (1, 1, 1, 1)
+        out.update(dict.fromkeys(_THRESHOLD_VARS, (t, ts, np.float64, tc)))
+        out.update(dict.fromkeys(_THRESHOLD_TEXT, (t, ts, object, tc)))
+        out["thresholds_done"] = (t, ts, np.int8, tc)
     return out
 
 
@@ -565,7 +578,7 @@ def _provenance(req: Request, command: str | None) -> dict:
             "edges: verify.modulation.boundary, certified (ball arithmetic, python-flint arb); "
             "growth: verify.growth.growth_map, double precision (Floquet monodromy); "
             "thresholds: verify.existence.existence, proven by branch and bound "
-            "(pendulum, D = 1/2 only)"
+            "(every system and duty; NaN where no interval appears or a lower range is undecided)"
         ),
         "date_created": time.strftime("%Y-%m-%dT%H:%M:%SZ", time.gmtime()),
         "units_note": "periods T in units of T0 = 2 pi/omega0; depth m and Q dimensionless",

@@ -32,7 +32,7 @@ def register(subparsers) -> None:
             "An atlas over a grid of orders, depths m, quality factors Q, duties and systems: the "
             "certified edges of every interval with their proven enclosures, the growth rate "
             "log max|mu| over (T, m) when --T is given, and the threshold depths where Q is "
-            "finite (the paper's system). Written as an xarray dataset to FILE.nc (netCDF-4) or "
+            "finite (every system and duty). Written as an xarray dataset to FILE.nc (netCDF-4) or "
             "FILE.zarr (Zarr, written chunk by chunk and resumed when run again), with units, "
             "long names and provenance. Computed on a local dask cluster, or on --scheduler."
         ),
@@ -73,7 +73,7 @@ def register(subparsers) -> None:
     p.add_argument(
         "--no-thresholds",
         action="store_true",
-        help="skip the threshold proofs (they are made where Q is finite, paper's system)",
+        help="skip the threshold proofs (made where Q is finite, for every system and duty)",
     )
     p.add_argument(
         "--output", required=True, metavar="FILE", help="FILE.nc (netCDF) or FILE.zarr (Zarr)"

@@ -82,13 +82,7 @@ def run(args) -> int:
     damping = as_damping(args.damping)
     Q = as_quality(args.Q)
     sysv = system_of(args)
-    if Q is not None and not sysv.is_paper:
-        from analytic.thresholds import near_threshold_edges, threshold_series
-
-        threshold_series(order, terms, damping=damping, system=sysv)  # refuses what has no m
-        es = near_threshold_edges(order, terms, Q=Q, damping=damping, system=sysv)
-    else:
-        es = edge_series(order, terms, Q=Q, damping=damping, system=sysv)
+    es = edge_series(order, terms, Q=Q, damping=damping, system=sysv)
     payload = es.as_json()
     payload["lower"] = _s(es.in_T0["lower"])
     payload["upper"] = _s(es.in_T0["upper"])
