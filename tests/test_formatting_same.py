@@ -138,7 +138,9 @@ def test_bound_text_as_before(digits):
     for _ in range(3000):
         num = rng.choice([rng.getrandbits(rng.randint(1, 300)), 10 ** rng.randint(0, 60)])
         num += rng.choice([-1, 0, 0, 1]) if num > 1 else 0
-        den = rng.choice([10 ** rng.randint(0, 80), 2 ** rng.randint(0, 300), rng.randint(1, 10**9)])
+        den = rng.choice(
+            [10 ** rng.randint(0, 80), 2 ** rng.randint(0, 300), rng.randint(1, 10**9)]
+        )
         b = Fraction(num, den)
         assert bound_text(b, digits) == reference_bound(b, digits), (num, den)
 
@@ -162,6 +164,16 @@ def test_boundary_rows_as_before(m, digits):
     texts = [reference_text(x, b.radii[k], digits) for k, x in enumerate(values)]
     assert [j[k] for k in keys] == texts
     assert j["error_bound"] == reference_bound(
-        max(reference_error(t, x, b.radii[k]) for k, (t, x) in enumerate(zip(texts, values)))
+        max(reference_error(t, x, b.radii[k]) for k, (t, x) in enumerate(zip(texts, values, strict=True)))
     )
     assert j["radius"] == mpmath.nstr(b.radius, 3)
+
+
+def test_radius_text_as_before():
+    from verify.result import _radius_text
+
+    for x, rad, _ in _cases(21, 2000):
+        assert _radius_text(rad) == mpmath.nstr(rad, 3)
+        assert _radius_text(x) == mpmath.nstr(x, 3)
+    assert _radius_text(mpmath.mpf(0)) == mpmath.nstr(mpmath.mpf(0), 3)
+    assert _radius_text(mpmath.mpf("0.5")) == "0.5"

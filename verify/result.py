@@ -16,6 +16,8 @@ from mpmath.libmp import to_str
 
 from analytic.system import PAPER, System
 
+from .rounding import _pow10
+
 __all__ = ["Boundary", "proven_text", "fraction_text"]
 
 
@@ -106,7 +108,11 @@ class Boundary:
         """A JSON-ready dict; numbers as decimal strings with ``digits`` significant digits;
         ``error_bound`` bounds ``|printed - exact|`` for each of them (rounding included),
         ``radius`` is the internal enclosure's (smaller: before rounding)."""
-        fmt = lambda x, k: None if x is None else self._fmt(x, k)  # noqa: E731
+        texts = self._texts
+        values = (self.lower, self.upper, self.delta_lower, self.delta_upper)
+        lower, upper, delta_lower, delta_upper = (
+            None if x is None else texts[k] for k, x in enumerate(values)
+        )
         return {
             "order": self.order,
             **self.system.as_json(),
@@ -117,10 +123,10 @@ class Boundary:
             "method": self.method,
             "regime": self.regime,
             "exists": self.exists,
-            "lower": fmt(self.lower, 0),
-            "upper": fmt(self.upper, 1),
-            "delta_lower": fmt(self.delta_lower, 2),
-            "delta_upper": fmt(self.delta_upper, 3),
+            "lower": lower,
+            "upper": upper,
+            "delta_lower": delta_lower,
+            "delta_upper": delta_upper,
             "radius": None if self.radius is None else _radius_text(self.radius),
             "error_bound": self.error_bound(),
             "certified": self.certified,
@@ -215,19 +221,20 @@ def _proven_slow(x, rad, digits: int) -> str:
 _LOG2_10 = math.log(10, 2)
 
 
-def _nstr(s: tuple, dps: int) -> tuple[str, tuple[int, int] | None]:
+def _nstr(s: tuple, dps: int, strip: bool = False) -> tuple[str, tuple[int, int] | None]:
     """``mpmath.nstr(x, dps, strip_zeros=False)`` of a finite nonzero raw mpf ``s`` (``dps >= 1``):
     the very steps of ``mpmath.libmp.to_str`` (digits truncated at ``dps + 3``, then rounded half
-    up), for the case at hand only; with ``(D, k)``, the printed value ``D 10**k`` exactly
-    (``None`` for huge exponents, where mpmath's own path writes the text)."""
+    up; ``strip``: ``strip_zeros=True``), for the case at hand only; with ``(D, k)``, the printed
+    value ``D 10**k`` exactly (``None`` for huge exponents, where mpmath's own path writes the
+    text)."""
     sign, man, exp, bc = s
     if abs(exp + bc) > 3500:  # huge exponents: mpmath's own path
-        return to_str(s, dps, strip_zeros=False), None
+        return to_str(s, dps, strip_zeros=strip), None
     bitprec = int((dps + 3) * _LOG2_10) + 10
     fixprec = max(bitprec - exp - bc, 0)
     fixdps = int(fixprec / _LOG2_10 + 0.5)
     offset = exp + fixprec
-    digits = str(((man << offset) if offset >= 0 else (man >> -offset)) * 10**fixdps >> fixprec)
+    digits = str(((man << offset) if offset >= 0 else (man >> -offset)) * _pow10(fixdps) >> fixprec)
     exponent = len(digits) - fixdps - 1
     if len(digits) > dps and digits[dps] in "56789":
         digits = digits[:dps]
@@ -254,6 +261,10 @@ def _nstr(s: tuple, dps: int) -> tuple[str, tuple[int, int] | None]:
     else:
         split = 1
     text = ("-" if sign else "") + digits[:split] + "." + digits[split:]
+    if strip:
+        text = text.rstrip("0")
+        if text[-1] == ".":
+            text += "0"
     if exponent == 0:
         return text, value
     return (f"{text}e+{exponent}" if exponent > 0 else f"{text}e{exponent}"), value
@@ -279,7 +290,7 @@ def _log10_abs(v) -> float:
 def _radius_text(r) -> str:
     """``mpmath.nstr(r, 3)``."""
     v = getattr(r, "_mpf_", None)
-    return mpmath.nstr(r, 3) if v is None else to_str(v, 3)
+    return mpmath.nstr(r, 3) if v is None or not v[1] else _nstr(v, 3, strip=True)[0]
 
 
 def fraction_text(x) -> str:

@@ -73,8 +73,8 @@ def _error_parts(text, x, radius) -> tuple[int, int] | None:
     X = -xm if xs else xm
     e2 = min(xe, re, 0)
     k10 = min(k, 0)
-    scale10 = 10 ** (-k10)
-    A = D * 10 ** (k - k10) << (-e2)
+    scale10 = _pow10(-k10)
+    A = D * _pow10(k - k10) << (-e2)
     B = (X << (xe - e2)) * scale10
     C = (rm << (re - e2)) * scale10
     return abs(A - B) + C, scale10 << (-e2)
@@ -102,7 +102,7 @@ def _bound_text(num: int, den: int, digits: int) -> str:
         return "0"
 
     def at_least(e: int) -> bool:  # num / den >= 10**e
-        return num >= den * 10**e if e >= 0 else num * 10 ** (-e) >= den
+        return num >= den * _pow10(e) if e >= 0 else num * _pow10(-e) >= den
 
     # the exponent e with 10**e <= bound < 10**(e+1): estimated from the bit lengths, then fixed
     e = math.floor((num.bit_length() - den.bit_length()) * _LOG10_2)
@@ -112,9 +112,9 @@ def _bound_text(num: int, den: int, digits: int) -> str:
         e += 1
     s = digits - 1 - e
     if s >= 0:
-        mant = -((-num * 10**s) // den)  # ceiling
+        mant = -((-num * _pow10(s)) // den)  # ceiling
     else:
-        mant = -((-num) // (den * 10 ** (-s)))
+        mant = -((-num) // (den * _pow10(-s)))
     if mant >= 10**digits:  # rounded up to the next power of ten
         mant //= 10
         e += 1
@@ -123,3 +123,14 @@ def _bound_text(num: int, den: int, digits: int) -> str:
 
 
 _LOG10_2 = math.log10(2)
+_POW10: dict[int, int] = {}
+
+
+def _pow10(n: int) -> int:
+    """``10**n`` (``n >= 0``), kept for ``n < 2000``: the same few powers recur."""
+    p = _POW10.get(n)
+    if p is None:
+        p = 10**n
+        if n < 2000:
+            _POW10[n] = p
+    return p
