@@ -164,7 +164,10 @@ def test_boundary_rows_as_before(m, digits):
     texts = [reference_text(x, b.radii[k], digits) for k, x in enumerate(values)]
     assert [j[k] for k in keys] == texts
     assert j["error_bound"] == reference_bound(
-        max(reference_error(t, x, b.radii[k]) for k, (t, x) in enumerate(zip(texts, values, strict=True)))
+        max(
+            reference_error(t, x, b.radii[k])
+            for k, (t, x) in enumerate(zip(texts, values, strict=True))
+        )
     )
     assert j["radius"] == mpmath.nstr(b.radius, 3)
 
