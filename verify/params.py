@@ -192,13 +192,15 @@ def _one_minus(m, om):
 def _undamped(m, B: Backend, om=None):
     om = _one_minus(m, om)
     s = _root(om * (1 + m), B)
-    beta = _lift(m, B) / (1 + s)
+    ps = 1 + s
+    beta = _lift(m, B) / ps
     b2 = beta * beta
-    r = beta * (3 + b2) / (1 + 3 * b2)
-    omb2 = 2 * s / (1 + s)
-    u = omb2 * omb2 * omb2 / ((1 + 3 * b2) * (1 + 3 * b2))
-    w = B.sqrt((1 + s) / 2) / s
-    bm = (_lift(om, B) + s) / (1 + s)  # 1 - m is exact or given: no cancellation
+    q = 1 + 3 * b2
+    r = beta * (3 + b2) / q
+    omb2 = 2 * s / ps
+    u = omb2 * omb2 * omb2 / (q * q)
+    w = B.sqrt(ps / 2) / s
+    bm = (_lift(om, B) + s) / ps  # 1 - m is exact or given: no cancellation
     return r, r * r, u, beta, w, bm
 
 
@@ -224,10 +226,10 @@ def normal_params(
 
         return NormalParams(**normal_values(system, m, Q, damping, B, om))
     r, r2, u, beta, w0, bm = _undamped(m, B, om)
-    om = _one_minus(m, om)
     zero = r * 0
     if Q is None:
         return NormalParams(r, r2, u, beta, w0, zero, w0, zero, bm)
+    om = _one_minus(m, om)
     if damping == "paper":
         return NormalParams(r, r2, u, beta, w0, 1 / (2 * _lift(Q, B) * w0), w0, zero, bm)
     if isinstance(m, Fraction) and isinstance(Q, Fraction) and om == 1 - m:
