@@ -192,13 +192,15 @@ def _one_minus(m, om):
 def _undamped(m, B: Backend, om=None):
     om = _one_minus(m, om)
     s = _root(om * (1 + m), B)
-    beta = _lift(m, B) / (1 + s)
+    ps = 1 + s
+    beta = _lift(m, B) / ps
     b2 = beta * beta
-    r = beta * (3 + b2) / (1 + 3 * b2)
-    omb2 = 2 * s / (1 + s)
-    u = omb2 * omb2 * omb2 / ((1 + 3 * b2) * (1 + 3 * b2))
-    w = B.sqrt((1 + s) / 2) / s
-    bm = (_lift(om, B) + s) / (1 + s)  # 1 - m is exact or given: no cancellation
+    q = 1 + 3 * b2
+    r = beta * (3 + b2) / q
+    omb2 = 2 * s / ps
+    u = omb2 * omb2 * omb2 / (q * q)
+    w = B.sqrt(ps / 2) / s
+    bm = (_lift(om, B) + s) / ps  # 1 - m is exact or given: no cancellation
     return r, r * r, u, beta, w, bm
 
 
@@ -224,20 +226,21 @@ def normal_params(
 
         return NormalParams(**normal_values(system, m, Q, damping, B, om))
     r, r2, u, beta, w0, bm = _undamped(m, B, om)
-    om = _one_minus(m, om)
     zero = r * 0
     if Q is None:
         return NormalParams(r, r2, u, beta, w0, zero, w0, zero, bm)
     if damping == "paper":
         return NormalParams(r, r2, u, beta, w0, 1 / (2 * _lift(Q, B) * w0), w0, zero, bm)
-    if isinstance(m, Fraction) and isinstance(Q, Fraction) and om == 1 - m:
+    if isinstance(m, Fraction) and isinstance(Q, Fraction) and (om is None or om == 1 - m):
         # the rational parts once per (m, Q): the same at every working precision
-        u1, u2, om2, a, b, Un, d4, b8 = _exact_parts(m, Q)
+        u1, u2, om2, a, b, Un, d4, b8, op, om = _exact_parts(m, Q)
     else:
+        om = _one_minus(m, om)
         q2 = 4 * Q * Q
         u1, u2, om2 = (q2 - 1 - m) / (1 + m), (q2 - 1 + m) / om, om * (1 + m)
         a, b = (1 + m) * (1 + m), om * om
         Un, d4, b8 = 2 * m * ((q2 - 1) * (3 + m * m) - (1 + 3 * m * m)), 4 * m, 8 * m * Q * Q
+        op = 1 + m
     nu1 = _root(u1, B)
     nu2 = _root(u2, B)
     om2 = _lift(om2, B)
@@ -254,7 +257,7 @@ def normal_params(
     beta = _lift(b8, B) / (om2 * nsum * nsum)
     g = 2 / nsum
     # w0 - w = (omega1 - Omega1 + omega2 - Omega2)/(4 pi), omega - Omega = gamma^2/(omega + Omega)
-    diff = (1 / (2 * Qb / _root(1 + m, B) + nu1) + 1 / (2 * Qb / _root(om, B) + nu2)) / (4 * Qb)
+    diff = (1 / (2 * Qb / _root(op, B) + nu1) + 1 / (2 * Qb / _root(om, B) + nu2)) / (4 * Qb)
     return NormalParams(B.sqrt(r2), r2, u, beta, w, g, w0, diff / (w * w0), 2 * nu1 / nsum)
 
 
@@ -262,7 +265,7 @@ def normal_params(
 def _exact_parts(m: Fraction, Q: Fraction) -> tuple:
     """The rational parts of the exact model's normal-form parameters (see the module text):
     ``u1 = nu1^2``, ``u2 = nu2^2``, ``1 - m^2``, ``(1+m)^2``, ``(1-m)^2``, the numerator of ``U``,
-    ``4m`` and ``8 m Q^2``."""
+    ``4m``, ``8 m Q^2``, ``1 + m`` and ``1 - m``."""
     q2 = 4 * Q * Q
     om = 1 - m
     return (
@@ -274,6 +277,8 @@ def _exact_parts(m: Fraction, Q: Fraction) -> tuple:
         2 * m * ((q2 - 1) * (3 + m * m) - (1 + 3 * m * m)),
         4 * m,
         8 * m * Q * Q,
+        1 + m,
+        om,
     )
 
 

@@ -12,8 +12,11 @@ from fractions import Fraction
 from functools import cached_property
 
 import mpmath
+from mpmath.libmp import to_str
 
 from analytic.system import PAPER, System
+
+from .rounding import _pow10
 
 __all__ = ["Boundary", "proven_text", "fraction_text"]
 
@@ -68,15 +71,19 @@ class Boundary:
         return proven_text(x, None, self.digits)
 
     @cached_property
-    def _texts(self) -> tuple:
-        """The four printed numbers (lower, upper and the two offsets), formatted once."""
+    def _printed(self) -> tuple:
+        """The four printed numbers (lower, upper and the two offsets), formatted once, each as
+        ``(text, (D, k) or None)`` (:func:`_proven`)."""
         values = (self.lower, self.upper, self.delta_lower, self.delta_upper)
+        radii = (None,) * 4 if self.radii is None else self.radii
         return tuple(
-            "-"
-            if x is None
-            else proven_text(x, None if self.radii is None else self.radii[k], self.digits)
+            ("-", None) if x is None else _proven(x, radii[k], self.digits)
             for k, x in enumerate(values)
         )
+
+    @cached_property
+    def _texts(self) -> tuple:
+        return tuple(p[0] for p in self._printed)
 
     def error_bound(self) -> str | None:
         """A bound of ``|printed - exact|`` over the four printed numbers (rounding of the print
@@ -85,22 +92,27 @@ class Boundary:
 
     @cached_property
     def _error_bound(self) -> str | None:
-        from .rounding import bound_text, printed_error
+        from .rounding import printed_bound
 
         if not (self.certified and self.exists and self.radius is not None):
             return None
         values = (self.lower, self.upper, self.delta_lower, self.delta_upper)
-        bounds = [
-            printed_error(self._fmt(x, k), x, self.radius if self.radii is None else self.radii[k])
+        printed = self._printed
+        radii = (self.radius,) * 4 if self.radii is None else self.radii
+        return printed_bound(
+            (None if x is None else (printed[k][1] or printed[k][0]), x, radii[k])
             for k, x in enumerate(values)
-        ]
-        return bound_text(max(b for b in bounds if b is not None))
+        )
 
     def as_json(self) -> dict:
         """A JSON-ready dict; numbers as decimal strings with ``digits`` significant digits;
         ``error_bound`` bounds ``|printed - exact|`` for each of them (rounding included),
         ``radius`` is the internal enclosure's (smaller: before rounding)."""
-        fmt = lambda x, k: None if x is None else self._fmt(x, k)  # noqa: E731
+        texts = self._texts
+        values = (self.lower, self.upper, self.delta_lower, self.delta_upper)
+        lower, upper, delta_lower, delta_upper = (
+            None if x is None else texts[k] for k, x in enumerate(values)
+        )
         return {
             "order": self.order,
             **self.system.as_json(),
@@ -111,11 +123,11 @@ class Boundary:
             "method": self.method,
             "regime": self.regime,
             "exists": self.exists,
-            "lower": fmt(self.lower, 0),
-            "upper": fmt(self.upper, 1),
-            "delta_lower": fmt(self.delta_lower, 2),
-            "delta_upper": fmt(self.delta_upper, 3),
-            "radius": None if self.radius is None else mpmath.nstr(self.radius, 3),
+            "lower": lower,
+            "upper": upper,
+            "delta_lower": delta_lower,
+            "delta_upper": delta_upper,
+            "radius": None if self.radius is None else _radius_text(self.radius),
             "error_bound": self.error_bound(),
             "certified": self.certified,
             "notes": list(self.notes),
@@ -172,17 +184,97 @@ def proven_text(x: mpmath.mpf, rad, digits: int) -> str:
     rounding of the print itself).  A value whose enclosure contains zero and is too wide for one
     digit prints as ``"0"`` (e.g. the offset at a closing, which is exactly zero by the closing
     theorem)."""
+    return _proven(x, rad, digits)[0]
+
+
+def _proven(x, rad, digits: int) -> tuple[str, tuple[int, int] | None]:
+    """:func:`proven_text`, with ``(D, k)``: the printed value ``D 10**k`` exactly (``None``
+    where the text comes from the general path below)."""
+    xv = getattr(x, "_mpf_", None)
+    rv = getattr(rad, "_mpf_", None)
+    if xv is not None and rv is not None and xv[1] and rv[1]:
+        # the common case, two finite nonzero mpmath numbers: the same estimate and the same
+        # text as below, without mpmath's dispatch and comparisons
+        est = (xv[2] - rv[2] - 1 + math.log2(xv[1]) - math.log2(rv[1])) * _LOG10_2
+        usable = math.floor(est)
+        if abs(est - round(est)) < 1e-6:
+            usable = _usable_exactly(x, rad)
+        if usable < 1:
+            return "0", (0, 0)
+        return _nstr(xv, min(digits, usable))
+    return _proven_slow(x, rad, digits), None
+
+
+def _proven_slow(x, rad, digits: int) -> str:
+    """:func:`proven_text` for any number type, zero and no radius included."""
     if rad is None or rad == 0 or x == 0:
         return mpmath.nstr(x, digits, strip_zeros=False) if x != 0 or rad is None else "0"
     est = _log10_abs(x) - _log10_abs(rad) - _LOG10_2
     usable = math.floor(est)
     if abs(est - round(est)) < 1e-6:  # next to a power of ten: decide it exactly
-        with mpmath.workdps(20):
-            ratio = abs(x) / (2 * rad)
-            usable = int(mpmath.floor(mpmath.log10(ratio))) if ratio >= 1 else 0
+        usable = _usable_exactly(x, rad)
     if usable < 1:
         return "0"
     return mpmath.nstr(x, min(digits, usable), strip_zeros=False)
+
+
+_LOG2_10 = math.log(10, 2)
+
+
+def _nstr(s: tuple, dps: int, strip: bool = False) -> tuple[str, tuple[int, int] | None]:
+    """``mpmath.nstr(x, dps, strip_zeros=False)`` of a finite nonzero raw mpf ``s`` (``dps >= 1``):
+    the very steps of ``mpmath.libmp.to_str`` (digits truncated at ``dps + 3``, then rounded half
+    up; ``strip``: ``strip_zeros=True``), for the case at hand only; with ``(D, k)``, the printed
+    value ``D 10**k`` exactly (``None`` for huge exponents, where mpmath's own path writes the
+    text)."""
+    sign, man, exp, bc = s
+    if abs(exp + bc) > 3500:  # huge exponents: mpmath's own path
+        return to_str(s, dps, strip_zeros=strip), None
+    bitprec = int((dps + 3) * _LOG2_10) + 10
+    fixprec = max(bitprec - exp - bc, 0)
+    fixdps = int(fixprec / _LOG2_10 + 0.5)
+    offset = exp + fixprec
+    digits = str(((man << offset) if offset >= 0 else (man >> -offset)) * _pow10(fixdps) >> fixprec)
+    exponent = len(digits) - fixdps - 1
+    if len(digits) > dps and digits[dps] in "56789":
+        digits = digits[:dps]
+        i = dps - 1
+        while i >= 0 and digits[i] == "9":
+            i -= 1
+        if i >= 0:
+            digits = digits[:i] + str(int(digits[i]) + 1) + "0" * (dps - i - 1)
+        else:
+            digits = "1" + "0" * (dps - 1)
+            exponent += 1
+    else:
+        digits = digits[:dps]
+    value = (-int(digits) if sign else int(digits), exponent + 1 - len(digits))
+    if min(-(dps // 3), -5) < exponent < dps:  # fixed point near unit magnitude
+        if exponent < 0:
+            digits = "0" * (-exponent) + digits
+            split = 1
+        else:
+            split = exponent + 1
+            if split > dps:
+                digits += "0" * (split - dps)
+        exponent = 0
+    else:
+        split = 1
+    text = ("-" if sign else "") + digits[:split] + "." + digits[split:]
+    if strip:
+        text = text.rstrip("0")
+        if text[-1] == ".":
+            text += "0"
+    if exponent == 0:
+        return text, value
+    return (f"{text}e+{exponent}" if exponent > 0 else f"{text}e{exponent}"), value
+
+
+def _usable_exactly(x, rad) -> int:
+    """``floor(log10(|x| / (2 rad)))`` (at least 0), for ``est`` next to a power of ten."""
+    with mpmath.workdps(20):
+        ratio = abs(x) / (2 * rad)
+        return int(mpmath.floor(mpmath.log10(ratio))) if ratio >= 1 else 0
 
 
 _LOG10_2 = math.log10(2)
@@ -193,6 +285,12 @@ def _log10_abs(v) -> float:
     _, man, exp, bc = v._mpf_
     top = man >> (bc - 53) if bc > 53 else man
     return (exp + bc - min(bc, 53) + math.log2(top)) * _LOG10_2
+
+
+def _radius_text(r) -> str:
+    """``mpmath.nstr(r, 3)``."""
+    v = getattr(r, "_mpf_", None)
+    return mpmath.nstr(r, 3) if v is None or not v[1] else _nstr(v, 3, strip=True)[0]
 
 
 def fraction_text(x) -> str:

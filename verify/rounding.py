@@ -15,11 +15,12 @@ computes that bound exactly (rational arithmetic) and :func:`bound_text` writes 
 
 from __future__ import annotations
 
+import math
 from fractions import Fraction
 
 import mpmath
 
-__all__ = ["printed_error", "bound_text", "exact"]
+__all__ = ["printed_error", "printed_bound", "bound_text", "exact"]
 
 
 def exact(x) -> Fraction:
@@ -35,20 +36,48 @@ def printed_error(text: str | None, x, radius) -> Fraction | None:
     nothing printed or no radius (an uncertified value)."""
     if text is None or radius is None or x is None:
         return None
-    if not (isinstance(x, mpmath.mpf) and isinstance(radius, mpmath.mpf)):
+    parts = _error_parts(text, x, radius)
+    if parts is None:
         return abs(Fraction(text) - exact(x)) + exact(radius)
-    # the same in integers on one common scale 2^-a 10^-b (one reduction at the end)
-    D, k = _decimal(text)
+    return Fraction(*parts)
+
+
+def printed_bound(items) -> str | None:
+    """:func:`bound_text` of the largest :func:`printed_error` over ``(text, x, radius)`` items
+    (items without a bound skipped; ``None`` if none has one) -- the same text, in integers
+    without reducing fractions.  ``text`` may also be ``(D, k)``, the printed value ``D 10**k``
+    (the text already read)."""
+    best = None
+    for text, x, radius in items:
+        if text is None or radius is None or x is None:
+            continue
+        parts = _error_parts(text, x, radius)
+        if parts is None:
+            p = Fraction(text[0]) * Fraction(10) ** text[1] if isinstance(text, tuple) else text
+            f = abs(Fraction(p) - exact(x)) + exact(radius)
+            parts = (f.numerator, f.denominator)
+        if best is None or parts[0] * best[1] > best[0] * parts[1]:
+            best = parts
+    return None if best is None else _bound_text(best[0], best[1], 2)
+
+
+def _error_parts(text, x, radius) -> tuple[int, int] | None:
+    """``(num, den)`` with ``printed_error(text, x, radius) = num / den`` (not reduced;
+    ``den > 0``), or ``None`` unless ``x`` and ``radius`` are mpmath numbers."""
+    if not (isinstance(x, mpmath.mpf) and isinstance(radius, mpmath.mpf)):
+        return None
+    # in integers on one common scale 2^-a 10^-b
+    D, k = text if isinstance(text, tuple) else _decimal(text)
     xs, xm, xe, _ = x._mpf_
     _, rm, re, _ = radius._mpf_
     X = -xm if xs else xm
     e2 = min(xe, re, 0)
     k10 = min(k, 0)
-    scale10 = 10 ** (-k10)
-    A = D * 10 ** (k - k10) << (-e2)
+    scale10 = _pow10(-k10)
+    A = D * _pow10(k - k10) << (-e2)
     B = (X << (xe - e2)) * scale10
     C = (rm << (re - e2)) * scale10
-    return Fraction(abs(A - B) + C, scale10 << (-e2))
+    return abs(A - B) + C, scale10 << (-e2)
 
 
 def _decimal(text: str) -> tuple[int, int]:
@@ -63,18 +92,45 @@ def bound_text(bound: Fraction | None, digits: int = 2) -> str | None:
     """``bound`` rounded up to ``digits`` significant digits, as ``"3.4e-5"`` (``"0"`` for 0)."""
     if bound is None:
         return None
-    if bound == 0:
+    bound = Fraction(bound)
+    return _bound_text(bound.numerator, bound.denominator, digits)
+
+
+def _bound_text(num: int, den: int, digits: int) -> str:
+    """:func:`bound_text` of ``num / den`` (``num >= 0``, ``den > 0``, not necessarily reduced)."""
+    if num == 0:
         return "0"
-    # the exponent e with 10**e <= bound < 10**(e+1), from the sizes of the integers, then fixed
-    e = len(str(bound.numerator)) - len(str(bound.denominator))
-    while Fraction(10) ** e > bound:
+
+    def at_least(e: int) -> bool:  # num / den >= 10**e
+        return num >= den * _pow10(e) if e >= 0 else num * _pow10(-e) >= den
+
+    # the exponent e with 10**e <= bound < 10**(e+1): estimated from the bit lengths, then fixed
+    e = math.floor((num.bit_length() - den.bit_length()) * _LOG10_2)
+    while not at_least(e):
         e -= 1
-    while Fraction(10) ** (e + 1) <= bound:
+    while at_least(e + 1):
         e += 1
-    scale = Fraction(10) ** (digits - 1 - e)
-    mant = -((-bound * scale.numerator) // scale.denominator)  # ceiling
+    s = digits - 1 - e
+    if s >= 0:
+        mant = -((-num * _pow10(s)) // den)  # ceiling
+    else:
+        mant = -((-num) // (den * _pow10(-s)))
     if mant >= 10**digits:  # rounded up to the next power of ten
         mant //= 10
         e += 1
     head = str(mant)
     return f"{head[0]}.{head[1:]}e{e}" if digits > 1 else f"{head}e{e}"
+
+
+_LOG10_2 = math.log10(2)
+_POW10: dict[int, int] = {}
+
+
+def _pow10(n: int) -> int:
+    """``10**n`` (``n >= 0``), kept for ``n < 2000``: the same few powers recur."""
+    p = _POW10.get(n)
+    if p is None:
+        p = 10**n
+        if n < 2000:
+            _POW10[n] = p
+    return p
