@@ -121,6 +121,8 @@ def run_floors(args) -> int:
     if args.output:
         check_writable(args.output, "--output")
     spec = importlib.util.spec_from_file_location("_paramres_floors", path)
+    if spec is None or spec.loader is None:  # pragma: no cover - a file that is not Python
+        raise InputError(f"{path.name} cannot be loaded as a Python module")
     floors = importlib.util.module_from_spec(spec)
     spec.loader.exec_module(floors)
 
