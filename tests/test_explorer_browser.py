@@ -236,7 +236,7 @@ def test_the_generated_propagator_is_the_equation_of_motion(page):
         for a, b in zip(js, ref, strict=True):
             assert abs(a - b) <= 1e-13 * scale, (key, js, ref)
 
-    from verify.timedomain import _propagator
+    from verify.propagation import _propagator
 
     f = _propagator("paper", "under", 1, "mpmath")
     t, w, g = 0.61, 6.3, 0.45
