@@ -549,6 +549,27 @@ PHRASES: dict[str, str] = {
     "in the exact model. A product-to-sum lemma in": (
         "в точной модели. Лемма о переходе от произведения к сумме, записанная только через"
     ),
+    "frequency ($T_0=1$)": "частота ($T_0=1$)",
+    "paper (eqs. 28--30)": "статьи (ур. 28--30)",
+    r"exact, $\gamma<\omega_1$": r"точная, $\gamma<\omega_1$",
+    r"exact, $\gamma=\omega_1$": r"точная, $\gamma=\omega_1$",
+    r"exact, $\gamma>\omega_1$": r"точная, $\gamma>\omega_1$",
+    r"in units $T_0 = 1$, $\gamma = \pi/Q$": r"при $T_0 = 1$, $\gamma = \pi/Q$",
+    "When is the jump a good model?": "Когда скачок длины --- хорошая модель?",
+    "For": "При",
+    "For order": "Для порядка",
+    "put": "положим",
+    "Write": "Положим",
+    ". In units": ". В единицах",
+    "interval closes (Section~\\ref{sec:closings}).": (
+        "интервал смыкается (раздел~\\ref{sec:closings})."
+    ),
+    r"\textbf{Window theorem.}": r"\textbf{Теорема об окне.}",
+    r"\textbf{differs}": r"\textbf{расходится}",
+    "odd": "нечётные",
+    "even": "чётные",
+    "factor $F$": "множитель $F$",
+    r"\textbf{not proportional}": r"\textbf{не пропорционален}",
     "alone, with": ", где",
     "(the paper's": "(в статье",
     ") and": ") и",
