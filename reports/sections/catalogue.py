@@ -82,7 +82,11 @@ def display(src: str, config: Config) -> Latex:
 
 
 def _entry(r, ctx: Context) -> Latex:
-    status = r"agrees" if r.status == "agrees" else r"\textbf{differs}"
+    status = (
+        say("agrees", "совпадает")
+        if r.status == "agrees"
+        else r"\textbf{" + say("differs", "расходится") + "}"
+    )
     head = raw(
         r"\paragraph{"
         + eq_text(r.equation).raw

@@ -7,6 +7,7 @@ from __future__ import annotations
 import numpy as np
 
 from .. import figures
+from ..i18n import say
 from ..latex import Latex, figure, inline, paragraph, prose, raw, ref, table, text
 from . import Context, Part, shared
 
@@ -68,6 +69,10 @@ def _compute():
     }
 
 
+#: the damping models' names in the Russian figures
+_MODEL_RU = {"paper": "модель статьи", "exact": "точная модель"}
+
+
 def build(ctx: Context) -> Part:
     d = shared(ctx, "diagram-data", _compute)
     figs = []
@@ -75,15 +80,24 @@ def build(ctx: Context) -> Part:
     fig = figures.intervals_figure(d["m2"], d["fig2"], FIG2_ORDERS, closings=labels)
     figs.append(("fig2-intervals.pdf", figures.pdf_bytes(fig)))
     panels = []
-    for damping, title in (("paper", "paper model (as in the paper)"), ("exact", "exact model")):
-        layers = {("no friction" if k == "none" else k): v for k, v in d["fig8"][damping].items()}
+    titles = (
+        ("paper", say("paper model (as in the paper)", "модель статьи (как в статье)")),
+        ("exact", say("exact model", "точная модель")),
+    )
+    for damping, title in titles:
+        none = say("no friction", "без трения")
+        layers = {(none if k == "none" else k): v for k, v in d["fig8"][damping].items()}
         panels.append((title, layers))
     fig = figures.friction_figure(d["m8"], panels, FIG8_ORDERS, t_max=2.0)
     figs.append(("fig8-friction.pdf", figures.pdf_bytes(fig)))
     island_panels = []
     for damping in ("paper", "exact"):
         island_panels.append(
-            (f"{damping} model, $Q = {ISLAND_Q}$", d["island"][damping], d["ex"][damping][0])
+            (
+                say(f"{damping} model", _MODEL_RU[damping]) + f", $Q = {ISLAND_Q}$",
+                d["island"][damping],
+                d["ex"][damping][0],
+            )
         )
     fig = figures.island_figure(
         d["mi"],

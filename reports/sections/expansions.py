@@ -6,6 +6,7 @@ from __future__ import annotations
 
 import sympy as sp
 
+from ..i18n import say
 from ..latex import (
     Latex,
     equation_lines,
@@ -60,9 +61,19 @@ def _paper_note(labels, by_label) -> Latex:
         r = by_label.get(lab)
         if r is None:
             continue
-        word = "agrees" if r.status == "agrees" else r"\textbf{differs}"
+        word = (
+            say("agrees", "совпадает")
+            if r.status == "agrees"
+            else r"\textbf{" + say("differs", "расходится") + "}"
+        )
+        ref = f"p.~\\pageref{{cat:{_key(lab)}}}"
         parts.append(
-            raw(f"Paper ({text(lab).raw}): {word} (catalogue, p.~\\pageref{{cat:{_key(lab)}}}).")
+            raw(
+                say(
+                    f"Paper ({text(lab).raw}): {word} (catalogue, {ref}).",
+                    f"Статья ({text(lab).raw}): {word} (каталог, с.~{ref[3:]}).",
+                )
+            )
         )
     return note(*parts) if parts else Latex("")
 
@@ -184,7 +195,7 @@ def _thresholds(ctx: Context, by_label: dict) -> list[Latex]:
         where = gap.get("threshold")
         out.append(
             note(
-                f"Order {n}: leading term",
+                say(f"Order {n}: leading term", f"Порядок {n}: главный член"),
                 inline(math(sp.Eq(mmin, ts.m_min_leading), ctx.config)),
                 "; the two models part at",
                 inline(raw(f"m^{{{where}}}")) if where is not None else "no order computed",
@@ -223,7 +234,7 @@ def _near(ctx: Context, by_label: dict) -> list[Latex]:
                 out.append(_series_display(lhs, sc["T0"][side], m, ctx, 4))
         out.append(
             note(
-                "Here",
+                say("Here", "Здесь"),
                 inline(math(sc["s"], ctx.config)),
                 "with",
                 inline(math(sp.Eq(sp.Symbol("m_min0"), es.threshold["m_min_leading"]), ctx.config)),

@@ -103,7 +103,12 @@ def _segments(ctx: Context) -> list[Latex]:
         table(
             [
                 "model",
-                raw(r"segment $\varphi_1(t)$ on the bob-down half"),
+                raw(
+                    say(
+                        r"segment $\varphi_1(t)$ on the bob-down half",
+                        r"отрезок $\varphi_1(t)$ на полупериоде с опущенным грузом",
+                    )
+                ),
                 "residual in the equation",
             ],
             rows,

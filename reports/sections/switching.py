@@ -63,7 +63,7 @@ def _figure(edges, sine):
             )
         ax.set_ylim(0, S[-1] * 1.08)
         ax.set_xlabel(r"$T/T_0$")
-        ax.set_ylabel(r"switching time $S/T_0$")
+        ax.set_ylabel(say(r"switching time $S/T_0$", r"время переключения $S/T_0$"))
         fig.tight_layout(pad=0.4)
     return fig
 
