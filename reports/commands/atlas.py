@@ -115,18 +115,17 @@ def run(args) -> int:
     if args.scheduler is not None and workers is not None:
         raise InputError("--scheduler and --workers exclude each other (the cluster has its own)")
     kind = store_kind(args.output)
-    req = request(
-        args.orders,
-        args.m,
-        Q=args.Q,
-        duty=args.duty,
-        system=args.system,
-        damping=args.damping,
-        digits=args.digits,
-        T=args.T,
-        thresholds=not args.no_thresholds,
-        edge_chunk=chunk,
-    )
+    grid = {
+        "Q": args.Q,
+        "duty": args.duty,
+        "system": args.system,
+        "damping": args.damping,
+        "digits": args.digits,
+        "T": args.T,
+        "thresholds": not args.no_thresholds,
+        "edge_chunk": chunk,
+    }
+    req = request(args.orders, args.m, **grid)
     est = check_size(req, kind)  # before any work, and before touching the output
     check_writable(args.output, "--output", directory=kind == "zarr")
 
@@ -136,17 +135,10 @@ def run(args) -> int:
     ds = atlas(
         args.orders,
         args.m,
-        Q=args.Q,
-        duty=args.duty,
-        system=args.system,
-        damping=args.damping,
-        digits=args.digits,
-        T=args.T,
-        thresholds=not args.no_thresholds,
+        **grid,
         output=args.output,
         scheduler=args.scheduler,
         workers=workers,
-        edge_chunk=chunk,
         progress=bar,
         command=_command(args),
     )
