@@ -67,9 +67,12 @@ def browser():
 
 @pytest.fixture(scope="module")
 def server():
-    from reports.explorer.server import Explorer
+    """The explorer as a user starts it: a process of its own (``paramres explore``).  A server
+    thread in this process would compute while the page's requests are still in flight after a
+    test has ended, and mpmath's working precision is process-wide."""
+    from reports.explorer import explore
 
-    app = Explorer(port=0, warm=False).start()
+    app = explore(port=0)
     yield app
     app.stop()
 
