@@ -51,7 +51,6 @@ def cluster(
     scheduler=None,
     workers: int | None = None,
     *,
-    processes: bool = True,
     work_seconds=None,
     small_here: bool = False,
 ):
@@ -99,7 +98,7 @@ def cluster(
             LocalCluster(
                 n_workers=n,
                 threads_per_worker=1,
-                processes=processes,
+                processes=True,  # never threads: mpmath's working precision is process-wide
                 dashboard_address=None,
                 silence_logs=logging.ERROR,
             ) as local,
