@@ -10,7 +10,22 @@ from __future__ import annotations
 
 import re
 
-__all__ = ["PHRASES", "PATTERNS"]
+__all__ = ["PHRASES", "PATTERNS", "EDGE_SHAPES", "edge_shape"]
+
+#: the engine's names of the four symmetric edge shapes (``analytic.stitching.EdgeKind``) as the
+#: Russian text calls them: the functions on the bob-down and the bob-up half, and the orders
+EDGE_SHAPES: dict[str, tuple[str, str]] = {
+    "odd-cos-sin": ("cos--sin", "нечётные порядки"),
+    "odd-sin-cos": ("sin--cos", "нечётные порядки"),
+    "even-cos-cos": ("cos--cos", "чётные порядки"),
+    "even-sin-sin": ("sin--sin", "чётные порядки"),
+}
+
+
+def edge_shape(name: str) -> str:
+    """The Russian name of the edge shape ``name``: ``"odd-cos-sin"`` -> ``"cos--sin"``."""
+    return EDGE_SHAPES[name][0] if name in EDGE_SHAPES else name
+
 
 PHRASES: dict[str, str] = {
     # section titles
@@ -52,10 +67,6 @@ PHRASES: dict[str, str] = {
     "General order": "Произвольный порядок",
     "Speed against error": "Скорость и погрешность",
     "Time-domain pictures": "Моделирование во времени",
-    "Edge shape odd-cos-sin": "Форма границы odd-cos-sin",
-    "Edge shape odd-sin-cos": "Форма границы odd-sin-cos",
-    "Edge shape even-cos-cos": "Форма границы even-cos-cos",
-    "Edge shape even-sin-sin": "Форма границы even-sin-sin",
     # table headers and short words
     "half": "полупериод",
     "bob down": "груз опущен",
@@ -479,12 +490,12 @@ PHRASES: dict[str, str] = {
     "Section": "раздел",
     "Table": "таблица",
     "The intervals of order": "Интервалы порядка",
-    "pinch to zero width at the closings of": "стягиваются в точку в смыканиях из",
+    "pinch to zero width at the closings of": "стягиваются в точку в смыканиях, см.",
     "(dots, labelled": "(точки с подписью",
     "); within the figure these are the ratios": "); на рисунке это отношения",
     ". The paper names 2:1, 3:1 and 3:2.": ". Статья называет 2:1, 3:1 и 3:2.",
-    "compares the series of": "сравнивает ряды из",
-    "truncated after the powers": "оборванные после степеней",
+    "compares the series of": "сравнивает ряды (см.",
+    "truncated after the powers": "), оборванные после степеней",
     "with the certified lower edges (40 proven digits). The error falls off as the first "
     "neglected power: the fitted slopes at the smallest depths are": (
         "с гарантированными нижними границами (40 доказанных знаков). Погрешность убывает как "
@@ -636,7 +647,7 @@ PHRASES: dict[str, str] = {
     ),
     # the expansions, thresholds and accuracy sections
     "by Newton steps on exact power series, then": (
-        "шагами Ньютона над точными степенными рядами, затем"
+        "находится шагами Ньютона над точными степенными рядами, затем"
     ),
     "with the parameters expanded from their definitions; through": (
         "с параметрами, разложенными из их определений; до"
@@ -691,7 +702,49 @@ PHRASES: dict[str, str] = {
         "(возведённое в квадрат) уравнение (44) --- необращающееся в нуль кратное (26); ссылка "
         "верна."
     ),
+    # words set upright inside formulas (see reports.latex.notation)
+    "at": "при",
+    "centre": "центр",
+    # the expansions section
+    "; in units of": "; в единицах",
+    "), solved for": "); корень",
+    "no order computed": "порядок не вычислен",
+    "so that": "так что",
+    "from": "от",
+    "in place of": "вместо",
+    # the stitching section's proven links
+    "det M, paper model": "det M, модель статьи",
+    "det M, exact model": "det M, точная модель",
+    "normal form": "нормальная форма",
+    # the family's systems (the engine's names) as the figure titles them
+    "pendulum": "маятник",
+    "torsion": "крутильный маятник",
+    "meissner": "уравнение Мейснера",
+    # the tables of closings and of the Floquet cross-check
+    "$T/T_0$ exact": "$T/T_0$ точно",
+    "$T/T_0$ (certified digits)": "$T/T_0$ (гарантированные цифры)",
+    "at $T_-$": "при $T_-$",
+    "at $T_+$": "при $T_+$",
+    "equations solved": "решаемые уравнения",
+    # the benchmark: the panels, the families of methods and the methods without a number
+    "all scenes": "все сцены",
+    "series": "ряды",
+    "fixed point": "итерации статьи",
+    "double": "двойная точность",
+    "grid": "сетка",
+    "certified": "гарантированный",
+    "auto": "авто",
+    "fixed point (paper)": "итерации статьи",
+    "double, per point": "двойная точность, в точке",
+    "numpy grid": "сетка numpy",
 }
+
+PHRASES.update(
+    {
+        f"Edge shape {name}": f"Форма границы {fn} ({orders})"
+        for name, (fn, orders) in EDGE_SHAPES.items()
+    }
+)
 
 PATTERNS: list[tuple[str, object]] = [
     (
@@ -732,8 +785,25 @@ PATTERNS: list[tuple[str, object]] = [
     ),
     (
         r"Measured by paramres bench \((.*)\)\.",
-        r"Измерено командой paramres bench (\1).",
+        lambda m: (
+            "Измерено командой paramres bench ("
+            + re.sub(
+                r"\b(cpu|cores|system) ",
+                lambda k: {"cpu": "процессор ", "cores": "ядер ", "system": "система "}[k[1]],
+                m[1],
+            )
+            + ")."
+        ),
     ),
+    # the benchmark's methods that carry a number (the others are phrases above)
+    (r"series K=(\d+)", r"ряд, K=\1"),
+    (r"mpmath (\d+), uncertified", r"mpmath \1, без гарантии"),
+    (r"certified (\d+)", r"гарантированный \1"),
+    (r"findroot (\d+) \(printed eq\.\)", r"findroot \1 (напечатанное ур.)"),
+    (r"auto, (tol=\S+)", r"авто, \1"),
+    # a friction entry of the certified tables: the quality factor and the damping model
+    (r"(\$[^$]+\$) \(paper\)", r"\1 (модель статьи)"),
+    (r"(\$[^$]+\$) \(exact\)", r"\1 (точная модель)"),
     (r"Figure~\\ref\{([^}]*)\}", r"Рис.~\\ref{\1}"),
     (r"Table~\\ref\{([^}]*)\}", r"Таблица~\\ref{\1}"),
     (r"Section~\\ref\{([^}]*)\}", r"Раздел~\\ref{\1}"),

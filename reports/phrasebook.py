@@ -12,6 +12,8 @@ from __future__ import annotations
 
 import re
 
+from .i18n_ru import edge_shape
+
 __all__ = ["TEXTS", "PATTERNS", "lookup", "SAME_EQUATION"]
 
 #: the catalogue's verdict for a printed result that is the derived one (stated once in the report)
@@ -220,7 +222,7 @@ PATTERNS: list[tuple[re.Pattern, object]] = [
         re.compile(r"edge shape ([a-z]+-[a-z]+-[a-z]+): its first segment at t = 0\."),
         lambda m: (
             rf"Edge shape {m.group(1)}: its first segment at $t = 0$.",
-            rf"Форма границы {m.group(1)}: её первый отрезок при $t = 0$.",
+            rf"Форма границы {edge_shape(m.group(1))}: её первый отрезок при $t = 0$.",
         ),
     ),
     (
@@ -231,8 +233,8 @@ PATTERNS: list[tuple[re.Pattern, object]] = [
         lambda m: (
             rf"The printed segment is the engine's edge shape {m.group(1)}, and its "
             r"printed velocity is the time derivative of the printed angle.",
-            rf"Напечатанный отрезок --- форма границы {m.group(1)} программы, а "
-            r"напечатанная скорость --- производная напечатанного угла по времени.",
+            rf"Напечатанный отрезок совпадает с формой границы {edge_shape(m.group(1))} в "
+            r"программе, а напечатанная скорость --- производная напечатанного угла по времени.",
         ),
     ),
 ]

@@ -19,7 +19,6 @@ from ..latex import (
     ref,
     section,
     series_terms,
-    text,
 )
 from . import Context, Part
 from ._render import note
@@ -56,6 +55,8 @@ def _rows_by_label(ctx: Context) -> dict:
 
 def _paper_note(labels, by_label) -> Latex:
     """``Paper (18): agrees, see ...`` for each label present in the catalogue."""
+    from .catalogue import eq_text
+
     parts = []
     for lab in labels:
         r = by_label.get(lab)
@@ -67,15 +68,25 @@ def _paper_note(labels, by_label) -> Latex:
             else r"\textbf{" + say("differs", "расходится") + "}"
         )
         ref = f"p.~\\pageref{{cat:{_key(lab)}}}"
+        shown = eq_text(lab).raw  # as the catalogue prints it: (19), (19, centre), \S 6, n = 3
         parts.append(
             raw(
                 say(
-                    f"Paper ({text(lab).raw}): {word} (catalogue, {ref}).",
-                    f"Статья ({text(lab).raw}): {word} (каталог, с.~{ref[3:]}).",
+                    f"Paper {shown}: {word} (catalogue, {ref}).",
+                    f"Статья {shown}: {word} (каталог, с.~{ref[3:]}).",
                 )
             )
         )
     return note(*parts) if parts else Latex("")
+
+
+#: the parity of the order as a subscript (``T_-/T_0|_{n odd}``)
+_PARITY = {"odd": lambda: say("odd", "нечётное"), "even": lambda: say("even", "чётное")}
+#: the damping model named after a formula
+_DAMPING = {
+    "paper": lambda: say("paper", "модель статьи"),
+    "exact": lambda: say("exact", "точная модель"),
+}
 
 
 def _key(label: str) -> str:
@@ -126,7 +137,7 @@ def _frictionless(ctx: Context, by_label: dict) -> list[Latex]:
         for side, sym in (("lower", "-"), ("upper", "+")):
             out.append(
                 _series_display(
-                    raw(f"T_{sym}/T_0\\big|_{{n\\ \\mathrm{{{word}}}}}"),
+                    raw(f"T_{sym}/T_0\\big|_{{n\\ \\text{{{_PARITY[word]()}}}}}"),
                     d[f"{side}_T0"],
                     m,
                     ctx,
@@ -181,7 +192,7 @@ def _thresholds(ctx: Context, by_label: dict) -> list[Latex]:
     for n in THRESHOLD_ORDERS:
         for damping in ("paper", "exact"):
             ts = threshold_series(n, TERMS, damping=damping)
-            lhs = raw(f"m^{{({n})}}_{{\\min}}\\ \\text{{({damping})}}")
+            lhs = raw(f"m^{{({n})}}_{{\\min}}\\ \\text{{({_DAMPING[damping]()})}}")
             eps = sp.Symbol("epsilon")
             Qs = sp.Symbol("Q", positive=True)
             if ts.p == 1:
@@ -230,7 +241,7 @@ def _near(ctx: Context, by_label: dict) -> list[Latex]:
             es = near_threshold_edges(n, 3, damping=damping)  # Q kept as a symbol
             sc = es.scaled
             for side, sym in (("lower", "-"), ("upper", "+")):
-                lhs = raw(f"T^{{({n})}}_{sym}/T_0\\ \\text{{({damping})}}")
+                lhs = raw(f"T^{{({n})}}_{sym}/T_0\\ \\text{{({_DAMPING[damping]()})}}")
                 out.append(_series_display(lhs, sc["T0"][side], m, ctx, 4))
         out.append(
             note(
