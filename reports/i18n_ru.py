@@ -312,20 +312,21 @@ PHRASES: dict[str, str] = {
     "Width and centre for even orders, leading terms:": (
         "Ширина и центр для чётных порядков, главные члены:"
     ),
-    "With friction an interval exists only above a threshold depth m_min(Q). At the threshold the "
-    "instability indicator has a double zero in theta (a tangency); in the distinguished scaling "
-    "1/Q = lambda m^p (p = 1 for odd orders, 2 for even) both conditions are solved as series and "
-    "reverted. Both damping models:": (
+    r"With friction an interval exists only above a threshold depth $m_{\min}(Q)$. "
+    r"At the threshold the instability indicator has a double zero in $\theta$ (a "
+    r"tangency); in the distinguished scaling $1/Q = \lambda m^p$ ($p = 1$ for odd "
+    r"orders, 2 for even) both conditions are solved as series and reverted. Both "
+    r"damping models:": (
         r"С трением интервал существует лишь при глубине модуляции выше пороговой "
         r"$m_{\min}(Q)$. На пороге индикатор неустойчивости имеет двукратный нуль по $\theta$ "
         r"(касание); в выделенном масштабе $1/Q = \lambda m^p$ ($p = 1$ для нечётных порядков, 2 "
         r"для чётных) оба условия решаются в виде рядов, которые затем обращаются. Обе модели "
         r"трения:"
     ),
-    "Above the threshold the edges are series in m at fixed s = sqrt(1 - (m_min0/m)^(2p)), with "
-    "m_min0 the leading threshold; the paper's eqs. (40) and (45) are the first terms. Both "
-    "damping "
-    "models, in units of T_0:": (
+    r"Above the threshold the edges are series in $m$ at fixed "
+    r"$s = \sqrt{1 - (m_{\min,0}/m)^{2p}}$, with $m_{\min,0}$ the leading threshold; "
+    r"the paper's eqs. (40) and (45) are the first terms. Both damping models, in "
+    r"units of $T_0$:": (
         r"Выше порога границы --- ряды по $m$ при фиксированном "
         r"$s = \sqrt{1 - (m_{\min,0}/m)^{2p}}$, где $m_{\min,0}$ --- главный член порога; ур. (40) "
         r"и (45) статьи --- первые члены. Обе модели трения, в единицах $T_0$:"
@@ -395,14 +396,7 @@ PHRASES: dict[str, str] = {
     "Segments on the lower edge of the first interval": (
         "Отрезки на нижней границе первого интервала"
     ),
-    "Angle continuity at t = 0": "Непрерывность угла при $t = 0$",
-    "Momentum jump at t = 0": "Скачок момента импульса при $t = 0$",
-    "Determinant of (10)-(11)": "Определитель (10)--(11)",
     "Product-to-sum form of (12)": "(12) с произведениями, записанными как суммы",
-    "q as a function of m": "$q$ как функция $m$",
-    "Fixed-point form for Delta T (first interval)": (
-        "Форма для итераций по $\\Delta T$ (первый интервал)"
-    ),
     "Left edge of the third interval (section 3.2)": "Левая граница третьего интервала (разд. 3.2)",
     "Stationary initial condition on the lower edge (after eq. 15)": (
         "Стационарное начальное условие на нижней границе (после ур. 15)"
@@ -416,17 +410,7 @@ PHRASES: dict[str, str] = {
     "Segments on the lower edge of the second interval": (
         "Отрезки на нижней границе второго интервала"
     ),
-    "Angle continuity at t = 0 (second interval)": (
-        "Непрерывность угла при $t = 0$ (второй интервал)"
-    ),
-    "Momentum jump at t = 0 (second interval)": (
-        "Скачок момента импульса при $t = 0$ (второй интервал)"
-    ),
-    "Determinant of (22)-(23)": "Определитель (22)--(23)",
     "Product-to-sum form of (24)": "(24) с произведениями, записанными как суммы",
-    "Fixed-point form for Delta T (second interval)": (
-        "Форма для итераций по $\\Delta T$ (второй интервал)"
-    ),
     "Stationary initial condition on the lower edge of the second interval": (
         "Стационарное начальное условие на нижней границе второго интервала"
     ),
@@ -435,7 +419,6 @@ PHRASES: dict[str, str] = {
     "Periodicity conditions, odd orders with friction": (
         "Условия периодичности, нечётные порядки с трением"
     ),
-    "Homogeneous system for A, B": "Однородная система для $A$, $B$",
     "Notation C_i, S_i": "Обозначения $C_i$, $S_i$",
     "Determinant of (32)": "Определитель (32)",
     "Product to sum": "Произведения как суммы",

@@ -23,6 +23,47 @@ SAME_EQUATION = (
 )
 
 TEXTS: dict[str, tuple[str, str]] = {
+    # the catalogue's titles that name a formula
+    "Angle continuity at t = 0": (
+        "Angle continuity at $t = 0$",
+        "Непрерывность угла при $t = 0$",
+    ),
+    "Momentum jump at t = 0": (
+        "Momentum jump at $t = 0$",
+        "Скачок момента импульса при $t = 0$",
+    ),
+    "Determinant of (10)-(11)": (
+        "Determinant of (10)--(11)",
+        "Определитель (10)--(11)",
+    ),
+    "q as a function of m": (
+        "$q$ as a function of $m$",
+        "$q$ как функция $m$",
+    ),
+    "Fixed-point form for Delta T (first interval)": (
+        "Fixed-point form for $\\Delta T$ (first interval)",
+        "Форма для итераций по $\\Delta T$ (первый интервал)",
+    ),
+    "Angle continuity at t = 0 (second interval)": (
+        "Angle continuity at $t = 0$ (second interval)",
+        "Непрерывность угла при $t = 0$ (второй интервал)",
+    ),
+    "Momentum jump at t = 0 (second interval)": (
+        "Momentum jump at $t = 0$ (second interval)",
+        "Скачок момента импульса при $t = 0$ (второй интервал)",
+    ),
+    "Determinant of (22)-(23)": (
+        "Determinant of (22)--(23)",
+        "Определитель (22)--(23)",
+    ),
+    "Fixed-point form for Delta T (second interval)": (
+        "Fixed-point form for $\\Delta T$ (second interval)",
+        "Форма для итераций по $\\Delta T$ (второй интервал)",
+    ),
+    "Homogeneous system for A, B": (
+        "Homogeneous system for $A$, $B$",
+        "Однородная система для $A$, $B$",
+    ),
     "product of the half-period maps and the jumps.": (
         "The product of the half-period maps and the jumps.",
         "Произведение отображений за полупериоды и скачков.",

@@ -12,9 +12,9 @@ from ..latex import (
     equation_lines,
     inline,
     math,
+    mixed,
     pack,
     paragraph,
-    prose,
     raw,
     ref,
     section,
@@ -82,6 +82,15 @@ def _paper_note(labels, by_label) -> Latex:
 
 #: the parity of the order as a subscript (``T_-/T_0|_{n odd}``)
 _PARITY = {"odd": lambda: say("odd", "нечётное"), "even": lambda: say("even", "чётное")}
+#: the engine's leading threshold ``m_min0`` as the report writes it
+_MMIN0 = sp.Symbol(r"m_{\min,0}", positive=True)
+
+
+def _shown_mmin0(expr):
+    """``expr`` with the engine's symbol ``m_min0`` written as :data:`_MMIN0`."""
+    return expr.subs({x: _MMIN0 for x in expr.free_symbols if x.name == "m_min0"})
+
+
 #: the damping model named after a formula
 _DAMPING = {
     "paper": lambda: say("paper", "модель статьи"),
@@ -179,12 +188,12 @@ def _thresholds(ctx: Context, by_label: dict) -> list[Latex]:
     out = [
         section("Thresholds with friction", "sec:thresholds", level=1),
         paragraph(
-            prose(
-                "With friction an interval exists only above a threshold depth m_min(Q). At the "
-                "threshold the instability indicator has a double zero in theta (a tangency); in "
-                "the "
-                "distinguished scaling 1/Q = lambda m^p (p = 1 for odd orders, 2 for even) both "
-                "conditions are solved as series and reverted. Both damping models:"
+            mixed(
+                r"With friction an interval exists only above a threshold depth $m_{\min}(Q)$. "
+                r"At the threshold the instability indicator has a double zero in $\theta$ (a "
+                r"tangency); in the distinguished scaling $1/Q = \lambda m^p$ ($p = 1$ for odd "
+                r"orders, 2 for even) both conditions are solved as series and reverted. Both "
+                r"damping models:"
             )
         ),
     ]
@@ -227,12 +236,11 @@ def _near(ctx: Context, by_label: dict) -> list[Latex]:
     out = [
         section("Edges above the threshold", "sec:near-threshold", level=1),
         paragraph(
-            prose(
-                "Above the threshold the edges are series in m at fixed s = sqrt(1 - "
-                "(m_min0/m)^(2p)), "
-                "with m_min0 the leading threshold; the paper's eqs. (40) and (45) are the first "
-                "terms. "
-                "Both damping models, in units of T_0:"
+            mixed(
+                r"Above the threshold the edges are series in $m$ at fixed "
+                r"$s = \sqrt{1 - (m_{\min,0}/m)^{2p}}$, with $m_{\min,0}$ the leading threshold; "
+                r"the paper's eqs. (40) and (45) are the first terms. Both damping models, in "
+                r"units of $T_0$:"
             )
         ),
     ]
@@ -246,9 +254,9 @@ def _near(ctx: Context, by_label: dict) -> list[Latex]:
         out.append(
             note(
                 say("Here", "Здесь"),
-                inline(math(sc["s"], ctx.config)),
+                inline(math(_shown_mmin0(sc["s"]), ctx.config)),
                 "with",
-                inline(math(sp.Eq(sp.Symbol("m_min0"), es.threshold["m_min_leading"]), ctx.config)),
+                inline(math(sp.Eq(_MMIN0, es.threshold["m_min_leading"]), ctx.config)),
                 ".",
                 _paper_note(PAPER_NEAR.get(n, ()), by_label),
             )
