@@ -20,7 +20,7 @@ from matplotlib.figure import Figure
 
 from . import figures
 from .figures import FORMATS, new_figure, style
-from .i18n import say
+from .i18n import say, tr
 
 __all__ = ["FAMILY_STYLE", "FORMATS", "pareto_figure", "save_figure"]
 
@@ -38,6 +38,9 @@ FAMILY_STYLE = {
     "auto": ("P", "#000000"),
 }
 
+#: the height of one row of the legend under the panels, in inches
+LEGEND_IN = 0.15
+
 #: errors at or below this are drawn at it (the reference's resolution)
 FLOOR = 1e-58
 
@@ -47,7 +50,7 @@ def pareto_figure(panels: Sequence[tuple[str, Sequence[dict]]], *, subtitle: str
     ``seconds`` (per edge), ``error`` and ``front`` (as :func:`reports.benchmark.pareto`
     returns)."""
     with style():
-        fig, axes = new_figure(height=3.6, ncols=len(panels), sharey=True)
+        fig, axes = new_figure(height=3.9, ncols=len(panels), sharey=True)
         axes = axes if isinstance(axes, tuple) else (axes,)
         top = max([1.0] + [float(p["error"]) for _, pts in panels for p in pts])
         for ax, (title, points) in zip(axes, panels, strict=True):
@@ -55,7 +58,7 @@ def pareto_figure(panels: Sequence[tuple[str, Sequence[dict]]], *, subtitle: str
             for p in points:
                 marker, colour = FAMILY_STYLE.get(p["family"], ("o", "0.3"))
                 err = max(float(p["error"]), FLOOR)
-                label = p["family"] if p["family"] not in seen else None
+                label = tr(p["family"]) if p["family"] not in seen else None
                 seen.add(p["family"])
                 ax.loglog(
                     [p["seconds"]],
@@ -107,11 +110,21 @@ def pareto_figure(panels: Sequence[tuple[str, Sequence[dict]]], *, subtitle: str
         for ax in axes:
             for h, lab in zip(*ax.get_legend_handles_labels(), strict=True):
                 handles.setdefault(lab, h)
-        if handles:
-            axes[-1].legend(handles.values(), handles.keys(), loc="upper right", fontsize=6, ncol=2)
+        bottom = 0.0
+        if handles:  # under the panels, where it covers no point and no label
+            fig.legend(
+                handles.values(),
+                handles.keys(),
+                loc="lower center",
+                bbox_to_anchor=(0.5, 0.0),
+                fontsize=6,
+                ncol=min(len(handles), 4),
+                frameon=False,
+            )
+            bottom = LEGEND_IN * ((len(handles) + 3) // 4) / fig.get_figheight()
         if subtitle:
             fig.suptitle(subtitle, fontsize=7)
-        fig.tight_layout(pad=0.4)
+        fig.tight_layout(pad=0.4, rect=(0, bottom, 1, 1))
     return fig
 
 
@@ -124,7 +137,7 @@ def _front_labels(front, xs, ys):
         j = k
         while j + 1 < len(front) and front[j + 1]["family"] == front[k]["family"]:
             j += 1
-        first, last = front[k]["method"], front[j]["method"]
+        first, last = tr(front[k]["method"]), front[j]["method"]
         if j == k:
             text = first
         else:

@@ -10,7 +10,22 @@ from __future__ import annotations
 
 import re
 
-__all__ = ["PHRASES", "PATTERNS"]
+__all__ = ["PHRASES", "PATTERNS", "EDGE_SHAPES", "edge_shape"]
+
+#: the engine's names of the four symmetric edge shapes (``analytic.stitching.EdgeKind``) as the
+#: Russian text calls them: the functions on the bob-down and the bob-up half, and the orders
+EDGE_SHAPES: dict[str, tuple[str, str]] = {
+    "odd-cos-sin": ("cos--sin", "нечётные порядки"),
+    "odd-sin-cos": ("sin--cos", "нечётные порядки"),
+    "even-cos-cos": ("cos--cos", "чётные порядки"),
+    "even-sin-sin": ("sin--sin", "чётные порядки"),
+}
+
+
+def edge_shape(name: str) -> str:
+    """The Russian name of the edge shape ``name``: ``"odd-cos-sin"`` -> ``"cos--sin"``."""
+    return EDGE_SHAPES[name][0] if name in EDGE_SHAPES else name
+
 
 PHRASES: dict[str, str] = {
     # section titles
@@ -52,10 +67,6 @@ PHRASES: dict[str, str] = {
     "General order": "Произвольный порядок",
     "Speed against error": "Скорость и погрешность",
     "Time-domain pictures": "Моделирование во времени",
-    "Edge shape odd-cos-sin": "Форма границы odd-cos-sin",
-    "Edge shape odd-sin-cos": "Форма границы odd-sin-cos",
-    "Edge shape even-cos-cos": "Форма границы even-cos-cos",
-    "Edge shape even-sin-sin": "Форма границы even-sin-sin",
     # table headers and short words
     "half": "полупериод",
     "bob down": "груз опущен",
@@ -301,20 +312,21 @@ PHRASES: dict[str, str] = {
     "Width and centre for even orders, leading terms:": (
         "Ширина и центр для чётных порядков, главные члены:"
     ),
-    "With friction an interval exists only above a threshold depth m_min(Q). At the threshold the "
-    "instability indicator has a double zero in theta (a tangency); in the distinguished scaling "
-    "1/Q = lambda m^p (p = 1 for odd orders, 2 for even) both conditions are solved as series and "
-    "reverted. Both damping models:": (
+    r"With friction an interval exists only above a threshold depth $m_{\min}(Q)$. "
+    r"At the threshold the instability indicator has a double zero in $\theta$ (a "
+    r"tangency); in the distinguished scaling $1/Q = \lambda m^p$ ($p = 1$ for odd "
+    r"orders, 2 for even) both conditions are solved as series and reverted. Both "
+    r"damping models:": (
         r"С трением интервал существует лишь при глубине модуляции выше пороговой "
         r"$m_{\min}(Q)$. На пороге индикатор неустойчивости имеет двукратный нуль по $\theta$ "
         r"(касание); в выделенном масштабе $1/Q = \lambda m^p$ ($p = 1$ для нечётных порядков, 2 "
         r"для чётных) оба условия решаются в виде рядов, которые затем обращаются. Обе модели "
         r"трения:"
     ),
-    "Above the threshold the edges are series in m at fixed s = sqrt(1 - (m_min0/m)^(2p)), with "
-    "m_min0 the leading threshold; the paper's eqs. (40) and (45) are the first terms. Both "
-    "damping "
-    "models, in units of T_0:": (
+    r"Above the threshold the edges are series in $m$ at fixed "
+    r"$s = \sqrt{1 - (m_{\min,0}/m)^{2p}}$, with $m_{\min,0}$ the leading threshold; "
+    r"the paper's eqs. (40) and (45) are the first terms. Both damping models, in "
+    r"units of $T_0$:": (
         r"Выше порога границы --- ряды по $m$ при фиксированном "
         r"$s = \sqrt{1 - (m_{\min,0}/m)^{2p}}$, где $m_{\min,0}$ --- главный член порога; ур. (40) "
         r"и (45) статьи --- первые члены. Обе модели трения, в единицах $T_0$:"
@@ -384,14 +396,7 @@ PHRASES: dict[str, str] = {
     "Segments on the lower edge of the first interval": (
         "Отрезки на нижней границе первого интервала"
     ),
-    "Angle continuity at t = 0": "Непрерывность угла при $t = 0$",
-    "Momentum jump at t = 0": "Скачок момента импульса при $t = 0$",
-    "Determinant of (10)-(11)": "Определитель (10)--(11)",
     "Product-to-sum form of (12)": "(12) с произведениями, записанными как суммы",
-    "q as a function of m": "$q$ как функция $m$",
-    "Fixed-point form for Delta T (first interval)": (
-        "Форма для итераций по $\\Delta T$ (первый интервал)"
-    ),
     "Left edge of the third interval (section 3.2)": "Левая граница третьего интервала (разд. 3.2)",
     "Stationary initial condition on the lower edge (after eq. 15)": (
         "Стационарное начальное условие на нижней границе (после ур. 15)"
@@ -405,17 +410,7 @@ PHRASES: dict[str, str] = {
     "Segments on the lower edge of the second interval": (
         "Отрезки на нижней границе второго интервала"
     ),
-    "Angle continuity at t = 0 (second interval)": (
-        "Непрерывность угла при $t = 0$ (второй интервал)"
-    ),
-    "Momentum jump at t = 0 (second interval)": (
-        "Скачок момента импульса при $t = 0$ (второй интервал)"
-    ),
-    "Determinant of (22)-(23)": "Определитель (22)--(23)",
     "Product-to-sum form of (24)": "(24) с произведениями, записанными как суммы",
-    "Fixed-point form for Delta T (second interval)": (
-        "Форма для итераций по $\\Delta T$ (второй интервал)"
-    ),
     "Stationary initial condition on the lower edge of the second interval": (
         "Стационарное начальное условие на нижней границе второго интервала"
     ),
@@ -424,7 +419,6 @@ PHRASES: dict[str, str] = {
     "Periodicity conditions, odd orders with friction": (
         "Условия периодичности, нечётные порядки с трением"
     ),
-    "Homogeneous system for A, B": "Однородная система для $A$, $B$",
     "Notation C_i, S_i": "Обозначения $C_i$, $S_i$",
     "Determinant of (32)": "Определитель (32)",
     "Product to sum": "Произведения как суммы",
@@ -479,12 +473,12 @@ PHRASES: dict[str, str] = {
     "Section": "раздел",
     "Table": "таблица",
     "The intervals of order": "Интервалы порядка",
-    "pinch to zero width at the closings of": "стягиваются в точку в смыканиях из",
+    "pinch to zero width at the closings of": "стягиваются в точку в смыканиях, см.",
     "(dots, labelled": "(точки с подписью",
     "); within the figure these are the ratios": "); на рисунке это отношения",
     ". The paper names 2:1, 3:1 and 3:2.": ". Статья называет 2:1, 3:1 и 3:2.",
-    "compares the series of": "сравнивает ряды из",
-    "truncated after the powers": "оборванные после степеней",
+    "compares the series of": "сравнивает ряды (см.",
+    "truncated after the powers": "), оборванные после степеней",
     "with the certified lower edges (40 proven digits). The error falls off as the first "
     "neglected power: the fitted slopes at the smallest depths are": (
         "с гарантированными нижними границами (40 доказанных знаков). Погрешность убывает как "
@@ -636,7 +630,7 @@ PHRASES: dict[str, str] = {
     ),
     # the expansions, thresholds and accuracy sections
     "by Newton steps on exact power series, then": (
-        "шагами Ньютона над точными степенными рядами, затем"
+        "находится шагами Ньютона над точными степенными рядами, затем"
     ),
     "with the parameters expanded from their definitions; through": (
         "с параметрами, разложенными из их определений; до"
@@ -691,7 +685,49 @@ PHRASES: dict[str, str] = {
         "(возведённое в квадрат) уравнение (44) --- необращающееся в нуль кратное (26); ссылка "
         "верна."
     ),
+    # words set upright inside formulas (see reports.latex.notation)
+    "at": "при",
+    "centre": "центр",
+    # the expansions section
+    "; in units of": "; в единицах",
+    "), solved for": "); корень",
+    "no order computed": "порядок не вычислен",
+    "so that": "так что",
+    "from": "от",
+    "in place of": "вместо",
+    # the stitching section's proven links
+    "det M, paper model": "det M, модель статьи",
+    "det M, exact model": "det M, точная модель",
+    "normal form": "нормальная форма",
+    # the family's systems (the engine's names) as the figure titles them
+    "pendulum": "маятник",
+    "torsion": "крутильный маятник",
+    "meissner": "уравнение Мейснера",
+    # the tables of closings and of the Floquet cross-check
+    "$T/T_0$ exact": "$T/T_0$ точно",
+    "$T/T_0$ (certified digits)": "$T/T_0$ (гарантированные цифры)",
+    "at $T_-$": "при $T_-$",
+    "at $T_+$": "при $T_+$",
+    "equations solved": "решаемые уравнения",
+    # the benchmark: the panels, the families of methods and the methods without a number
+    "all scenes": "все сцены",
+    "series": "ряды",
+    "fixed point": "итерации статьи",
+    "double": "двойная точность",
+    "grid": "сетка",
+    "certified": "гарантированный",
+    "auto": "авто",
+    "fixed point (paper)": "итерации статьи",
+    "double, per point": "двойная точность, в точке",
+    "numpy grid": "сетка numpy",
 }
+
+PHRASES.update(
+    {
+        f"Edge shape {name}": f"Форма границы {fn} ({orders})"
+        for name, (fn, orders) in EDGE_SHAPES.items()
+    }
+)
 
 PATTERNS: list[tuple[str, object]] = [
     (
@@ -732,8 +768,25 @@ PATTERNS: list[tuple[str, object]] = [
     ),
     (
         r"Measured by paramres bench \((.*)\)\.",
-        r"Измерено командой paramres bench (\1).",
+        lambda m: (
+            "Измерено командой paramres bench ("
+            + re.sub(
+                r"\b(cpu|cores|system) ",
+                lambda k: {"cpu": "процессор ", "cores": "ядер ", "system": "система "}[k[1]],
+                m[1],
+            )
+            + ")."
+        ),
     ),
+    # the benchmark's methods that carry a number (the others are phrases above)
+    (r"series K=(\d+)", r"ряд, K=\1"),
+    (r"mpmath (\d+), uncertified", r"mpmath \1, без гарантии"),
+    (r"certified (\d+)", r"гарантированный \1"),
+    (r"findroot (\d+) \(printed eq\.\)", r"findroot \1 (напечатанное ур.)"),
+    (r"auto, (tol=\S+)", r"авто, \1"),
+    # a friction entry of the certified tables: the quality factor and the damping model
+    (r"(\$[^$]+\$) \(paper\)", r"\1 (модель статьи)"),
+    (r"(\$[^$]+\$) \(exact\)", r"\1 (точная модель)"),
     (r"Figure~\\ref\{([^}]*)\}", r"Рис.~\\ref{\1}"),
     (r"Table~\\ref\{([^}]*)\}", r"Таблица~\\ref{\1}"),
     (r"Section~\\ref\{([^}]*)\}", r"Раздел~\\ref{\1}"),

@@ -12,6 +12,8 @@ from __future__ import annotations
 
 import re
 
+from .i18n_ru import edge_shape
+
 __all__ = ["TEXTS", "PATTERNS", "lookup", "SAME_EQUATION"]
 
 #: the catalogue's verdict for a printed result that is the derived one (stated once in the report)
@@ -21,6 +23,47 @@ SAME_EQUATION = (
 )
 
 TEXTS: dict[str, tuple[str, str]] = {
+    # the catalogue's titles that name a formula
+    "Angle continuity at t = 0": (
+        "Angle continuity at $t = 0$",
+        "Непрерывность угла при $t = 0$",
+    ),
+    "Momentum jump at t = 0": (
+        "Momentum jump at $t = 0$",
+        "Скачок момента импульса при $t = 0$",
+    ),
+    "Determinant of (10)-(11)": (
+        "Determinant of (10)--(11)",
+        "Определитель (10)--(11)",
+    ),
+    "q as a function of m": (
+        "$q$ as a function of $m$",
+        "$q$ как функция $m$",
+    ),
+    "Fixed-point form for Delta T (first interval)": (
+        "Fixed-point form for $\\Delta T$ (first interval)",
+        "Форма для итераций по $\\Delta T$ (первый интервал)",
+    ),
+    "Angle continuity at t = 0 (second interval)": (
+        "Angle continuity at $t = 0$ (second interval)",
+        "Непрерывность угла при $t = 0$ (второй интервал)",
+    ),
+    "Momentum jump at t = 0 (second interval)": (
+        "Momentum jump at $t = 0$ (second interval)",
+        "Скачок момента импульса при $t = 0$ (второй интервал)",
+    ),
+    "Determinant of (22)-(23)": (
+        "Determinant of (22)--(23)",
+        "Определитель (22)--(23)",
+    ),
+    "Fixed-point form for Delta T (second interval)": (
+        "Fixed-point form for $\\Delta T$ (second interval)",
+        "Форма для итераций по $\\Delta T$ (второй интервал)",
+    ),
+    "Homogeneous system for A, B": (
+        "Homogeneous system for $A$, $B$",
+        "Однородная система для $A$, $B$",
+    ),
     "product of the half-period maps and the jumps.": (
         "The product of the half-period maps and the jumps.",
         "Произведение отображений за полупериоды и скачков.",
@@ -220,7 +263,7 @@ PATTERNS: list[tuple[re.Pattern, object]] = [
         re.compile(r"edge shape ([a-z]+-[a-z]+-[a-z]+): its first segment at t = 0\."),
         lambda m: (
             rf"Edge shape {m.group(1)}: its first segment at $t = 0$.",
-            rf"Форма границы {m.group(1)}: её первый отрезок при $t = 0$.",
+            rf"Форма границы {edge_shape(m.group(1))}: её первый отрезок при $t = 0$.",
         ),
     ),
     (
@@ -231,8 +274,8 @@ PATTERNS: list[tuple[re.Pattern, object]] = [
         lambda m: (
             rf"The printed segment is the engine's edge shape {m.group(1)}, and its "
             r"printed velocity is the time derivative of the printed angle.",
-            rf"Напечатанный отрезок --- форма границы {m.group(1)} программы, а "
-            r"напечатанная скорость --- производная напечатанного угла по времени.",
+            rf"Напечатанный отрезок совпадает с формой границы {edge_shape(m.group(1))} в "
+            r"программе, а напечатанная скорость --- производная напечатанного угла по времени.",
         ),
     ),
 ]

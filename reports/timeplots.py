@@ -54,6 +54,8 @@ HALF_COLOURS = {1: "#0072B2", 2: "#D55E00"}
 JUMP_COLOUR = "0.45"
 #: the level |phi| = pi and the moment a nonlinear run passes it (goes over the top)
 ROTATION_COLOUR = "#CC79A7"
+#: the height of one more line of a run's title (7.5 pt type), in inches
+TITLE_LINE_IN = 0.13
 
 
 @dataclass(frozen=True)
@@ -123,6 +125,11 @@ def _new(width: float, height: float) -> Figure:
 
 
 def _label(sim) -> str:
+    return ", ".join(_label_parts(sim))
+
+
+def _label_parts(sim) -> list[str]:
+    """The run's parameters (in one formula), its edge, its friction, as separate phrases."""
     import mpmath
 
     with mpmath.workdps(sim.digits):
@@ -142,7 +149,27 @@ def _label(sim) -> str:
         parts.append(f"$Q = {sim.Q}$ ({model})")
     if sim.nonlinear:
         parts.append(say("nonlinear", "нелинейный"))
-    return ", ".join(parts)
+    return parts
+
+
+def _sci(x: float) -> str:
+    """``1.6e-40`` as mathematics, ``$1.6\\cdot 10^{-40}$``."""
+    mant, _, exp = f"{x:.1e}".partition("e")
+    return "$0$" if x == 0 else f"${mant}\\cdot 10^{{{int(exp)}}}$"
+
+
+def _fitting_title(ax, candidates: list[list[str]], **kw) -> int:
+    """Title ``ax`` with the first candidate (a list of lines) that ends inside the figure, or the
+    last one if none does (the lines of the candidates are shorter and shorter); the number of
+    lines used."""
+    fig = ax.figure
+    renderer = fig.canvas.get_renderer()
+    for lines in candidates:
+        lines = [x for x in lines if x]
+        title = ax.set_title("\n".join(lines), **kw)
+        if title.get_window_extent(renderer).x1 <= fig.bbox.x1 - 2:
+            break
+    return len(lines)
 
 
 def _check_finite(sim) -> None:
@@ -183,7 +210,10 @@ def _mark_rotation(ax_phase, ax_angle, sim) -> None:
         ms=5,
         color=ROTATION_COLOUR,
         ls="none",
-        label=rf"over the top ($|\varphi| = \pi$) at $t/T_0 = {t:.3g}$: it rotates",
+        label=say(
+            rf"over the top ($|\varphi| = \pi$) at $t/T_0 = {t:.3g}$: it rotates",
+            rf"переход через верх ($|\varphi| = \pi$) при $t/T_0 = {t:.3g}$: вращение",
+        ),
     )
     ax_angle.legend(fontsize=6.5, loc="upper left")
 
@@ -247,10 +277,11 @@ def draw_run(ax_phase, ax_vel, ax_angle, sim, *, numbered: int = 8) -> None:
     for k, t, _, dphi in points:
         ax_vel.plot([t], [dphi], "o", ms=2.2, color="k")
         ax_vel.annotate(str(k), (t, dphi), textcoords="offset points", xytext=(3, 3), fontsize=7)
-    ax_phase.set_xlabel(r"$\varphi$ (rad)")
-    ax_phase.set_ylabel(r"$\dot\varphi$ (rad$/T_0$)")
-    ax_vel.set_ylabel(r"$\dot\varphi$ (rad$/T_0$)")
-    ax_angle.set_ylabel(r"$\varphi$ (rad)")
+    rad = say("rad", "рад")
+    ax_phase.set_xlabel(rf"$\varphi$ ({rad})")
+    ax_phase.set_ylabel(rf"$\dot\varphi$ ({rad}$/T_0$)")
+    ax_vel.set_ylabel(rf"$\dot\varphi$ ({rad}$/T_0$)")
+    ax_angle.set_ylabel(rf"$\varphi$ ({rad})")
     ax_angle.set_xlabel(r"$t/T_0$")
     _mark_rotation(ax_phase, ax_angle, sim)
 
@@ -268,6 +299,7 @@ def time_figure(
         fig = _new(TEXT_WIDTH_IN, height)
         top = 1 - (0.45 + (0.3 if title else 0)) / height  # room for the titles, in inches
         ratios = [3.0] * rows + ([extra] if envelope else [])
+        first_row_moved = False
         outer = fig.add_gridspec(
             len(ratios), 1, hspace=0.42, top=top, bottom=0.45 / height, height_ratios=ratios
         )
@@ -281,7 +313,7 @@ def time_figure(
             note = []
             if sim.closure_error is not None:
                 after = "2T" if sim.closure_periods == 2 else "T"
-                closure = f"{float(sim.closure_error):.1e}"
+                closure = _sci(float(sim.closure_error))
                 note.append(
                     say(f"closure after ${after}$: ", f"невязка через ${after}$: ") + closure
                 )
@@ -292,9 +324,25 @@ def time_figure(
             elif sim.nonlinear:
                 peak = f"{sim.peak_amplitude:.3g}"
                 note.append(say(f"peak amplitude {peak} rad", f"наибольший размах {peak} рад"))
-            ax_vel.set_title(_label(sim) + "\n" + "; ".join(note), fontsize=7.5, loc="left")
+            head = _label_parts(sim)
+            lines = _fitting_title(
+                ax_vel,
+                [
+                    [", ".join(head), "; ".join(note)],
+                    [head[0], ", ".join(head[1:]), "; ".join(note)],
+                    [head[0], ", ".join(head[1:]), *note],
+                ],
+                fontsize=7.5,
+                loc="left",
+            )
+            if r == 0 and lines > 2:  # room above the first row for the longer title
+                outer.update(top=top - TITLE_LINE_IN * (lines - 2) / height)
+                first_row_moved = True
         if envelope:
             _draw_envelope(fig.add_subplot(outer[rows]), sims, [_label(s) for s in sims])
+        if first_row_moved:
+            for ax in fig.axes:
+                ax.set_position(ax.get_subplotspec().get_position(fig))
         if title:
             fig.suptitle(title, fontsize=9)
     return fig

@@ -251,7 +251,34 @@ KNOWN_ENGLISH = (
     "the number is the midpoint of a ball",
     "the reference should be (15), not (14)",
     "The angular momentum",
+    # the speed table's methods, the Floquet table's header, the edge shapes' names, the
+    # expansions' units and the notes of the stitching section
+    "series K=",
+    "fixed point (paper)",
+    "per point",
+    "uncertified",
+    "printed eq.",
+    "equations solved",
+    "certified digits",
+    "odd-cos-sin",
+    "odd-sin-cos",
+    "even-cos-cos",
+    "even-sin-sin",
+    "in units of",
+    "solved for",
+    "det M, paper model",
+    "normal form",
 )
+
+#: English words set upright inside formulas that the English report has (so the check below
+#: looks at words that do occur)
+ENGLISH_IN_FORMULAS = ("at", "paper", "exact", "odd", "even", "centre", "stitching system")
+
+
+def _upright_words(tex: str) -> list[str]:
+    """The contents of ``\\text{...}`` and ``\\mathrm{...}`` in the document's formulas."""
+    body = tex.split(r"\begin{document}", 1)[1]
+    return re.findall(r"\\(?:text|mathrm)\{([^{}]*)\}", body)
 
 
 #: four English words in a row (separated by spaces or punctuation, not by mathematics)
@@ -278,6 +305,20 @@ def test_the_russian_report_has_no_english_sentence(reports):
     # and the English report does say them (so the check looks at the right text)
     en_prose = re.sub(r"\s+", " ", _prose(_tex(reports, "en")))
     assert all(k in en_prose for k in ("row by row up to sign", "so two conditions remain"))
+    assert all(k in en_prose for k in ("series K=", "equations solved", "in units of"))
+
+
+@pytest.mark.parametrize("lang", ["en", "ru"])
+def test_words_inside_formulas(reports, lang):
+    # the words set upright inside formulas (``at T = T_av/2``, ``(paper)``, ``n odd``,
+    # ``centre``) are translated like the prose
+    words = _upright_words(_tex(reports, lang))
+    english = [w for w in words if re.search(r"[A-Za-z]{2,}", w)]
+    if lang == "en":  # the check looks at words that do occur
+        found = {w.strip(" ()") for w in english}
+        assert set(ENGLISH_IN_FORMULAS) <= found, set(ENGLISH_IN_FORMULAS) - found
+    else:
+        assert not english, english
 
 
 def test_bad_language_is_refused(tmp_path, capsys):

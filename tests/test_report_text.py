@@ -3,6 +3,8 @@ typeset statements, equation labels, broken long formulas, slashed fractions, sh
 
 from __future__ import annotations
 
+import re
+
 import pytest
 import sympy as sp
 
@@ -95,3 +97,67 @@ def test_short_captions_for_the_lists():
     # a period inside mathematics or after "Fig" does not end the sentence
     src = r"The paper's Fig.~1 redrawn: $a. b$ stays whole, and so on. " + "x" * 80
     assert short_caption(src) == r"The paper's Fig.~1 redrawn: $a. b$ stays whole, and so on."
+
+
+def _figure_texts(fig) -> list:
+    from matplotlib.text import Text
+
+    return [t for t in fig.findobj(Text) if t.get_visible() and t.get_text().strip()]
+
+
+#: one point per method of ``paramres bench`` (the names as reports/benchmark.py gives them)
+SPEED_POINTS = [
+    {"method": "series K=1", "family": "series", "seconds": 1e-6, "error": 1e-2, "front": True},
+    {"method": "series K=2", "family": "series", "seconds": 2e-6, "error": 1e-4, "front": True},
+    {"method": "fixed point (paper)", "family": "fixed point", "seconds": 1e-4, "error": 1e-9},
+    {"method": "double, per point", "family": "double", "seconds": 1e-5, "error": 1e-15},
+    {"method": "numpy grid", "family": "grid", "seconds": 3e-6, "error": 1e-15, "front": True},
+    {"method": "mpmath 30, uncertified", "family": "mpmath", "seconds": 4e-4, "error": 1e-29},
+    {
+        "method": "certified 30",
+        "family": "certified",
+        "seconds": 1e-4,
+        "error": 1e-30,
+        "front": True,
+    },
+    {
+        "method": "certified 50",
+        "family": "certified",
+        "seconds": 2e-4,
+        "error": 1e-50,
+        "front": True,
+    },
+    {"method": "findroot 30 (printed eq.)", "family": "findroot", "seconds": 1e-3, "error": 1e-29},
+    {"method": "auto, tol=1e-8", "family": "auto", "seconds": 5e-5, "error": 1e-11},
+]
+
+
+def test_the_russian_speed_figure_has_no_english_words():
+    # panel titles, legend and the labels of the Pareto front: only the names of libraries and
+    # functions (mpmath, numpy, findroot) stay as they are
+    from reports.benchplots import pareto_figure
+
+    with language("ru"):
+        fig = pareto_figure([(tr("all scenes"), SPEED_POINTS), ("$m \\leq 0.01$", SPEED_POINTS)])
+    shown = " ".join(t.get_text() for t in _figure_texts(fig))
+    words = set(re.findall(r"[A-Za-z]{4,}", re.sub(r"\$[^$]*\$", " ", shown)))
+    assert words <= {"mpmath", "numpy", "findroot"}, words
+    assert "гарантированный" in shown and "ряд, K=1" in shown
+
+
+@pytest.mark.parametrize("lang", ["en", "ru"])
+def test_time_figure_titles_end_inside_the_figure(lang):
+    # the paper's Fig. 9 has the longest titles (an edge, friction and its model); in Russian
+    # they need a third line, which must not push the first title out at the top either
+    from reports.timeplots import paper_figure
+
+    with language(lang):
+        fig = paper_figure(9)
+    renderer = fig.canvas.get_renderer()
+    titles = [t for t in _figure_texts(fig) if t.get_text().startswith("$n = ")]
+    assert titles
+    for t in titles:
+        box = t.get_window_extent(renderer)
+        assert box.x1 <= fig.bbox.x1 and box.y1 <= fig.bbox.y1, (t.get_text(), box)
+    if lang == "ru":
+        assert "рад" in " ".join(t.get_text() for t in _figure_texts(fig))

@@ -8,6 +8,7 @@ import re
 
 import sympy
 
+from ..i18n import current, tr
 from .config import DEFAULT, Config
 from .fragment import Latex
 
@@ -26,13 +27,27 @@ def math(expr, config: Config = DEFAULT, **settings) -> Latex:
 _ONE_PLUS_M = re.compile(r"(\\left\(|\\sqrt\{|\{|\()m \+ 1(?=\\right\)|\}|\))")
 
 
+#: a word set upright inside mathematics (``\\text{at }``, ``\\mathrm{odd}``)
+_WORD_IN_MATH = re.compile(r"\\(text|mathrm)\{([^{}$\\]*[A-Za-z]{2}[^{}$\\]*)\}")
+
+
 def notation(src: str) -> str:
-    """The report's notation in sympy's LaTeX: ``1 + m`` (as in ``l_0(1 + m)``), not ``m + 1``.
+    """The report's notation in sympy's LaTeX: ``1 + m`` (as in ``l_0(1 + m)``), not ``m + 1``;
+    words set upright in the formula (``\\text{at }``) in the language being built.
 
     >>> notation(r"\\left(m + 1\\right)^{2} \\sqrt{m + 1}")
     '\\\\left(1 + m\\\\right)^{2} \\\\sqrt{1 + m}'
     """
-    return _ONE_PLUS_M.sub(lambda mt: mt.group(1) + "1 + m", src)
+    src = _ONE_PLUS_M.sub(lambda mt: mt.group(1) + "1 + m", src)
+    if current() != "en":
+        src = _WORD_IN_MATH.sub(_word_in_math, src)
+    return src
+
+
+def _word_in_math(mt: re.Match) -> str:
+    said = tr(mt.group(2))
+    # a translated word is set as text (math fonts have no Cyrillic)
+    return f"\\text{{{said}}}" if said != mt.group(2) else mt.group(0)
 
 
 def slashed(expr, config: Config = DEFAULT, **settings) -> Latex:

@@ -103,8 +103,14 @@ def build(ctx: Context) -> Part:
         d["mi"],
         island_panels,
         marks=[
-            (PAPER_ISLAND_CLAIM[0], "paper: vanishes above 48%"),
-            (PAPER_ISLAND_CLAIM[1], "paper: returns above 66%"),
+            (
+                PAPER_ISLAND_CLAIM[0],
+                say("paper: vanishes above 48%", "статья: исчезает выше 48%"),
+            ),
+            (
+                PAPER_ISLAND_CLAIM[1],
+                say("paper: returns above 66%", "статья: вновь выше 66%"),
+            ),
         ],
         reference=d["island"]["none"],
     )

@@ -12,14 +12,13 @@ from ..latex import (
     equation_lines,
     inline,
     math,
+    mixed,
     pack,
     paragraph,
-    prose,
     raw,
     ref,
     section,
     series_terms,
-    text,
 )
 from . import Context, Part
 from ._render import note
@@ -56,6 +55,8 @@ def _rows_by_label(ctx: Context) -> dict:
 
 def _paper_note(labels, by_label) -> Latex:
     """``Paper (18): agrees, see ...`` for each label present in the catalogue."""
+    from .catalogue import eq_text
+
     parts = []
     for lab in labels:
         r = by_label.get(lab)
@@ -67,15 +68,34 @@ def _paper_note(labels, by_label) -> Latex:
             else r"\textbf{" + say("differs", "расходится") + "}"
         )
         ref = f"p.~\\pageref{{cat:{_key(lab)}}}"
+        shown = eq_text(lab).raw  # as the catalogue prints it: (19), (19, centre), \S 6, n = 3
         parts.append(
             raw(
                 say(
-                    f"Paper ({text(lab).raw}): {word} (catalogue, {ref}).",
-                    f"Статья ({text(lab).raw}): {word} (каталог, с.~{ref[3:]}).",
+                    f"Paper {shown}: {word} (catalogue, {ref}).",
+                    f"Статья {shown}: {word} (каталог, с.~{ref[3:]}).",
                 )
             )
         )
     return note(*parts) if parts else Latex("")
+
+
+#: the parity of the order as a subscript (``T_-/T_0|_{n odd}``)
+_PARITY = {"odd": lambda: say("odd", "нечётное"), "even": lambda: say("even", "чётное")}
+#: the engine's leading threshold ``m_min0`` as the report writes it
+_MMIN0 = sp.Symbol(r"m_{\min,0}", positive=True)
+
+
+def _shown_mmin0(expr):
+    """``expr`` with the engine's symbol ``m_min0`` written as :data:`_MMIN0`."""
+    return expr.subs({x: _MMIN0 for x in expr.free_symbols if x.name == "m_min0"})
+
+
+#: the damping model named after a formula
+_DAMPING = {
+    "paper": lambda: say("paper", "модель статьи"),
+    "exact": lambda: say("exact", "точная модель"),
+}
 
 
 def _key(label: str) -> str:
@@ -126,7 +146,7 @@ def _frictionless(ctx: Context, by_label: dict) -> list[Latex]:
         for side, sym in (("lower", "-"), ("upper", "+")):
             out.append(
                 _series_display(
-                    raw(f"T_{sym}/T_0\\big|_{{n\\ \\mathrm{{{word}}}}}"),
+                    raw(f"T_{sym}/T_0\\big|_{{n\\ \\text{{{_PARITY[word]()}}}}}"),
                     d[f"{side}_T0"],
                     m,
                     ctx,
@@ -168,12 +188,12 @@ def _thresholds(ctx: Context, by_label: dict) -> list[Latex]:
     out = [
         section("Thresholds with friction", "sec:thresholds", level=1),
         paragraph(
-            prose(
-                "With friction an interval exists only above a threshold depth m_min(Q). At the "
-                "threshold the instability indicator has a double zero in theta (a tangency); in "
-                "the "
-                "distinguished scaling 1/Q = lambda m^p (p = 1 for odd orders, 2 for even) both "
-                "conditions are solved as series and reverted. Both damping models:"
+            mixed(
+                r"With friction an interval exists only above a threshold depth $m_{\min}(Q)$. "
+                r"At the threshold the instability indicator has a double zero in $\theta$ (a "
+                r"tangency); in the distinguished scaling $1/Q = \lambda m^p$ ($p = 1$ for odd "
+                r"orders, 2 for even) both conditions are solved as series and reverted. Both "
+                r"damping models:"
             )
         ),
     ]
@@ -181,7 +201,7 @@ def _thresholds(ctx: Context, by_label: dict) -> list[Latex]:
     for n in THRESHOLD_ORDERS:
         for damping in ("paper", "exact"):
             ts = threshold_series(n, TERMS, damping=damping)
-            lhs = raw(f"m^{{({n})}}_{{\\min}}\\ \\text{{({damping})}}")
+            lhs = raw(f"m^{{({n})}}_{{\\min}}\\ \\text{{({_DAMPING[damping]()})}}")
             eps = sp.Symbol("epsilon")
             Qs = sp.Symbol("Q", positive=True)
             if ts.p == 1:
@@ -216,12 +236,11 @@ def _near(ctx: Context, by_label: dict) -> list[Latex]:
     out = [
         section("Edges above the threshold", "sec:near-threshold", level=1),
         paragraph(
-            prose(
-                "Above the threshold the edges are series in m at fixed s = sqrt(1 - "
-                "(m_min0/m)^(2p)), "
-                "with m_min0 the leading threshold; the paper's eqs. (40) and (45) are the first "
-                "terms. "
-                "Both damping models, in units of T_0:"
+            mixed(
+                r"Above the threshold the edges are series in $m$ at fixed "
+                r"$s = \sqrt{1 - (m_{\min,0}/m)^{2p}}$, with $m_{\min,0}$ the leading threshold; "
+                r"the paper's eqs. (40) and (45) are the first terms. Both damping models, in "
+                r"units of $T_0$:"
             )
         ),
     ]
@@ -230,14 +249,14 @@ def _near(ctx: Context, by_label: dict) -> list[Latex]:
             es = near_threshold_edges(n, 3, damping=damping)  # Q kept as a symbol
             sc = es.scaled
             for side, sym in (("lower", "-"), ("upper", "+")):
-                lhs = raw(f"T^{{({n})}}_{sym}/T_0\\ \\text{{({damping})}}")
+                lhs = raw(f"T^{{({n})}}_{sym}/T_0\\ \\text{{({_DAMPING[damping]()})}}")
                 out.append(_series_display(lhs, sc["T0"][side], m, ctx, 4))
         out.append(
             note(
                 say("Here", "Здесь"),
-                inline(math(sc["s"], ctx.config)),
+                inline(math(_shown_mmin0(sc["s"]), ctx.config)),
                 "with",
-                inline(math(sp.Eq(sp.Symbol("m_min0"), es.threshold["m_min_leading"]), ctx.config)),
+                inline(math(sp.Eq(_MMIN0, es.threshold["m_min_leading"]), ctx.config)),
                 ".",
                 _paper_note(PAPER_NEAR.get(n, ()), by_label),
             )

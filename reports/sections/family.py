@@ -14,7 +14,7 @@ import numpy as np
 import sympy as sp
 
 from .. import figures
-from ..i18n import say
+from ..i18n import say, tr
 from ..latex import Latex, figure, inline, math, paragraph, raw, table
 from . import Context, Part
 from .closings import closings_table
@@ -112,7 +112,9 @@ def build(ctx: Context) -> Part:
     closing_marks = [(c.order, float(c.m), float(c.T), f"{c.ratio}") for c in cl if c.order <= 6]
     fig = figures.intervals_figure(m_chart, chart, CHART_ORDERS, closings=closing_marks)
     figs.append(("family-duty.pdf", figures.pdf_bytes(fig)))
-    fig = figures.family_figure(m_side, [(name, side[name]) for name in SIDE_SYSTEMS], SIDE_ORDERS)
+    fig = figures.family_figure(
+        m_side, [(tr(name), side[name]) for name in SIDE_SYSTEMS], SIDE_ORDERS
+    )
     figs.append(("family-systems.pdf", figures.pdf_bytes(fig)))
 
     from analytic.family import D as Dsym

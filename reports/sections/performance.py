@@ -136,7 +136,7 @@ def _speed(ctx: Context) -> tuple[list[Latex], list[tuple[str, bytes]]]:
     pareto = data.get("pareto", {})
     panels = [
         (title, pareto[key])
-        for key, title in (("all", "all scenes"), ("small m", "$m \\leq 0.01$"))
+        for key, title in (("all", tr("all scenes")), ("small m", "$m \\leq 0.01$"))
         if pareto.get(key)
     ]
     figs = (

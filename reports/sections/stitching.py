@@ -28,6 +28,7 @@ from analytic.stitching import (
     implied_rows,
 )
 
+from ..i18n import say
 from ..latex import Latex, equation, inline, math, paragraph, raw, section, table, text
 from . import Context, Part
 from ._render import CHECKS_STATED_ONCE, chain, check, link, note
@@ -102,7 +103,14 @@ def _general(ctx: Context) -> list[Latex]:
         )
     )
     out.append(
-        equation(raw(r"\det(\text{stitching system}) = F\,\det(M - \sigma I)"), numbered=False)
+        equation(
+            raw(
+                r"\det(\text{"
+                + say("stitching system", "система сшивания")
+                + r"}) = F\,\det(M - \sigma I)"
+            ),
+            numbered=False,
+        )
     )
     rows = []
     for damping in Damping:
