@@ -22,7 +22,11 @@ paper's momentum rule.  (V2) serves every modulation; the certified integrator o
     u'' + 2 gamma u' + q(t) u = 0,      q = (g - l'' - 2 gamma l')/l,              (V3)
 
 a Hill equation (with friction: a damped one) whose coefficient is periodic with ``l``.  The
-substitution and its residual are checked by sympy.
+substitution and its residual are checked by sympy.  In the state ``(u, u')`` it is ``w' = B w``
+with ``B = [[0, 1], [-q, -2 gamma]]``, and ``(u, u') = C (phi, p)`` with ``C = [[l, 0], [l',
+1/l]]`` (:func:`liouville_state`); for a smooth ``l`` the map of ``(phi, p)`` from ``a`` to ``b``
+is ``C(b)^-1 W C(a)``, ``W`` the map of (V3).  One Taylor step of (V3) costs half one of (V2): a
+single entry of ``B`` varies.
 
 **The ``sine`` modulation** (:func:`sine_length`): ``l(t) = 1 + m sin(2 pi t/T)``, long in the
 first half period as the square wave (only equal halves, ``D = 1/2``).  ``l`` is even about
@@ -54,6 +58,8 @@ __all__ = [
     "check_sine_symmetry",
     "sine_first_width",
     "sine_forms",
+    "liouville_state",
+    "sine_hill_forms",
 ]
 
 _t, _T, _g, _m = sp.symbols("t T g m", positive=True)
@@ -140,6 +146,26 @@ def sine_first_width() -> tuple[sp.Expr, sp.Expr]:
     if len(roots) != 2:  # pragma: no cover - a proof
         raise AssertionError(f"harmonic balance gave {roots}")
     return roots[0], roots[1]
+
+
+def liouville_state(l) -> sp.Matrix:
+    """``C``: ``(u, u') = C (phi, p)`` for ``u = l phi``, ``p = l^2 phi'`` (derived: ``u'`` is
+    differentiated by sympy and read off in ``phi``, ``p``)."""
+    phi, p = sp.symbols("phi p")
+    ph = sp.Function("phi")(_t)
+    du = sp.diff(l * ph, _t).subs(sp.Derivative(ph, _t), p / l**2).subs(ph, phi)
+    du = sp.expand(du)
+    return sp.Matrix([[l, 0], [du.coeff(phi), du.coeff(p)]])
+
+
+@cache
+def sine_hill_forms() -> tuple:
+    """``(B, C)`` for the sine modulation: the entries of ``B`` of (V3) and of ``C`` of
+    :func:`liouville_state`, row-major, in ``t, T, m, g, gamma, PI``."""
+    l = sine_length(_PI)
+    q = hill_form(l)
+    B = sp.Matrix([[0, 1], [-q, -2 * _gamma]])
+    return tuple(B), tuple(liouville_state(l))
 
 
 @cache
