@@ -408,6 +408,8 @@ def ramp_boundary(order, m, S, *, duty="1/2", digits=30, _jump_result=None) -> R
     with mpmath.workdps(d + 10):
         vals = [to_mpf(x) for x in (lo, hi, dl, du)]
         radii = tuple(upper_mpf(arb(x.rad())) for x in (lo, hi, dl, du))
+        # the ends exactly (arb's endpoints; no rounding to mpmath's working precision)
+        encl = [(to_mpf(arb(x.lower())), to_mpf(arb(x.upper()))) for x in (lo, hi)]
     notes = [
         f"linear ramps of the length lasting S = {_text(SS)} T0 at each switch "
         f"(S = 0: the jump model); edges are the zeros of {names[0]} and {names[1]} "
@@ -428,8 +430,8 @@ def ramp_boundary(order, m, S, *, duty="1/2", digits=30, _jump_result=None) -> R
         delta_lower=vals[2],
         delta_upper=vals[3],
         radius=max(radii),
-        lower_enclosure=(to_mpf(lo) - radii[0], to_mpf(lo) + radii[0]),
-        upper_enclosure=(to_mpf(hi) - radii[1], to_mpf(hi) + radii[1]),
+        lower_enclosure=encl[0],
+        upper_enclosure=encl[1],
         certified=True,
         regime=f"ramp modulation, S = {_text(SS)}, Bessel route",
         notes=tuple(notes),

@@ -42,6 +42,7 @@ __all__ = [
     "ramp_monodromy_damped_arb",
     "sine_rotation",
     "sine_boundary",
+    "sine_edges_fourier",
 ]
 
 
@@ -381,6 +382,8 @@ def sine_boundary(order, m, *, digits=30):
         parts = (lo, hi, lo - half, hi - half)
         vals = [to_mpf(x) for x in parts]
         radii = tuple(upper_mpf(arb(x.rad())) for x in parts)
+        # the ends exactly (arb's endpoints; no rounding to mpmath's working precision)
+        encl = [(to_mpf(arb(x.lower())), to_mpf(arb(x.upper()))) for x in (lo, hi)]
     notes = [
         "sine modulation l = 1 + m sin(2 pi t/T); edges are zeros of "
         f"{names[0]} and {names[1]} of the half-period map, each enclosed by a proven sign "
@@ -402,8 +405,8 @@ def sine_boundary(order, m, *, digits=30):
         delta_lower=vals[2],
         delta_upper=vals[3],
         radius=max(radii),
-        lower_enclosure=(vals[0] - radii[0], vals[0] + radii[0]),
-        upper_enclosure=(vals[1] - radii[1], vals[1] + radii[1]),
+        lower_enclosure=encl[0],
+        upper_enclosure=encl[1],
         certified=True,
         regime="sine modulation, validated Taylor route",
         notes=tuple(notes),
@@ -425,3 +428,82 @@ def check_sine(system, duty, Q=None) -> None:
         raise InputError(
             f"the sine modulation has equal halves only: duty D = {D} is not allowed (D = 1/2)"
         )
+
+
+# ---------------------------------------------------------------------------------------------
+# Hill's method: an independent route to the sine's edges (not proven)
+
+
+@cache
+def _fourier_compiled():
+    import sympy as sp
+
+    from analytic.smooth import fourier_recurrence, symbols
+
+    d, up, down = fourier_recurrence()
+    s = symbols()
+    k, c, m = s["k"], s["c"], s["m"]
+    f = sp.lambdify((k, c, m), [d, up, down], modules="mpmath")
+    return f
+
+
+def sine_edges_fourier(order, m, *, dps=40, start=None):
+    """The edges ``T/T0`` of the ``order``-th interval of the sine modulation (no friction) by
+    Hill's method: the Fourier recurrence of :func:`analytic.smooth.fourier_recurrence`
+    (``u = sum a_k e^{i k theta}``), truncated where its decaying solution has fallen below
+    ``10^-(dps + 5)``, and the zero in ``c = (T/T0)^2`` of the truncated determinant near
+    ``start`` (two guesses ``T``; default the square wave's tuning ``n/2``).  Even orders: the
+    upper chain ``k = 2, 3, ...`` (one value, twice: the interval is closed; order 2 is ``T =
+    1``); odd orders: ``k = 1/2, 3/2, ...`` with ``a_-k = +-e^{i k pi} a_k`` (the solutions even
+    and odd about ``t = T/4``).  A cross-check of the certified route, not itself proven."""
+    n = as_order(order)
+    mm = exact_fraction(as_depth(m))
+    f = _fourier_compiled()
+    with mpmath.workdps(dps + 10):
+        mq = mpmath.mpf(mm.numerator) / mm.denominator
+        lam = (1 - mpmath.sqrt(1 - mq * mq)) / mq
+        K = int((dps + 5) * mpmath.log(10) / -mpmath.log(lam)) + n + 20
+        guesses = start if start is not None else (mpmath.mpf(n) / 2,) * 2
+
+        def det(c, first, k0):
+            # P_j = d_j P_{j-1} - up(k_j - 1) down(k_j) P_{j-2}, normalised by k^2 each row
+            p_prev, p = mpmath.mpf(1), first(c)
+            kk = k0
+            for _ in range(K):
+                kk += 1
+                dk, _, dn = f(kk, c, mq)
+                _, upk, _ = f(kk - 1, c, mq)
+                p_prev, p = p, (dk * p - upk * dn * p_prev)
+                s = kk * kk
+                p_prev, p = p_prev / s, p / s
+            return mpmath.re(p)
+
+        if n == 2:
+            return mpmath.mpf(1), mpmath.mpf(1)
+        if n % 2 == 0:
+            k0 = mpmath.mpf(2)
+
+            def first(c):
+                return f(k0, c, mq)[0]
+
+            roots = [
+                mpmath.findroot(lambda c: det(c, first, k0), mpmath.mpf(g) ** 2, verify=False)
+                for g in guesses[:1]
+            ]
+            T = mpmath.sqrt(roots[0])
+            return T, T
+        out = []
+        k0 = mpmath.mpf(1) / 2
+        for sign, g in zip((1, -1), guesses, strict=True):
+
+            def first(c, sign=sign):
+                dk = f(k0, c, mq)[0]
+                upm = f(-k0, c, mq)[1]  # a_{-1/2} into row 1/2
+                return dk + upm * sign * mpmath.exp(1j * mpmath.pi * k0)
+
+            c = mpmath.findroot(
+                lambda c, first=first: det(c, first, k0), mpmath.mpf(g) ** 2, verify=False
+            )
+            out.append(mpmath.sqrt(c))
+        out.sort()
+        return out[0], out[1]
