@@ -197,6 +197,7 @@ def sine_forms() -> tuple:
 # ---------------------------------------------------------------------------------------------
 # the closings of the sine modulation (coexistence)
 
+
 @cache
 def ince_form() -> sp.Expr:
     """The frictionless (V3) of the sine modulation times ``l/Omega^2`` in ``theta = Omega t``

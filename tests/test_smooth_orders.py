@@ -77,7 +77,8 @@ def certified():
 def test_thirty_digits(certified, n, m):
     b = certified[n]
     assert b.certified and b.digits == 30
-    for T, (lo, hi) in zip((b.lower, b.upper), (b.lower_enclosure, b.upper_enclosure)):
+    pairs = zip((b.lower, b.upper), (b.lower_enclosure, b.upper_enclosure), strict=True)
+    for T, (lo, hi) in pairs:
         # a bracket of a proven sign change: never a point, and the midpoint inside
         assert lo < T < hi
         assert hi - lo < mpmath.mpf(10) ** -30 * lo

@@ -92,7 +92,7 @@ def _compiled():
     )
     B, C = sine_hill_forms()
     args = (s["t"], s["T"], s["m"], s["g"], s["gamma"], s["PI"])
-    kw = dict(modules=[_NAMESPACE], printer=_printer(), cse=True, docstring_limit=0)
+    kw = {"modules": [_NAMESPACE], "printer": _printer(), "cse": True, "docstring_limit": 0}
     hill = sp.lambdify(args, list(B), **kw)
     state = sp.lambdify(args, list(C), **kw)
     return sine, lin, hill, state
