@@ -16,9 +16,15 @@ integrator :func:`verify.taylor.flow` (ball arithmetic, proven remainder).  Unit
   angle of the column of ``G`` grows strictly with ``T`` (Sturm comparison: ``T^2 g l`` is the
   only place ``T`` enters), and on the edge of order ``n`` it has turned by exactly ``n pi/2``
   over the half period; that angle is found by a double-precision integration of the Prüfer
-  equation (*not proven*), the zero then refined by the secant method on ball midpoints, and
-  enclosed by a **proven sign change** of the entry on a small bracket (a zero of the edge
-  equation lies in the printed enclosure).
+  equation (*not proven*), the zero then refined by the secant method on ball midpoints (at 64
+  bits first, then usually two evaluations at full precision), and enclosed by a **proven sign
+  change** of the entry on a small bracket (a zero of the edge equation lies in the printed
+  enclosure).  ``G`` is integrated in the Liouville form (V3) (one varying entry: half the work
+  per Taylor step) and carried back to ``(phi, p)`` by the derived ``C`` at both ends
+  (:func:`sine_half_map`; :func:`sine_half_map_direct` integrates (V2) itself).
+* :func:`sine_edges_fourier`: the edges by Hill's method from the Fourier recurrence of the
+  sine's Ince form (:func:`analytic.smooth.fourier_recurrence`), an independent route without
+  integration (not proven: truncated).
 """
 
 from __future__ import annotations
