@@ -82,7 +82,10 @@ __all__ = [
     "check_ramp_solution",
     "check_reversal",
     "half_period_factorisation",
+    "crossing_is_a_closing",
     "first_order_defect",
+    "defect_series",
+    "next_power",
     "ramp_forms",
 ]
 
@@ -210,6 +213,18 @@ def half_period_factorisation() -> tuple[sp.Expr, sp.Expr]:
     return sp.simplify(e1), sp.simplify(e2)
 
 
+def crossing_is_a_closing() -> sp.Matrix:
+    """``M + I`` for ``M = P G^-1 P G`` with ``G11 = G22 = 0`` and ``det G = 1`` (so ``G21 =
+    -1/G12``), simplified: the zero matrix, i.e. where the zeros of ``G11`` and ``G22`` meet the
+    period map is ``-I`` and the interval of odd order has zero width (likewise ``G12 = G21 =
+    0`` gives ``M = I`` for even orders)."""
+    b = sp.Symbol("G12", nonzero=True)
+    G = sp.Matrix([[0, b], [-1 / b, 0]])
+    P = sp.diag(1, -1)
+    M = P * G.inv() * P * G
+    return sp.simplify(M + sp.eye(2))
+
+
 @cache
 def first_order_defect() -> sp.Matrix:
     """``E``: the first Magnus term of the ramp's map over ``[-S/2, S/2]`` minus that of the jump
@@ -220,6 +235,53 @@ def first_order_defect() -> sp.Matrix:
     ramp = A.applyfunc(lambda e: sp.integrate(e, (s, -_S / 2, _S / 2)))
     jump = (system_matrix(_la, _g) + system_matrix(_lb, _g)) * _S / 2
     return (ramp - jump).applyfunc(lambda e: sp.factor(sp.simplify(e / _S)))
+
+
+@cache
+def defect_series(order: int = 2) -> dict:
+    """The power series in ``S`` of ``R(S) - J(S)``, the ramp's map over ``[-S/2, S/2]`` minus
+    the jump model's two half-steps ``exp(A(l_b) S/2) exp(A(l_a) S/2)``, to ``S^order``:
+    ``{power: matrix}`` for the powers whose coefficient is not zero (sympy).  In ``sigma =
+    s/S`` the ramp's ``A`` does not depend on ``S``, so ``R(S) = sum_k S^k I_k`` with ``I_k``
+    the ``k``-fold ordered integral of ``A`` over ``sigma`` in ``[-1/2, 1/2]`` (Peano-Baker),
+    a series in integer powers of ``S``; the coefficients are taken at ``l_a = 1 + m``,
+    ``l_b = 1 - m`` (the pendulum's ramp down) with ``g`` symbolic."""
+    m = sp.Symbol("m", positive=True)
+    sig, tau = sp.symbols("sigma tau", real=True)
+    la, lb = 1 + m, 1 - m
+
+    def A(x):
+        return system_matrix(la + (lb - la) * (x + sp.Rational(1, 2)), _g)
+
+    half = sp.Rational(1, 2)
+    out = {}
+    inner = sp.eye(2)  # the (k-1)-fold integral as a function of its upper end tau
+    Aa, Ab = system_matrix(la, _g), system_matrix(lb, _g)
+    for k in range(1, order + 1):
+        integrand = (A(sig) * inner.subs(tau, sig)).applyfunc(sp.expand)
+        inner = integrand.applyfunc(lambda e: sp.integrate(e, (sig, -half, tau)))
+        Ik = inner.subs(tau, half).applyfunc(sp.simplify)
+        # J's S^k coefficient: sum over i + j = k of (Ab/2)^i/i! (Aa/2)^j/j!
+        Jk = sp.zeros(2, 2)
+        for i in range(k + 1):
+            j = k - i
+            Jk += (Ab / 2) ** i / sp.factorial(i) * (Aa / 2) ** j / sp.factorial(j)
+        Dk = (Ik - Jk).applyfunc(sp.simplify)
+        if Dk != sp.zeros(2, 2):
+            out[k] = Dk
+    return out
+
+
+def next_power() -> int:
+    """The power of ``S`` of the first term that the leading-order shift leaves out: the edge
+    ``T(S)`` is analytic in ``S`` (a simple zero of an entry of ``G``, a power series in ``S``
+    by :func:`defect_series`), its first-order term comes from the lowest power ``p`` of the
+    defect, and the next term is of power ``min(p2, 2 p)``, ``p2`` the defect's next power
+    (its own term, or the square of the first)."""
+    powers = sorted(defect_series(2))
+    p = powers[0]
+    p2 = powers[1] if len(powers) > 1 else 2 * p
+    return min(p2, 2 * p)
 
 
 @disk_cached("ramp_forms")

@@ -22,7 +22,11 @@ paper's momentum rule.  (V2) serves every modulation; the certified integrator o
     u'' + 2 gamma u' + q(t) u = 0,      q = (g - l'' - 2 gamma l')/l,              (V3)
 
 a Hill equation (with friction: a damped one) whose coefficient is periodic with ``l``.  The
-substitution and its residual are checked by sympy.
+substitution and its residual are checked by sympy.  In the state ``(u, u')`` it is ``w' = B w``
+with ``B = [[0, 1], [-q, -2 gamma]]``, and ``(u, u') = C (phi, p)`` with ``C = [[l, 0], [l',
+1/l]]`` (:func:`liouville_state`); for a smooth ``l`` the map of ``(phi, p)`` from ``a`` to ``b``
+is ``C(b)^-1 W C(a)``, ``W`` the map of (V3).  One Taylor step of (V3) costs half one of (V2): a
+single entry of ``B`` varies.
 
 **The ``sine`` modulation** (:func:`sine_length`): ``l(t) = 1 + m sin(2 pi t/T)``, long in the
 first half period as the square wave (only equal halves, ``D = 1/2``).  ``l`` is even about
@@ -41,6 +45,7 @@ interval is ``3m/4`` wide, against ``3m/pi`` for the square wave (whose first ha
 
 from __future__ import annotations
 
+from dataclasses import dataclass
 from functools import cache
 
 import sympy as sp
@@ -54,16 +59,35 @@ __all__ = [
     "check_sine_symmetry",
     "sine_first_width",
     "sine_forms",
+    "liouville_state",
+    "sine_hill_forms",
+    "ince_form",
+    "fourier_recurrence",
+    "sine_closings",
 ]
 
 _t, _T, _g, _m = sp.symbols("t T g m", positive=True)
 _gamma = sp.Symbol("gamma", nonnegative=True)
 _PI = sp.Symbol("PI", positive=True)
+#: the phase ``Omega t``, ``c = g/Omega^2`` and the Fourier index of the Ince form
+_theta = sp.Symbol("theta", real=True)
+_c = sp.Symbol("c", positive=True)
+_k = sp.Symbol("k")
 
 
 def symbols() -> dict:
     """The sympy symbols of this module by name (``PI`` stands for ``pi`` in compiled forms)."""
-    return {"t": _t, "T": _T, "g": _g, "m": _m, "gamma": _gamma, "PI": _PI}
+    return {
+        "t": _t,
+        "T": _T,
+        "g": _g,
+        "m": _m,
+        "gamma": _gamma,
+        "PI": _PI,
+        "theta": _theta,
+        "c": _c,
+        "k": _k,
+    }
 
 
 def system_matrix(l, g=_g, gamma=_gamma) -> sp.Matrix:
@@ -142,9 +166,122 @@ def sine_first_width() -> tuple[sp.Expr, sp.Expr]:
     return roots[0], roots[1]
 
 
+def liouville_state(l) -> sp.Matrix:
+    """``C``: ``(u, u') = C (phi, p)`` for ``u = l phi``, ``p = l^2 phi'`` (derived: ``u'`` is
+    differentiated by sympy and read off in ``phi``, ``p``)."""
+    phi, p = sp.symbols("phi p")
+    ph = sp.Function("phi")(_t)
+    du = sp.diff(l * ph, _t).subs(sp.Derivative(ph, _t), p / l**2).subs(ph, phi)
+    du = sp.expand(du)
+    return sp.Matrix([[l, 0], [du.coeff(phi), du.coeff(p)]])
+
+
+@cache
+def sine_hill_forms() -> tuple:
+    """``(B, C)`` for the sine modulation: the entries of ``B`` of (V3) and of ``C`` of
+    :func:`liouville_state`, row-major, in ``t, T, m, g, gamma, PI``."""
+    l = sine_length(_PI)
+    q = hill_form(l)
+    B = sp.Matrix([[0, 1], [-q, -2 * _gamma]])
+    return tuple(B), tuple(liouville_state(l))
+
+
 @cache
 def sine_forms() -> tuple:
     """The entries of ``A`` (V2) for the sine modulation, row-major, in ``t, T, m, g, gamma,
     PI`` (``pi`` replaced by the symbol ``PI``, so every back end supplies its own)."""
     A = system_matrix(sine_length(_PI))
     return tuple(A)
+
+
+# ---------------------------------------------------------------------------------------------
+# the closings of the sine modulation (coexistence)
+
+
+@cache
+def ince_form() -> sp.Expr:
+    """The frictionless (V3) of the sine modulation times ``l/Omega^2`` in ``theta = Omega t``
+    (``Omega = 2 pi/T``), with ``c = g/Omega^2`` (``= (T/T0)^2`` in these units): the operator
+    ``L[u] = (1 + m sin theta) u'' + (c + m sin theta) u`` (an Ince equation), returned as
+    ``L[u]`` for ``u = u(theta)``, derived from :func:`hill_form` (checked by sympy)."""
+    W = sp.Symbol("Omega", positive=True)
+    l = 1 + _m * sp.sin(W * _t)
+    q = sp.simplify(hill_form(l).subs(_gamma, 0))
+    u = sp.Function("u")
+    ut = u(W * _t)
+    expr = l * (sp.diff(ut, _t, 2) + q * ut) / W**2
+    expr = sp.expand(sp.simplify(expr.subs(_g, _c * W**2)))
+    expr = expr.subs(_t, _theta / W).doit()
+    out = (1 + _m * sp.sin(_theta)) * sp.diff(u(_theta), _theta, 2) + (
+        _c + _m * sp.sin(_theta)
+    ) * u(_theta)
+    if sp.simplify(expr - out) != 0:  # pragma: no cover - a proof
+        raise AssertionError("the Ince form did not follow from the Hill form")
+    return out
+
+
+@cache
+def fourier_recurrence() -> tuple[sp.Expr, sp.Expr, sp.Expr]:
+    """``(d, up, down)`` in ``k, c, m``: ``L[e^{i k theta}] = e^{i k theta} (d + up e^{i theta}
+    + down e^{-i theta})`` (sympy applies :func:`ince_form` to the exponential).  With ``u =
+    sum a_k e^{i k theta}`` the coefficient of ``e^{i k theta}`` in ``L[u]`` is ``d(k) a_k +
+    up(k - 1) a_{k-1} + down(k + 1) a_{k+1}``."""
+    u = sp.Function("u")
+    L = ince_form()
+    e = sp.exp(sp.I * _k * _theta)
+    val = L.subs(u(_theta), e).doit()
+    val = sp.expand(sp.expand(val.rewrite(sp.exp)) / e)
+    z = sp.Symbol("z")  # z = e^{i theta}
+    val = sp.expand(sp.powsimp(val.subs(sp.exp(sp.I * _theta), z)))
+    d = val.coeff(z, 0)
+    up = val.coeff(z, 1)
+    down = val.coeff(z, -1)
+    if sp.simplify(val - d - up * z - down / z) != 0:  # pragma: no cover - a proof
+        raise AssertionError("L[e^{ik theta}] is not a three-term sum")
+    return sp.factor(d), sp.factor(up), sp.factor(down)
+
+
+@dataclass(frozen=True)
+class SineClosings:
+    """The closings of the sine modulation without friction (:func:`sine_closings`).
+
+    ``coupling``: the factor of ``up(k)`` (and ``down(k)``) of :func:`fourier_recurrence` that
+    depends on ``k``; ``zeros``: its zeros in ``k``.  ``even_closed``: every zero is an
+    integer (the modes of period ``T``, even orders) and the recurrence decouples there;
+    ``odd_open``: no zero is a half-integer (the modes of period ``2T``, odd orders)."""
+
+    coupling: sp.Expr
+    zeros: tuple
+    even_closed: bool
+    odd_open: bool
+
+
+@cache
+def sine_closings() -> SineClosings:
+    """Which intervals of the sine modulation close, derived from the Fourier recurrence.
+
+    The coupling of ``a_k`` to its neighbours is ``(m/2i)(1 - k^2)`` (up to sign): it
+    vanishes exactly at ``k = +-1``.  *Even orders* (solutions of period ``T``: integer
+    ``k``): the equations for ``k >= 2`` do not contain ``a_1``, those for ``k <= -2`` not
+    ``a_-1``, and the one for ``k = 0`` reads ``c a_0 = 0``; so each solution ``(a_2, a_3,
+    ...)`` of the upper chain (with ``a_1`` from the row ``k = 1``) and its mirror image in the
+    lower chain are two independent periodic solutions at the same ``c = (T/T0)^2``: every
+    periodic solution coexists with a second one, ``M = I``, and **every interval of even
+    order has zero width at every depth** ``0 < m < 1`` (order 2: the chain ``k = +-1`` alone,
+    ``c = 1``, ``T = T0``).  *Odd orders* (half-integer ``k``): no coupling vanishes.  The
+    coefficients of an even and an odd solution (under ``theta -> pi - theta``, i.e. ``a_-k =
+    +-i^.. a_k``) obey the same recurrence for ``k >= 3/2`` and decay (the solutions are
+    analytic); by Perron's theorem the decaying solutions of that recurrence form one line
+    (its characteristic roots ``(-1 +- sqrt(1 - m^2))/m`` have different moduli), so the two
+    would be proportional, while their rows ``k = 1/2`` differ by ``3m/4 a_{1/2} != 0``: at
+    no ``T`` are both periodic, ``M != -I``, and **no interval of odd order ever closes**."""
+    d, up, down = fourier_recurrence()
+    # the k-dependence of the couplings (the constant factor i m/2 aside)
+    cu = sp.factor(sp.simplify(up / (sp.I * _m / 2)))
+    zeros = tuple(sorted(sp.solve(sp.Eq(up, 0), _k), key=float))
+    zeros_down = tuple(sorted(sp.solve(sp.Eq(down, 0), _k), key=float))
+    # up(k) couples a_k into row k + 1, down(k) into row k - 1: a_{k} is cut off from its
+    # upper neighbour when up(k) = 0 and from its lower one when down(k) = 0
+    ints = all(z.is_integer for z in zeros + zeros_down)
+    half = any((2 * z).is_integer and not z.is_integer for z in zeros + zeros_down)
+    return SineClosings(cu, zeros + zeros_down, ints and len(zeros) > 0, not half)

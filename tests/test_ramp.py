@@ -450,3 +450,66 @@ def test_ball_is_exact_at_low_working_precision():
     with ctx.workprec(300):
         assert (bx - 1).contains(-(arb(2) ** -100))
         assert (by + 1).mid() == arb(2) ** -100
+
+
+@pytest.mark.parametrize("n,m", [(1, "0.3"), (2, "0.3"), (3, "0.5"), (4, "0.2"), (5, "0.4")])
+def test_leading_shift_error_has_the_derived_exponent(n, m):
+    """The error of the leading-order prediction T(0) + a S falls like S^p, p the power that the
+    expansion says comes next (analytic.ramp.next_power, from the sympy series of the ramp's map
+    in S: here 2).  The slope of log|error| against log S, fitted over S = 1e-3, 5e-4, 2.5e-4
+    (certified shifts, 30 digits), must equal p within 0.05 (the S^(p+1) term moves it by
+    O(S) ~ 1e-3).  Reference: a = leading_shift (derived first-order coefficient).  Not at a
+    closing of the jump model (order 3, m = 3/5), where one edge's coefficients vanish up to
+    S^5 (test_closing_reopens_into_an_interval)."""
+    p = ar.next_power()
+    assert p == 2  # the series has an S^2 term (analytic.ramp.defect_series)
+    a = leading_shift(n, m, digits=25)
+    Ss = (F(1, 1000), F(1, 2000), F(1, 4000))
+    errs = [[], []]
+    for S in Ss:
+        r = ramp_boundary(n, m, S, digits=30)
+        with ctx.workprec(200):
+            Sb = arb(S.numerator) / S.denominator
+            for k, (sh, ai) in enumerate(zip(r.shifts, a, strict=True)):
+                e = sh - ai * Sb
+                assert not e.contains(0)  # the error itself is resolved
+                errs[k].append(abs(float(e.mid())))
+    x = [math.log(float(S)) for S in Ss]
+    xm = sum(x) / len(x)
+    for ek in errs:
+        y = [math.log(e) for e in ek]
+        ym = sum(y) / len(y)
+        slope = sum((xi - xm) * (yi - ym) for xi, yi in zip(x, y, strict=True)) / sum(
+            (xi - xm) ** 2 for xi in x
+        )
+        assert abs(slope - p) < 0.05, (n, m, slope, p)
+
+
+def test_defect_series_first_term_is_the_magnus_defect():
+    """The S^1 coefficient of the derived series is first_order_defect at l = 1 -+ m (two
+    derivations: the ordered integrals and the first Magnus term)."""
+    s = ar.symbols()
+    m = sp.Symbol("m", positive=True)
+    D1 = ar.defect_series(2)[1]
+    E = ar.first_order_defect().subs({s["la"]: 1 + m, s["lb"]: 1 - m})
+    assert (D1 - E).applyfunc(sp.simplify) == sp.zeros(2, 2)
+    assert 2 in ar.defect_series(2)
+
+
+def test_ramp_closing_moves_off_the_jump_closing():
+    """Order 3, S = 1/100: the jump model's closing at m = 3/5 moves to a depth in a certified
+    bracket of width <= 1e-10 above 3/5 (the edges at the two ends are proven disjoint and come
+    in opposite orders).  Independent check: the full period map from the Bessel route (a
+    different product than the half map) at the bracket's middle and the closing's period is
+    -I to 1e-7 (the located point is ~1e-10 off)."""
+    from verify.ramp import ramp_closing
+
+    rc = ramp_closing(3, "1/100", "0.6", "0.62", tol="1e-10")
+    assert F(3, 5) < rc.m_lo < rc.m_hi and rc.m_hi - rc.m_lo <= F(1, 10**10)
+    assert set(rc.factors_lo) == {"G11", "G22"} and rc.factors_lo == rc.factors_hi[::-1]
+    mid = (rc.m_lo + rc.m_hi) / 2
+    with ctx.workprec(120):
+        M = ramp_monodromy_arb(mid, F(rc.T_approx), F(1, 100))
+    for x, ref in zip(M, (-1, 0, 0, -1), strict=True):
+        assert abs(float(x.mid()) - ref) < 1e-7
+    assert ar.crossing_is_a_closing() == sp.zeros(2, 2)

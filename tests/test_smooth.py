@@ -323,3 +323,73 @@ def test_cli_simulate_sine(capsys):
         "6",
     )
     assert rc == 0 and "sine" in out and "growth per period" in out
+
+
+# ---------------------------------------------------------------------------------------------
+# the Liouville route of the half map, the Fourier recurrence, the closings in the report
+
+
+@pytest.mark.parametrize("m,T", [(F(1, 2), F(29, 20)), (F(9, 10), F(3)), (F(1, 10**6), F(1, 2))])
+def test_liouville_half_map_is_the_direct_one(m, T):
+    """G integrated in (u, u') and carried back by C equals G integrated in (phi, p) (V2): both
+    enclosures overlap and are 1e-35 narrow (reference: the direct route, a different ODE)."""
+    from verify.smooth import sine_half_map_direct
+
+    with ctx.workprec(150):
+        for a, b in zip(sine_half_map(m, T), sine_half_map_direct(m, T), strict=True):
+            assert a.overlaps(b)
+            assert a.rad() < 1e-35 * (1 + abs(a).mid())
+
+
+def test_liouville_state_is_the_substitution():
+    """C of (u, u') = C (phi, p): u = l phi, u' = l' phi + p/l (differentiating u = l phi with
+    phi' = p/l^2 by hand)."""
+    s = asm.symbols()
+    l = asm.sine_length()
+    C = asm.liouville_state(l)
+    want = sp.Matrix([[l, 0], [sp.diff(l, s["t"]), 1 / l]])
+    assert (C - want).applyfunc(sp.simplify) == sp.zeros(2, 2)
+
+
+def test_fourier_recurrence_of_the_ince_form():
+    """L[e^{ik theta}] = e^{ik theta}((c - k^2) + (1 - k^2) m sin theta) by hand, and m sin theta
+    = (m/2i)(z - 1/z): d = c - k^2, up = m (1 - k^2)/(2i), down = -up."""
+    s = asm.symbols()
+    k, c, m = s["k"], s["c"], s["m"]
+    d, up, down = asm.fourier_recurrence()
+    assert sp.simplify(d - (c - k**2)) == 0
+    assert sp.simplify(up - m * (1 - k**2) / (2 * sp.I)) == 0
+    assert sp.simplify(down + up) == 0
+    th = asm.sine_closings()
+    assert set(th.zeros) == {-1, 1} and th.even_closed and th.odd_open
+
+
+def test_switching_chapter_states_the_closings():
+    """The chapter's closings text is built from the derived recurrence and the ramp's certified
+    bracket: it names the coupling's zeros, both sine statements, and the bracket's ends; the
+    width table says closed for even orders and prints the odd widths."""
+    from analytic.ramp import crossing_is_a_closing  # noqa: F401 - the text checks it
+    from reports.latex import DEFAULT, inline, math
+    from reports.sections import switching as sw
+    from verify.ramp import RampClosing
+
+    rc = RampClosing(
+        3,
+        F(1, 100),
+        F(6072728525, 10**10),
+        F(6072728527, 10**10),
+        ("G22", "G11"),
+        ("G11", "G22"),
+        1.2649,
+    )
+    widths = {}
+    for n in sw.CLOSE_ORDERS:
+        for m in sw.CLOSE_M:
+            widths[n, m] = (n % 2 == 1, "2.75936e-7" if n == 5 else "0.1")
+    parts = sw._closings_text(widths, rc, lambda x: inline(math(x, DEFAULT)))
+    text = "\n".join(p.raw for p in parts)
+    assert "k = -1, 1" in text
+    assert "zero width at every depth" in text and "No interval of odd order ever closes" in text
+    assert "0.6072728525" in text and "0.6072728527" in text
+    assert r"2.75936 \cdot 10^{-7}" in text
+    assert text.count("closed ($M = I$)") == 3 and text.count("open (proven)") == 3

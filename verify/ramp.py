@@ -26,6 +26,11 @@ oscillation on a plateau, in the state ``(phi, p = l^2 phi')``) and evaluated in
   (:func:`analytic.ramp.first_order_defect`), evaluated in ball arithmetic.
 * :func:`jump_validity`: the largest ``S`` for which both ramp edges stay within a relative
   tolerance of the jump model's edges.
+* :func:`ramp_closing`: a closing of an odd-order interval with ramps of a fixed ``S``: two
+  depths at which the zeros of ``G11`` and ``G22`` are proven distinct and in opposite order, so
+  that the two edges cross in between, where ``G11 = G22 = 0`` and hence ``M = -I`` exactly
+  (:func:`analytic.ramp.half_period_factorisation`: with ``det G = 1`` and ``G11 = G22 = 0``,
+  ``M = P G^-1 P G = -I``): the interval has zero width there.
 """
 
 from __future__ import annotations
@@ -53,6 +58,8 @@ __all__ = [
     "RampEdges",
     "jump_validity",
     "Validity",
+    "RampClosing",
+    "ramp_closing",
 ]
 
 # ---------------------------------------------------------------------------------------------
@@ -408,6 +415,8 @@ def ramp_boundary(order, m, S, *, duty="1/2", digits=30, _jump_result=None) -> R
     with mpmath.workdps(d + 10):
         vals = [to_mpf(x) for x in (lo, hi, dl, du)]
         radii = tuple(upper_mpf(arb(x.rad())) for x in (lo, hi, dl, du))
+        # the ends exactly (arb's endpoints; no rounding to mpmath's working precision)
+        encl = [(to_mpf(arb(x.lower())), to_mpf(arb(x.upper()))) for x in (lo, hi)]
     notes = [
         f"linear ramps of the length lasting S = {_text(SS)} T0 at each switch "
         f"(S = 0: the jump model); edges are the zeros of {names[0]} and {names[1]} "
@@ -428,8 +437,8 @@ def ramp_boundary(order, m, S, *, duty="1/2", digits=30, _jump_result=None) -> R
         delta_lower=vals[2],
         delta_upper=vals[3],
         radius=max(radii),
-        lower_enclosure=(to_mpf(lo) - radii[0], to_mpf(lo) + radii[0]),
-        upper_enclosure=(to_mpf(hi) - radii[1], to_mpf(hi) + radii[1]),
+        lower_enclosure=encl[0],
+        upper_enclosure=encl[1],
         certified=True,
         regime=f"ramp modulation, S = {_text(SS)}, Bessel route",
         notes=tuple(notes),
@@ -757,3 +766,69 @@ def jump_validity(order, m, tol, *, duty="1/2", digits=15) -> Validity:
     return Validity(
         n, mm, D, tt, jl_b, ju_b, S_ok, S_bad, S_fit, slopes, tuple(table), tuple(notes)
     )
+
+
+# ---------------------------------------------------------------------------------------------
+# closings with ramps
+
+
+@dataclass(frozen=True)
+class RampClosing:
+    """A closing of the ``order``-th interval with ramps of duration ``S``: the depth ``m*`` at
+    which the two edges meet lies in ``[m_lo, m_hi]`` (``factors_lo``/``factors_hi``: the
+    entries of ``G`` whose zeros are the lower and upper edge at ``m_lo``, ``m_hi``: opposite
+    orders, each pair of edges proven disjoint); ``T_approx``: the mean of the four edges at the
+    two depths (a float, not an enclosure of the closing's period)."""
+
+    order: int
+    S: Fraction
+    m_lo: Fraction
+    m_hi: Fraction
+    factors_lo: tuple
+    factors_hi: tuple
+    T_approx: float
+    proven: str = (
+        "the edges at m_lo and at m_hi are certified and proven disjoint, in opposite orders; "
+        "at the crossing in between G11 = G22 = 0, so M = -I exactly (zero width). Not proven: "
+        "that the zeros compared at the two depths lie on the same two continuous branches "
+        "(each is followed from the jump model's edge by continuation in S)"
+    )
+
+
+def ramp_closing(order, S, m_lo, m_hi, *, tol="1e-10", digits=25) -> RampClosing:
+    """Bisect the depth between ``m_lo`` and ``m_hi`` (at which the edges of the odd
+    ``order``-th interval with ramps of duration ``S`` come in opposite orders) down to a
+    bracket of width ``tol``; every comparison is one of proven-disjoint certified edges."""
+    n = as_order(order)
+    if n % 2 == 0:
+        raise InputError(f"order n = {n}: closings with ramps are searched for odd orders only")
+    SS = as_switch_time(S)
+    a, b = (exact_fraction(as_depth(x)) for x in (m_lo, m_hi))
+    width = exact_fraction(as_depth(tol)) if not isinstance(tol, Fraction) else tol
+
+    def side(m: Fraction):
+        r = ramp_boundary(n, m, SS, digits=digits)
+        if not r.lower.upper() < r.upper.lower():
+            return None, r
+        return r.factors, r
+
+    fa, ra = side(a)
+    fb, rb = side(b)
+    if fa is None or fb is None or fa == fb:
+        raise CertificationError(
+            f"the edges at m = {_text(a)} and m = {_text(b)} are not proven to come in opposite "
+            "orders"
+        )
+    while b - a > width:
+        mid = (a + b) / 2
+        # a short decimal-like point near the middle keeps the fractions small
+        mid = Fraction(round(mid * 10**14), 10**14) if (b - a) > Fraction(1, 10**12) else mid
+        fm, rm = side(mid)
+        if fm is None:
+            break
+        if fm == fa:
+            a, ra = mid, rm
+        else:
+            b, rb, fb = mid, rm, fm
+    T = float((ra.lower + ra.upper + rb.lower + rb.upper).mid()) / 4
+    return RampClosing(n, SS, a, b, fa, fb, T)

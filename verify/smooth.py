@@ -16,9 +16,15 @@ integrator :func:`verify.taylor.flow` (ball arithmetic, proven remainder).  Unit
   angle of the column of ``G`` grows strictly with ``T`` (Sturm comparison: ``T^2 g l`` is the
   only place ``T`` enters), and on the edge of order ``n`` it has turned by exactly ``n pi/2``
   over the half period; that angle is found by a double-precision integration of the Prüfer
-  equation (*not proven*), the zero then refined by the secant method on ball midpoints, and
-  enclosed by a **proven sign change** of the entry on a small bracket (a zero of the edge
-  equation lies in the printed enclosure).
+  equation (*not proven*), the zero then refined by the secant method on ball midpoints (at 64
+  bits first, then usually two evaluations at full precision), and enclosed by a **proven sign
+  change** of the entry on a small bracket (a zero of the edge equation lies in the printed
+  enclosure).  ``G`` is integrated in the Liouville form (V3) (one varying entry: half the work
+  per Taylor step) and carried back to ``(phi, p)`` by the derived ``C`` at both ends
+  (:func:`sine_half_map`; :func:`sine_half_map_direct` integrates (V2) itself).
+* :func:`sine_edges_fourier`: the edges by Hill's method from the Fourier recurrence of the
+  sine's Ince form (:func:`analytic.smooth.fourier_recurrence`), an independent route without
+  integration (not proven: truncated).
 """
 
 from __future__ import annotations
@@ -38,9 +44,11 @@ from .taylor import flow
 __all__ = [
     "sine_monodromy_arb",
     "sine_half_map",
+    "sine_half_map_direct",
     "ramp_monodromy_damped_arb",
     "sine_rotation",
     "sine_boundary",
+    "sine_edges_fourier",
 ]
 
 
@@ -66,7 +74,7 @@ def _compiled():
     arguments from :mod:`analytic.smooth`."""
     import sympy as sp
 
-    from analytic.smooth import sine_forms, symbols, system_matrix
+    from analytic.smooth import sine_forms, sine_hill_forms, symbols, system_matrix
 
     from .derived import _printer
 
@@ -88,7 +96,12 @@ def _compiled():
         cse=True,
         docstring_limit=0,
     )
-    return sine, lin
+    B, C = sine_hill_forms()
+    args = (s["t"], s["T"], s["m"], s["g"], s["gamma"], s["PI"])
+    kw = {"modules": [_NAMESPACE], "printer": _printer(), "cse": True, "docstring_limit": 0}
+    hill = sp.lambdify(args, list(B), **kw)
+    state = sp.lambdify(args, list(C), **kw)
+    return sine, lin, hill, state
 
 
 def _A(x: Fraction) -> arb:
@@ -113,7 +126,7 @@ def _series_safe(f):
 
 
 def _sine_coef(T: arb, m: arb, gamma: arb):
-    sine, _ = _compiled()
+    sine = _compiled()[0]
     g = 4 * arb.pi() ** 2
     pi = arb.pi()
     return _series_safe(lambda t: sine(t, T, m, g, gamma, pi))
@@ -129,7 +142,30 @@ def sine_monodromy_arb(m, T, Q=None):
 
 
 def sine_half_map(m, T):
-    """``G``: the map of ``(phi, p)`` from ``t = T/4`` to ``3T/4`` (no friction), four balls."""
+    """``G``: the map of ``(phi, p)`` from ``t = T/4`` to ``3T/4`` (no friction), four balls.
+
+    Integrated in the Liouville form (V3) of :mod:`analytic.smooth` (one varying entry: half
+    the work of (V2) per Taylor step) and carried back to ``(phi, p)`` by the derived ``C`` at
+    both ends: ``G = C(3T/4)^-1 W C(T/4)``."""
+    _, _, hill, state = _compiled()
+    Tb = T if isinstance(T, arb) else _A(Fraction(T))
+    mb = m if isinstance(m, arb) else _A(Fraction(m))
+    g = 4 * arb.pi() ** 2
+    pi = arb.pi()
+    zero = arb(0)
+    coef = _series_safe(lambda t: hill(t, Tb, mb, g, zero, pi))
+    a, b = Tb / 4, 3 * Tb / 4
+    W = flow(coef, a, b, scale=2 * arb.pi())
+    Ca = state(a, Tb, mb, g, zero, pi)
+    c11, c12, c21, c22 = state(b, Tb, mb, g, zero, pi)
+    det = c11 * c22 - c12 * c21
+    Cb_inv = (c22 / det, -c12 / det, -c21 / det, c11 / det)
+    return _mul(Cb_inv, _mul(W, tuple(Ca)))
+
+
+def sine_half_map_direct(m, T):
+    """``G`` as :func:`sine_half_map`, integrated in ``(phi, p)`` (V2) directly: the slower
+    route, kept to check the Liouville route."""
     Tb = T if isinstance(T, arb) else _A(Fraction(T))
     coef = _sine_coef(Tb, m if isinstance(m, arb) else _A(Fraction(m)), arb(0))
     return flow(coef, Tb / 4, 3 * Tb / 4, scale=2 * arb.pi())
@@ -139,7 +175,7 @@ def ramp_monodromy_damped_arb(m, tau, S, Q, duty=Fraction(1, 2)):
     """The period map of ``(phi, p)`` from ``t = S/2`` for the ramp modulation (linear ramps of
     the length lasting ``S`` centred on ``t = 0`` and ``t = D T``) with friction ``Q``, every
     piece through the validated integrator (four balls)."""
-    _, lin = _compiled()
+    lin = _compiled()[1]
     m, S, duty = Fraction(m), Fraction(S), Fraction(duty)
     T = _A(Fraction(tau))
     g = 4 * arb.pi() ** 2
@@ -206,22 +242,40 @@ def sine_rotation(m: float, T: float, column: int, steps: int = 400) -> float:
 
 
 def _guess(m: float, n: int, column: int) -> float:
-    """The ``T`` at which the rotation is ``n pi/2`` (bisection on the monotone rotation)."""
+    """The ``T`` at which the rotation is ``n pi/2``: bracketed on the monotone rotation, then
+    the Illinois (regula falsi) iteration on it (double precision)."""
     target = n * math.pi / 2
     steps = 200 + 120 * n
+
+    def f(T: float) -> float:
+        return sine_rotation(m, T, column, steps) - target
+
     lo, hi = 0.02 * n, 0.8 * n + 0.5
-    while sine_rotation(m, lo, column, steps) > target:
+    flo, fhi = f(lo), f(hi)
+    while flo > 0:
         lo /= 2
-    while sine_rotation(m, hi, column, steps) < target:
+        flo = f(lo)
+    while fhi < 0:
         hi *= 2
-    for _ in range(60):
-        mid = (lo + hi) / 2
-        if sine_rotation(m, mid, column, steps) < target:
-            lo = mid
+        fhi = f(hi)
+    side = 0
+    for _ in range(100):
+        x = (lo * fhi - hi * flo) / (fhi - flo)
+        fx = f(x)
+        if fx == 0 or hi - lo < 1e-14 * hi:
+            return x
+        if fx < 0:
+            lo, flo = x, fx
+            if side == -1:
+                fhi /= 2
+            side = -1
         else:
-            hi = mid
-        if hi - lo < 1e-13 * hi:
-            break
+            hi, fhi = x, fx
+            if side == 1:
+                flo /= 2
+            side = 1
+        if abs(fx) < 1e-13:
+            return x
     return (lo + hi) / 2
 
 
@@ -229,27 +283,66 @@ def _pair(n: int) -> tuple[str, str]:
     return ("G11", "G22") if n % 2 else ("G12", "G21")
 
 
+#: the working precision of the first refinement (cheap; to about 1e-17)
+_LOW_BITS = 64
+
+
+def _secant(F, x1: arb, x2: arb, f1: arb, goal: arb, iters: int):
+    """Secant steps on ball midpoints; returns ``(x_last, x_before, f_last, f_before)``."""
+    f2 = F(x2).mid()
+    for _ in range(iters):
+        if f2 == f1:
+            break
+        x3 = (x2 - f2 * (x2 - x1) / (f2 - f1)).mid()
+        x1, f1 = x2, f2
+        x2 = x3
+        if abs(x2 - x1) < goal * abs(x2):
+            break
+        f2 = F(x2).mid()
+    return x2, x1, f2, f1
+
+
 def _refine(m: Fraction, e: int, x0: float, bits: int) -> arb:
-    """The secant method on ball midpoints at ``bits``, from ``x0``; returns the midpoint."""
+    """The zero of entry ``e`` of ``G`` near ``x0`` to about ``2^-(bits - 8)`` (relative): the
+    secant method on ball midpoints at :data:`_LOW_BITS` bits first, then (usually) two
+    evaluations at ``bits``, started from the low-precision zero and slope.  Returns the
+    midpoint (not proven: :func:`_enclose` proves the zero)."""
+    with ctx.workprec(_LOW_BITS):
+
+        def F_low(T: arb) -> arb:
+            return sine_half_map(m, T)[e]
+
+        x1 = arb(x0)
+        f1 = F_low(x1).mid()
+        x, xp, _, _ = _secant(F_low, x1, arb(x0 * (1 + 1e-9)), f1, arb(2) ** -50, 12)
+        slope = (F_low(x).mid() - F_low(xp).mid()) / (x - xp) if x != xp else None
     with ctx.workprec(bits):
 
         def F(T: arb) -> arb:
             return sine_half_map(m, T)[e]
 
-        x1 = arb(x0)
-        x2 = arb(x0 * (1 + 1e-9))
-        f1, f2 = F(x1).mid(), F(x2).mid()
         goal = arb(2) ** (-(bits - 8))
-        for _ in range(40):
-            if f2 == f1:
-                break
-            x3 = (x2 - f2 * (x2 - x1) / (f2 - f1)).mid()
-            x1, f1 = x2, f2
-            x2 = x3
+        x1 = arb(x.mid())
+        f1 = F(x1).mid()
+        if slope is None or slope == 0:
+            return _secant(F, x1, arb((x1 * (1 + arb(2) ** -40)).mid()), f1, goal, 40)[0]
+        d_prev = None
+        for _ in range(20):
+            # a Newton step with the low-precision slope, then secant steps: from 1e-17 off,
+            # the second point is ~1e-25 off and the third ~1e-42
+            x2 = (x1 - f1 / slope).mid()
+            d = abs(x2 - x1)
+            if d < goal * abs(x2):
+                return x2
+            # a secant step's error is about (the last two steps' product)/|x|
+            if d_prev is not None and d * d_prev < goal * abs(x2) * abs(x2) * arb(2) ** -8:
+                return x2
             f2 = F(x2).mid()
-            if abs(x2 - x1) < goal * abs(x2):
-                break
-        return x2
+            if f2 == f1:
+                return x2
+            slope = (f2 - f1) / (x2 - x1)
+            x1, f1, d_prev = x2, f2, d
+        return x1
 
 
 def _enclose(m: Fraction, e: int, x: arb, bits: int) -> arb:
@@ -295,6 +388,8 @@ def sine_boundary(order, m, *, digits=30):
         parts = (lo, hi, lo - half, hi - half)
         vals = [to_mpf(x) for x in parts]
         radii = tuple(upper_mpf(arb(x.rad())) for x in parts)
+        # the ends exactly (arb's endpoints; no rounding to mpmath's working precision)
+        encl = [(to_mpf(arb(x.lower())), to_mpf(arb(x.upper()))) for x in (lo, hi)]
     notes = [
         "sine modulation l = 1 + m sin(2 pi t/T); edges are zeros of "
         f"{names[0]} and {names[1]} of the half-period map, each enclosed by a proven sign "
@@ -316,8 +411,8 @@ def sine_boundary(order, m, *, digits=30):
         delta_lower=vals[2],
         delta_upper=vals[3],
         radius=max(radii),
-        lower_enclosure=(vals[0] - radii[0], vals[0] + radii[0]),
-        upper_enclosure=(vals[1] - radii[1], vals[1] + radii[1]),
+        lower_enclosure=encl[0],
+        upper_enclosure=encl[1],
         certified=True,
         regime="sine modulation, validated Taylor route",
         notes=tuple(notes),
@@ -339,3 +434,82 @@ def check_sine(system, duty, Q=None) -> None:
         raise InputError(
             f"the sine modulation has equal halves only: duty D = {D} is not allowed (D = 1/2)"
         )
+
+
+# ---------------------------------------------------------------------------------------------
+# Hill's method: an independent route to the sine's edges (not proven)
+
+
+@cache
+def _fourier_compiled():
+    import sympy as sp
+
+    from analytic.smooth import fourier_recurrence, symbols
+
+    d, up, down = fourier_recurrence()
+    s = symbols()
+    k, c, m = s["k"], s["c"], s["m"]
+    f = sp.lambdify((k, c, m), [d, up, down], modules="mpmath")
+    return f
+
+
+def sine_edges_fourier(order, m, *, dps=40, start=None):
+    """The edges ``T/T0`` of the ``order``-th interval of the sine modulation (no friction) by
+    Hill's method: the Fourier recurrence of :func:`analytic.smooth.fourier_recurrence`
+    (``u = sum a_k e^{i k theta}``), truncated where its decaying solution has fallen below
+    ``10^-(dps + 5)``, and the zero in ``c = (T/T0)^2`` of the truncated determinant near
+    ``start`` (two guesses ``T``; default the square wave's tuning ``n/2``).  Even orders: the
+    upper chain ``k = 2, 3, ...`` (one value, twice: the interval is closed; order 2 is ``T =
+    1``); odd orders: ``k = 1/2, 3/2, ...`` with ``a_-k = +-e^{i k pi} a_k`` (the solutions even
+    and odd about ``t = T/4``).  A cross-check of the certified route, not itself proven."""
+    n = as_order(order)
+    mm = exact_fraction(as_depth(m))
+    f = _fourier_compiled()
+    with mpmath.workdps(dps + 10):
+        mq = mpmath.mpf(mm.numerator) / mm.denominator
+        lam = (1 - mpmath.sqrt(1 - mq * mq)) / mq
+        K = int((dps + 5) * mpmath.log(10) / -mpmath.log(lam)) + n + 20
+        guesses = start if start is not None else (mpmath.mpf(n) / 2,) * 2
+
+        def det(c, first, k0):
+            # P_j = d_j P_{j-1} - up(k_j - 1) down(k_j) P_{j-2}, normalised by k^2 each row
+            p_prev, p = mpmath.mpf(1), first(c)
+            kk = k0
+            for _ in range(K):
+                kk += 1
+                dk, _, dn = f(kk, c, mq)
+                _, upk, _ = f(kk - 1, c, mq)
+                p_prev, p = p, (dk * p - upk * dn * p_prev)
+                s = kk * kk
+                p_prev, p = p_prev / s, p / s
+            return mpmath.re(p)
+
+        if n == 2:
+            return mpmath.mpf(1), mpmath.mpf(1)
+        if n % 2 == 0:
+            k0 = mpmath.mpf(2)
+
+            def first(c):
+                return f(k0, c, mq)[0]
+
+            roots = [
+                mpmath.findroot(lambda c: det(c, first, k0), mpmath.mpf(g) ** 2, verify=False)
+                for g in guesses[:1]
+            ]
+            T = mpmath.sqrt(roots[0])
+            return T, T
+        out = []
+        k0 = mpmath.mpf(1) / 2
+        for sign, g in zip((1, -1), guesses, strict=True):
+
+            def first(c, sign=sign):
+                dk = f(k0, c, mq)[0]
+                upm = f(-k0, c, mq)[1]  # a_{-1/2} into row 1/2
+                return dk + upm * sign * mpmath.exp(1j * mpmath.pi * k0)
+
+            c = mpmath.findroot(
+                lambda c, first=first: det(c, first, k0), mpmath.mpf(g) ** 2, verify=False
+            )
+            out.append(mpmath.sqrt(c))
+        out.sort()
+        return out[0], out[1]
