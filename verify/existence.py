@@ -721,8 +721,9 @@ def _polish_top(h, top, bits: int, a: float, b: float):
 def _negative_on_box(h, budget: int, top=None, narrow: bool = False) -> bool:
     """``D < 0`` on the whole bracket ``[a, b]`` for every depth of the range (the parameters are
     balls): by bisection (:func:`verify.certify.prove_sign`), else by Taylor's bound around the
-    float maximiser ``t`` (any point will do): on a ball ``X`` around ``t`` where ``D'' < 0``,
-    ``D <= D(t) + D'(t)^2 / (2 |sup D''(X)|)``, and bisection outside ``X``."""
+    float maximiser ``t`` (any point will do; :func:`verify.hump.taylor_negative`)."""
+    from .hump import taylor_negative
+
     top = h.top if top is None else top
     t = (
         top
@@ -738,29 +739,11 @@ def _negative_on_box(h, budget: int, top=None, narrow: bool = False) -> bool:
                 return False
             if not Dt < 0:
                 continue
-            rho = (h.b - h.a) / 4
-            for _ in range(30):
-                lo, hi = max(tf - rho, h.a), min(tf + rho, h.b)
-                X = arb(ball_of(0.5 * (lo + hi)), 0.5 * (hi - lo) * (1 + 2.0**-40))
-                d2 = h.d2D(X)
-                if d2 < 0:
-                    bound = Dt + D1t * D1t / (2 * abs(d2.upper()))
-                    if bound < 0:
-                        return (
-                            lo <= h.a
-                            or prove_sign(h.D, h.dD, h.a, lo, -1, prec=prec, budget=budget)
-                        ) and (
-                            hi >= h.b
-                            or prove_sign(h.D, h.dD, hi, h.b, -1, prec=prec, budget=budget)
-                        )
-                rho /= 4
+            proven = taylor_negative(h, tf, Dt, D1t, 30, prec, budget)
+            if proven is not None:
+                return proven
     # no usable maximiser: bisection alone
     return prove_sign(h.D, h.dD, h.a, h.b, -1, prec=64, budget=budget)
-
-
-def ball_of(x: float) -> arb:
-    """A float as an exact ball."""
-    return arb(x)
 
 
 def _breakpoints(

@@ -65,6 +65,7 @@ __all__ = [
     "trace_phase",
     "prove_no_window",
     "prove_negative",
+    "taylor_negative",
     "depth_ball",
     "box_prec",
     "normal_damped",
@@ -179,27 +180,31 @@ def prove_negative(
             Dt, D1t = h.D(t), h.dD(t)
             if Dt > 0:
                 return False
-            if Dt < 0:
-                rho = (h.b - h.a) / 4
-                for _ in range(60):
-                    lo, hi = max(float(t) - rho, h.a), min(float(t) + rho, h.b)
-                    X = arb(ball(0.5 * (lo + hi)), 0.5 * (hi - lo) * (1 + 2.0**-40))
-                    d2 = h.d2D(X)
-                    if d2 < 0:
-                        bound = Dt + D1t * D1t / (2 * abs(d2.upper()))
-                        if bound < 0:
-                            if (
-                                lo <= h.a
-                                or prove_sign(h.D, h.dD, h.a, lo, -1, prec=64, budget=10 * budget)
-                            ) and (
-                                hi >= h.b
-                                or prove_sign(h.D, h.dD, hi, h.b, -1, prec=64, budget=10 * budget)
-                            ):
-                                return True
-                            break
-                    rho /= 4
+            if Dt < 0 and taylor_negative(h, float(t), Dt, D1t, 60, 64, 10 * budget):
+                return True
         prec *= 2
     return False
+
+
+def taylor_negative(h: _Hump, t: float, Dt, D1t, tries: int, prec: int, budget: int) -> bool | None:
+    """``D < 0`` on all of ``[a, b]`` from ``D(t) = Dt < 0`` and ``D'(t) = D1t`` near the
+    maximiser ``t``: on a ball ``X`` around ``t`` where ``D'' < 0``, ``D <= D(t) + D'(t)^2 / (2
+    |sup D''(X)|)``, and bisection (:func:`verify.certify.prove_sign` at ``prec``, ``budget``)
+    outside ``X``.  ``X`` shrinks by 4 up to ``tries`` times.  ``True``: proven; ``False``: the
+    bound holds on ``X`` but a side was not proven; ``None``: no such ``X``."""
+    rho = (h.b - h.a) / 4
+    for _ in range(tries):
+        lo, hi = max(t - rho, h.a), min(t + rho, h.b)
+        X = arb(ball(0.5 * (lo + hi)), 0.5 * (hi - lo) * (1 + 2.0**-40))
+        d2 = h.d2D(X)
+        if d2 < 0:
+            bound = Dt + D1t * D1t / (2 * abs(d2.upper()))
+            if bound < 0:
+                return (
+                    lo <= h.a or prove_sign(h.D, h.dD, h.a, lo, -1, prec=prec, budget=budget)
+                ) and (hi >= h.b or prove_sign(h.D, h.dD, hi, h.b, -1, prec=prec, budget=budget))
+        rho /= 4
+    return None
 
 
 def _solve_hump(req: Request, h: _Hump, bits: int):
