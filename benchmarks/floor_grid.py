@@ -214,9 +214,9 @@ def scenes(quick: bool) -> list[dict]:
 
 
 def _main(argv=None) -> int:  # pragma: no cover - a measurement
-    import statistics
     import sys
-    import time
+
+    from floors import measure  # run as a script: this directory is on sys.path
 
     argv = argv if argv is not None else sys.argv[1:]
     quick = "--quick" in argv
@@ -224,14 +224,8 @@ def _main(argv=None) -> int:  # pragma: no cover - a measurement
     for sc in scenes(quick):
         if only and not any(o in sc["name"] for o in only):
             continue
-        sc["ours"](), sc["floor"]()
-        to, tf = [], []
-        for _ in range(3 if "10^7" in sc["name"] else (5 if quick else 9)):
-            for fn, acc in ((sc["ours"], to), (sc["floor"], tf)):
-                t = time.process_time()
-                fn()
-                acc.append(time.process_time() - t)
-        a, b = statistics.median(to), statistics.median(tf)
+        n = 3 if "10^7" in sc["name"] else (5 if quick else 9)
+        a, b = measure(sc["ours"], sc["floor"], samples=n, min_time=0)
         print(
             f"{sc['name']:<40} ours {a * 1e3:9.2f} ms  floor {b * 1e3:9.2f} ms  "
             f"ratio {a / b:5.2f}  target {sc['target']}",

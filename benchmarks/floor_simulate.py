@@ -94,20 +94,14 @@ def scenes(quick: bool) -> list[dict]:
 
 
 def _main(argv=None) -> int:  # pragma: no cover - a measurement
-    import statistics
     import sys
-    import time
+
+    from floors import measure  # run as a script: this directory is on sys.path
 
     argv = argv if argv is not None else sys.argv[1:]
     for sc in scenes("--quick" in argv):
-        sc["ours"](), sc["floor"]()
-        to, tf = [], []
-        for _ in range(3 if "--quick" not in argv else 5):
-            for fn, acc in ((sc["ours"], to), (sc["floor"], tf)):
-                t = time.process_time()
-                fn()
-                acc.append(time.process_time() - t)
-        a, b = statistics.median(to), statistics.median(tf)
+        n = 3 if "--quick" not in argv else 5
+        a, b = measure(sc["ours"], sc["floor"], samples=n, min_time=0)
         print(
             f"{sc['name']:<40} ours {a * 1e3:9.1f} ms  floor {b * 1e3:9.1f} ms  "
             f"ratio {a / b:5.2f}  target {sc['target']}",

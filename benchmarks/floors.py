@@ -39,7 +39,6 @@ import datetime
 import importlib.util
 import json
 import os
-import platform
 import statistics
 import sys
 import time
@@ -99,27 +98,11 @@ def measure(ours, floor, *, samples: int = 9, kind: str = "cpu", min_time: float
 
 
 def _machine() -> dict:
-    import flint
-    import mpmath
-    import numpy
+    """:func:`reports.benchmark.machine` and the load of this run."""
+    from reports.benchmark import machine
 
-    cpu = platform.processor() or platform.machine()
-    try:
-        for line in Path("/proc/cpuinfo").read_text().splitlines():
-            if line.startswith("model name"):
-                cpu = line.split(":", 1)[1].strip()
-                break
-    except OSError:
-        pass
-    return {
-        "cpu": cpu,
-        "cores": os.cpu_count(),
-        "load": round(os.getloadavg()[0], 1) if hasattr(os, "getloadavg") else None,
-        "python": platform.python_version(),
-        "numpy": numpy.__version__,
-        "mpmath": mpmath.__version__,
-        "python-flint": flint.__version__,
-    }
+    load = round(os.getloadavg()[0], 1) if hasattr(os, "getloadavg") else None
+    return {**machine(), "load": load}
 
 
 def run(quick: bool = False, only: str | None = None, progress=None) -> dict:

@@ -20,8 +20,8 @@ from fractions import Fraction
 
 import mpmath
 import pytest
+from cli_run import run_cli as run
 
-from reports.cli import main
 from verify import auto
 from verify.inputs import InputError
 from verify.solve import boundary
@@ -258,12 +258,6 @@ def test_bad_requests():
 
 # ---------------------------------------------------------------------------------------------
 # command line
-
-
-def run(capsys, *argv):
-    code = main(list(argv))
-    out, err = capsys.readouterr()
-    return code, out, err
 
 
 def test_cli_boundary_tol(capsys):

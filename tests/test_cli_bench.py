@@ -12,9 +12,9 @@ import json
 from fractions import Fraction
 
 import pytest
+from cli_run import run_cli as run
 
 from reports import benchmark as bench
-from reports.cli import main
 
 TINY = [bench.Scene(2, Fraction(1, 10))]
 
@@ -41,12 +41,6 @@ def tiny(monkeypatch):
 
     monkeypatch.setattr(bench, "run", fake)
     return seen
-
-
-def run(capsys, *argv):
-    code = main(list(argv))
-    out, err = capsys.readouterr()
-    return code, out, err
 
 
 def test_text(capsys, tiny):

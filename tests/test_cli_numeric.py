@@ -11,15 +11,10 @@ import io
 import json
 
 import pytest
+from cli_run import run_cli as run
 
 from reports.cli import main
 from verify.solve import boundary
-
-
-def run(capsys, *argv):
-    code = main(list(argv))
-    out, err = capsys.readouterr()
-    return code, out, err
 
 
 def test_boundary_text_and_json(capsys):

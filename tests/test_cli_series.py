@@ -8,17 +8,12 @@ import sys
 
 import pytest
 import sympy as sp
+from cli_run import run_cli as run
 
 from analytic.expansions import edge_series
 from reports.cli import main
 
 m = sp.Symbol("m")
-
-
-def run(capsys, *argv):
-    code = main(list(argv))
-    out, err = capsys.readouterr()
-    return code, out, err
 
 
 def test_series_json_format_and_values(capsys):

@@ -2,7 +2,7 @@
 
 References are built in this file from the printed per-edge equations (13) and (25), ``(q+1)
 f(omega_av T/2) = eps (q-1) f(Delta omega T/4)`` with ``q`` from eq. (14), and from the period map
-of the free oscillations and the jumps -- not from analytic/.
+of the free oscillations and the jumps (``tests/pendulum_monodromy.py``) -- not from analytic/.
 """
 
 from __future__ import annotations
@@ -14,6 +14,7 @@ import mpmath
 import numpy as np
 import pytest
 import sympy as sp
+from pendulum_monodromy import monodromy_mp
 
 import analytic.catalogue_series  # noqa: F401  (registers the rows)
 from analytic.catalogue import _REGISTRY as ROWS
@@ -29,23 +30,6 @@ def factor_mp(T, mm, order, eps):
     q = ((1 + mm) / (1 - mm)) ** mpmath.mpf(1.5)
     f = mpmath.cos if order % 2 else mpmath.sin
     return (q + 1) * f((w1 + w2) * T / 4) - eps * (q - 1) * f((w2 - w1) * T / 4)
-
-
-def monodromy_mp(T, mm):
-    w1 = 2 * mpmath.pi / mpmath.sqrt(1 + mm)
-    w2 = 2 * mpmath.pi / mpmath.sqrt(1 - mm)
-
-    def U(w, t):
-        c, s = mpmath.cos(w * t), mpmath.sin(w * t)
-        return mpmath.matrix([[c, s / w], [-w * s, c]])
-
-    k = ((1 + mm) / (1 - mm)) ** 2
-    return (
-        mpmath.matrix([[1, 0], [0, 1 / k]])
-        * U(w2, T / 2)
-        * mpmath.matrix([[1, 0], [0, k]])
-        * U(w1, T / 2)
-    )
 
 
 # ------------------------------------------------------------------------------------ the theorem

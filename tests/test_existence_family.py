@@ -15,11 +15,11 @@ from fractions import Fraction
 
 import mpmath
 import pytest
+from cli_run import run_cli as run
 from floquet_tangency import peak_growth, tangency
 
 from analytic.closings import closings
 from analytic.system import system
-from reports.cli import main
 from verify.existence import closing_depths, existence
 from verify.inputs import InputError
 from verify.params import NEAR_CRITICAL
@@ -150,12 +150,6 @@ def test_custom_system_is_refused():
         existence(1, 7, system=system("custom", omega_sq=("4/5", "6/5")))
     with pytest.raises(InputError, match="duty"):
         existence(1, 7, system="torsion", duty="1")
-
-
-def run(capsys, *argv):
-    code = main(list(argv))
-    out, err = capsys.readouterr()
-    return code, out, err
 
 
 def test_cli_existence_takes_the_system(capsys):

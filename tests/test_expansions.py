@@ -1,11 +1,12 @@
 """Series of the interval edges in m: the paper's expansions, closed forms in n, and the error
-against high-precision roots computed independently (monodromy trace, built in this file)."""
+against high-precision roots computed independently (monodromy trace, built in the tests)."""
 
 from __future__ import annotations
 
 import mpmath
 import pytest
 import sympy as sp
+from pendulum_monodromy import monodromy_mp
 
 from analytic.expansions import (
     MAX_TERMS,
@@ -29,22 +30,10 @@ m, pi, n = S.m, sp.pi, S.n
 
 
 def trace_condition(T, mm, sigma):
-    """``tr M - 2 sigma`` from the period map built here from the free oscillations and the jumps
-    (omega_i = 2 pi/sqrt(1 -+ m), J ~ (1 -+ m)^2): independent of analytic/."""
-    w1 = 2 * mpmath.pi / mpmath.sqrt(1 + mm)
-    w2 = 2 * mpmath.pi / mpmath.sqrt(1 - mm)
-
-    def U(w, t):
-        c, s = mpmath.cos(w * t), mpmath.sin(w * t)
-        return mpmath.matrix([[c, s / w], [-w * s, c]])
-
-    k = ((1 + mm) / (1 - mm)) ** 2
-    M = (
-        mpmath.matrix([[1, 0], [0, 1 / k]])
-        * U(w2, T / 2)
-        * mpmath.matrix([[1, 0], [0, k]])
-        * U(w1, T / 2)
-    )
+    """``tr M - 2 sigma`` from the period map built from the free oscillations and the jumps
+    (``tests/pendulum_monodromy.py``: omega_i = 2 pi/sqrt(1 -+ m), J ~ (1 -+ m)^2): independent
+    of analytic/."""
+    M = monodromy_mp(T, mm)
     return M[0, 0] + M[1, 1] - 2 * sigma
 
 

@@ -10,6 +10,7 @@ from fractions import Fraction as F
 import mpmath
 import pytest
 import sympy as sp
+from cli_run import run_cli as _cli
 from flint import arb, ctx
 
 from analytic import ramp as ar
@@ -302,14 +303,6 @@ def test_jump_validity_answer():
 
 # ---------------------------------------------------------------------------------------------
 # command line
-
-
-def _cli(capsys, *argv):
-    from reports.cli import main
-
-    rc = main(list(argv))
-    out = capsys.readouterr()
-    return rc, out.out, out.err
 
 
 def test_cli_boundary_ramp(capsys):

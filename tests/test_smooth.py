@@ -12,6 +12,7 @@ from fractions import Fraction as F
 import mpmath
 import pytest
 import sympy as sp
+from cli_run import run_cli as _cli
 from flint import arb, ctx
 
 from analytic import smooth as asm
@@ -183,14 +184,6 @@ def test_sine_edge_is_a_zero_of_the_half_map():
 
 # ---------------------------------------------------------------------------------------------
 # command line
-
-
-def _cli(capsys, *argv):
-    from reports.cli import main
-
-    rc = main(list(argv))
-    out = capsys.readouterr()
-    return rc, out.out, out.err
 
 
 def test_cli_boundary_sine(capsys):

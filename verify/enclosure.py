@@ -1,12 +1,14 @@
 """From proven balls of the unknown to the result: parameters at the working precision, the
 accuracy each unknown needs, and :func:`edges_result`, which turns the two enclosed roots into a
-:class:`verify.result.Boundary` (``T/T0`` and the offsets as balls, every radius proven)."""
+:class:`verify.result.Boundary` (``T/T0`` and the offsets as balls, every radius proven; from
+such balls, however found, :func:`balls_result`)."""
 
 from __future__ import annotations
 
 import math
 from functools import lru_cache
 
+import mpmath
 from flint import arb, ctx
 
 from .certify import CertificationError, to_mpf, upper_mpf
@@ -18,6 +20,7 @@ __all__ = [
     "theta_scale",
     "theta_floor",
     "edges_result",
+    "balls_result",
     "no_interval",
 ]
 
@@ -96,34 +99,67 @@ def edges_result(
             pi = arb.pi()
             Ts = [2 * p.Q * z / pi for z in (th_lo, th_hi)]
             ds = [T - arb(n) / (2 * p.w0) for T in Ts]
-        rad = max(x.rad() for x in Ts + ds)
-        radii = tuple(upper_mpf(arb(x.rad())) for x in Ts + ds)
         for T in Ts:
             if not T.rad() <= T.abs_lower() * arb(2) ** (-bits):  # pragma: no cover - guard
                 raise CertificationError(f"enclosure of T too wide: {T}")
-        vals = [to_mpf(x) for x in Ts + ds]
-        encl = [(to_mpf(arb(x.lower())), to_mpf(arb(x.upper()))) for x in Ts]
-        radius = upper_mpf(arb(rad))
+        return balls_result(
+            Ts + ds,
+            order=n,
+            m=req.m,
+            Q=req.Q,
+            damping=req.damping,
+            digits=req.digits,
+            method=method,
+            regime=regime,
+            system=req.system,
+            notes=notes,
+            certified=certified,
+        )
+
+
+def balls_result(
+    balls,
+    *,
+    order,
+    m,
+    Q,
+    damping,
+    digits,
+    method,
+    regime,
+    system,
+    notes=(),
+    certified=True,
+) -> Boundary:
+    """The result from four balls: ``T/T0`` of the lower and the upper edge and their offsets.
+    The numbers are the midpoints (exactly), ``radii`` the balls' radii and ``radius`` the largest
+    (rounded up), the enclosures of the edges the balls' ends (exactly: midpoint -+ radius)."""
+    radii = tuple(upper_mpf(arb(x.rad())) for x in balls)
+    vals = [to_mpf(x) for x in balls]
+    encl = [
+        (mpmath.fsub(v, r, exact=True), mpmath.fadd(v, r, exact=True))
+        for v, r in zip(vals[:2], radii[:2], strict=True)
+    ]
     return Boundary(
-        order=n,
-        m=req.m,
-        Q=req.Q,
-        damping=req.damping,
-        digits=req.digits,
+        order=order,
+        m=m,
+        Q=Q,
+        damping=damping,
+        digits=digits,
         method=method,
         exists=True,
         lower=vals[0],
         upper=vals[1],
         delta_lower=vals[2],
         delta_upper=vals[3],
-        radius=radius,
+        radius=max(radii),
         lower_enclosure=encl[0],
         upper_enclosure=encl[1],
         certified=certified,
         regime=regime,
         notes=tuple(notes),
         radii=radii,
-        system=req.system,
+        system=system,
     )
 
 

@@ -39,7 +39,7 @@ from flint import arb, ctx
 
 from analytic.system import PAPER, System
 
-from .certify import CertificationError, Jet, bits_for_digits, certified_root, prove_sign, to_mpf
+from .certify import CertificationError, bits_for_digits, certified_root, prove_sign, to_mpf
 from .derived import backend
 from .inputs import InputError, as_damping, as_digits, as_order, as_quality, as_system
 from .params import NEAR_CRITICAL, exact_fraction, form_for, normal_params, trace_params
@@ -52,7 +52,6 @@ __all__ = [
     "absence_reason",
     "max_indicator",
     "closing_depths",
-    "family_hump_box",
 ]
 
 
@@ -598,10 +597,8 @@ def _decide(
     if kind != "normal" and not system.is_paper:
         return None
     try:
-        if kind == "normal" and system.is_paper:
-            h = hump_box(n, lo, hi, Q, damping, float_stage=fl)
-        elif kind == "normal":
-            h = family_hump_box(n, lo, hi, Q, damping, system, float_stage=fl)
+        if kind == "normal":
+            h = hump_box(n, lo, hi, Q, damping, float_stage=fl, system=system)
         else:
             h, why = hump_trace(n, mid, Q, regimes, m_box=(lo, hi))
             if h is None and n == 1 and regimes[1] != "under":
@@ -644,90 +641,6 @@ def _decide(
     except (ValueError, ZeroDivisionError, OverflowError):  # pragma: no cover - guard
         return 0
     return 0
-
-
-def family_hump_box(
-    n: int, lo: Fraction, hi: Fraction, Q: Fraction, damping: str, system: System, float_stage=None
-):
-    """:func:`verify.solve.hump_box` for any member of the family: ``D``, ``D'``, ``D''`` of the
-    normal form for every depth of ``[lo, hi]`` at once, by the mean-value form in ``m`` with the
-    slopes from jets (:class:`verify.certify.Jet`) of the system's generated parameters
-    (:func:`verify.system_params.normal_jets`).  The middle is :func:`verify.solve.hump_normal`
-    at the exact middle depth; the bracket is the whole window."""
-    from analytic.stitching import Parity
-
-    from .derived import indicator
-    from .enclosure import AtPrecision
-    from .hump import _Hump, _hump_near_one, box_prec, depth_ball, hump_normal
-    from .params import NEAR_ONE, NormalParams
-    from .system_params import normal_jets
-
-    mid = (lo + hi) / 2
-    if float_stage is None:
-        float_stage = _float_stages(n, [(mid, mid)], Q, damping, system)[0]
-    fl = float_stage
-    hm, _ = hump_normal(n, mid, Q, damping, 64, m_box=(mid, mid), float_stage=fl, system=system)
-    box = (lo, hi)
-
-    def jets():
-        Qb = arb(Q.numerator) / Q.denominator
-        return NormalParams(**normal_jets(system, Jet(depth_ball(box), 1), Jet(Qb), damping))
-
-    P = AtPrecision(jets, box_prec(box))
-    C = AtPrecision(lambda: arb.pi() * n / 2)
-    if fl["bm"] < NEAR_ONE:
-        hj = _hump_near_one(n, P, fl, math.pi / 2, C, None, check=False)
-    else:
-        form = indicator(Parity.of(n))
-        D0, D1, D2 = (form.compiled("arb", k) for k in (0, 1, 2))
-
-        def args():
-            p = P()
-            return (C(), p.r2, p.u, p.beta, p.g)
-
-        hj = _Hump(
-            D=lambda t: D0(t, *args()),
-            dD=lambda t: D1(t, *args()),
-            d2D=lambda t: D2(t, *args()),
-            a=hm.a,
-            b=hm.b,
-            top=hm.top,
-            dtop=hm.dtop,
-            lo=hm.lo,
-            hi=hm.hi,
-            floor=hm.floor,
-        )
-    if hj.variable != hm.variable:  # pragma: no cover - both follow the float stage's bm
-        raise CertificationError("the middle and the jets use different variables")
-    dM = AtPrecision(lambda: depth_ball(box) - arb(mid.numerator) / mid.denominator, box_prec(box))
-
-    def mv(f0, f1):
-        def g(t):
-            v = f1(t)
-            slope = v.d if isinstance(v, Jet) else 0
-            return f0(t) + slope * dM()
-
-        return g
-
-    if hm.variable == "y":
-        a, b = 0.0, math.nextafter(math.pi, 4.0)
-    else:
-        a, b = math.nextafter(-math.pi / 2, -2.0), math.nextafter(math.pi / 2, 2.0)
-    return _Hump(
-        D=mv(hm.D, hj.D),
-        dD=mv(hm.dD, hj.dD),
-        d2D=mv(hm.d2D, hj.d2D),
-        a=a,
-        b=b,
-        top=hm.top,
-        dtop=hm.dtop,
-        lo=hm.lo,
-        hi=hm.hi,
-        floor=hm.floor,
-        shifts=hm.shifts,
-        variable=hm.variable,
-        point=hm,
-    )
 
 
 def _box_trace_params(lo, hi, Q):
@@ -808,8 +721,9 @@ def _polish_top(h, top, bits: int, a: float, b: float):
 def _negative_on_box(h, budget: int, top=None, narrow: bool = False) -> bool:
     """``D < 0`` on the whole bracket ``[a, b]`` for every depth of the range (the parameters are
     balls): by bisection (:func:`verify.certify.prove_sign`), else by Taylor's bound around the
-    float maximiser ``t`` (any point will do): on a ball ``X`` around ``t`` where ``D'' < 0``,
-    ``D <= D(t) + D'(t)^2 / (2 |sup D''(X)|)``, and bisection outside ``X``."""
+    float maximiser ``t`` (any point will do; :func:`verify.hump.taylor_negative`)."""
+    from .hump import taylor_negative
+
     top = h.top if top is None else top
     t = (
         top
@@ -825,29 +739,11 @@ def _negative_on_box(h, budget: int, top=None, narrow: bool = False) -> bool:
                 return False
             if not Dt < 0:
                 continue
-            rho = (h.b - h.a) / 4
-            for _ in range(30):
-                lo, hi = max(tf - rho, h.a), min(tf + rho, h.b)
-                X = arb(ball_of(0.5 * (lo + hi)), 0.5 * (hi - lo) * (1 + 2.0**-40))
-                d2 = h.d2D(X)
-                if d2 < 0:
-                    bound = Dt + D1t * D1t / (2 * abs(d2.upper()))
-                    if bound < 0:
-                        return (
-                            lo <= h.a
-                            or prove_sign(h.D, h.dD, h.a, lo, -1, prec=prec, budget=budget)
-                        ) and (
-                            hi >= h.b
-                            or prove_sign(h.D, h.dD, hi, h.b, -1, prec=prec, budget=budget)
-                        )
-                rho /= 4
+            proven = taylor_negative(h, tf, Dt, D1t, 30, prec, budget)
+            if proven is not None:
+                return proven
     # no usable maximiser: bisection alone
     return prove_sign(h.D, h.dD, h.a, h.b, -1, prec=64, budget=budget)
-
-
-def ball_of(x: float) -> arb:
-    """A float as an exact ball."""
-    return arb(x)
 
 
 def _breakpoints(

@@ -53,10 +53,10 @@ from .derived import (
 )
 from .enclosure import AtPrecision, edges_result, no_interval, sgn_of, theta_floor
 from .float_stage import normal_float_stage
-from .inputs import InputError
-from .params import NEAR_ONE, normal_params, trace_params
+from .params import NEAR_ONE, NormalParams, normal_params, trace_params
 from .request import Request
 from .result import Boundary
+from .system_params import normal_jets
 
 __all__ = [
     "hump_normal",
@@ -65,6 +65,7 @@ __all__ = [
     "trace_phase",
     "prove_no_window",
     "prove_negative",
+    "taylor_negative",
     "depth_ball",
     "box_prec",
     "normal_damped",
@@ -179,27 +180,31 @@ def prove_negative(
             Dt, D1t = h.D(t), h.dD(t)
             if Dt > 0:
                 return False
-            if Dt < 0:
-                rho = (h.b - h.a) / 4
-                for _ in range(60):
-                    lo, hi = max(float(t) - rho, h.a), min(float(t) + rho, h.b)
-                    X = arb(ball(0.5 * (lo + hi)), 0.5 * (hi - lo) * (1 + 2.0**-40))
-                    d2 = h.d2D(X)
-                    if d2 < 0:
-                        bound = Dt + D1t * D1t / (2 * abs(d2.upper()))
-                        if bound < 0:
-                            if (
-                                lo <= h.a
-                                or prove_sign(h.D, h.dD, h.a, lo, -1, prec=64, budget=10 * budget)
-                            ) and (
-                                hi >= h.b
-                                or prove_sign(h.D, h.dD, hi, h.b, -1, prec=64, budget=10 * budget)
-                            ):
-                                return True
-                            break
-                    rho /= 4
+            if Dt < 0 and taylor_negative(h, float(t), Dt, D1t, 60, 64, 10 * budget):
+                return True
         prec *= 2
     return False
+
+
+def taylor_negative(h: _Hump, t: float, Dt, D1t, tries: int, prec: int, budget: int) -> bool | None:
+    """``D < 0`` on all of ``[a, b]`` from ``D(t) = Dt < 0`` and ``D'(t) = D1t`` near the
+    maximiser ``t``: on a ball ``X`` around ``t`` where ``D'' < 0``, ``D <= D(t) + D'(t)^2 / (2
+    |sup D''(X)|)``, and bisection (:func:`verify.certify.prove_sign` at ``prec``, ``budget``)
+    outside ``X``.  ``X`` shrinks by 4 up to ``tries`` times.  ``True``: proven; ``False``: the
+    bound holds on ``X`` but a side was not proven; ``None``: no such ``X``."""
+    rho = (h.b - h.a) / 4
+    for _ in range(tries):
+        lo, hi = max(t - rho, h.a), min(t + rho, h.b)
+        X = arb(ball(0.5 * (lo + hi)), 0.5 * (hi - lo) * (1 + 2.0**-40))
+        d2 = h.d2D(X)
+        if d2 < 0:
+            bound = Dt + D1t * D1t / (2 * abs(d2.upper()))
+            if bound < 0:
+                return (
+                    lo <= h.a or prove_sign(h.D, h.dD, h.a, lo, -1, prec=prec, budget=budget)
+                ) and (hi >= h.b or prove_sign(h.D, h.dD, hi, h.b, -1, prec=prec, budget=budget))
+        rho /= 4
+    return None
 
 
 def _solve_hump(req: Request, h: _Hump, bits: int):
@@ -329,13 +334,13 @@ def hump_normal(
         fl, bm = float_stage, float_stage["bm"]
     form = indicator(parity)
     D0, D1, D2 = (form.compiled("arb", k) for k in (0, 1, 2))
-    if jet and not system.is_paper:  # pragma: no cover - existence is the paper's for now
-        raise InputError(f"proven existence is derived for the paper's system, not {system.label}")
     if jet:  # parameters as jets in m over the range (for the mean-value form, hump_box)
 
         def jets():
-            Qb = arb(Q.numerator) / Q.denominator
-            return normal_params(Jet(depth_ball(m_box), 1), Jet(Qb), damping, _ARB)
+            M, Qb = Jet(depth_ball(m_box), 1), Jet(arb(Q.numerator) / Q.denominator)
+            if system.is_paper:
+                return normal_params(M, Qb, damping, _ARB)
+            return NormalParams(**normal_jets(system, M, Qb, damping))
 
         P = AtPrecision(jets, box_prec(m_box))
     else:
@@ -381,21 +386,35 @@ def hump_normal(
     return h, P
 
 
-def hump_box(n: int, lo: Fraction, hi: Fraction, Q: Fraction, damping: str, float_stage=None):
+def hump_box(
+    n: int,
+    lo: Fraction,
+    hi: Fraction,
+    Q: Fraction,
+    damping: str,
+    float_stage=None,
+    system=PAPER,
+):
     """The normal-form friction problem for every depth of ``[lo, hi]`` at once: ``D``, ``D'``,
     ``D''`` (in ``theta``, or ``y`` near ``m = 1``) enclosed by the mean-value form in ``m``,
     ``f(M) in f(mid) + f_m(M) (M - mid)``, with ``f_m`` from jets (:class:`verify.certify.Jet`)
     over the ball ``M`` of the range -- far tighter than evaluating with ``M`` itself, where the
-    parameters' dependence on ``m`` is counted many times.  The bracket is the whole window
+    parameters' dependence on ``m`` is counted many times.  Any member of the family (``system``;
+    its jets from :func:`verify.system_params.normal_jets`).  The bracket is the whole window
     (rounded outward).  The float stage is that of the middle."""
     mid = (lo + hi) / 2
     if float_stage is None:
-        pm = normal_params(mid, Q, damping, _MATH)
+        pm = normal_params(mid, Q, damping, _MATH, system)
         float_stage = normal_float_stage(n, pm)
         float_stage["bm"] = float(pm.bm)
     # the middle as an exact ball: arb arithmetic instead of long rationals
-    hm, _ = hump_normal(n, mid, Q, damping, 64, m_box=(mid, mid), float_stage=float_stage)
-    hj, _ = hump_normal(n, mid, Q, damping, 64, m_box=(lo, hi), float_stage=float_stage, jet=True)
+    fl = float_stage
+    hm, _ = hump_normal(n, mid, Q, damping, 64, m_box=(mid, mid), float_stage=fl, system=system)
+    hj, _ = hump_normal(
+        n, mid, Q, damping, 64, m_box=(lo, hi), float_stage=fl, jet=True, system=system
+    )
+    if hj.variable != hm.variable:  # pragma: no cover - both follow the float stage's bm
+        raise CertificationError("the middle and the jets use different variables")
 
     def dm():
         return depth_ball((lo, hi)) - (arb(mid.numerator) / mid.denominator)

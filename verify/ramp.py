@@ -340,7 +340,7 @@ class _Paths:
 def ramp_boundary(order, m, S, *, duty="1/2", digits=30, _jump_result=None) -> RampEdges:
     """The certified edges of the ``order``-th interval with linear ramps of duration ``S``
     (``0 <= S <= min(D, 1 - D) T`` at the lower edge; a longer ramp is refused)."""
-    from .result import Boundary
+    from .enclosure import balls_result
 
     n = as_order(order)
     sysv = as_system("pendulum", duty)
@@ -412,11 +412,6 @@ def ramp_boundary(order, m, S, *, duty="1/2", digits=30, _jump_result=None) -> R
         jl, ju = _ball(jump.lower, rad[0]), _ball(jump.upper, rad[1])
         dl = (lo - jl) + _ball(jump.delta_lower, rad[2])
         du = (hi - ju) + _ball(jump.delta_upper, rad[3])
-    with mpmath.workdps(d + 10):
-        vals = [to_mpf(x) for x in (lo, hi, dl, du)]
-        radii = tuple(upper_mpf(arb(x.rad())) for x in (lo, hi, dl, du))
-        # the ends exactly (arb's endpoints; no rounding to mpmath's working precision)
-        encl = [(to_mpf(arb(x.lower())), to_mpf(arb(x.upper()))) for x in (lo, hi)]
     notes = [
         f"linear ramps of the length lasting S = {_text(SS)} T0 at each switch "
         f"(S = 0: the jump model); edges are the zeros of {names[0]} and {names[1]} "
@@ -424,26 +419,17 @@ def ramp_boundary(order, m, S, *, duty="1/2", digits=30, _jump_result=None) -> R
     ]
     if lo.overlaps(hi):
         notes.append("the two edges could not be separated at this precision")
-    b = Boundary(
+    b = balls_result(
+        (lo, hi, dl, du),
         order=n,
         m=mm,
         Q=None,
         damping="exact",
         digits=d,
         method="certified",
-        exists=True,
-        lower=vals[0],
-        upper=vals[1],
-        delta_lower=vals[2],
-        delta_upper=vals[3],
-        radius=max(radii),
-        lower_enclosure=encl[0],
-        upper_enclosure=encl[1],
-        certified=True,
         regime=f"ramp modulation, S = {_text(SS)}, Bessel route",
-        notes=tuple(notes),
-        radii=radii,
         system=sysv,
+        notes=notes,
     )
     jl_b, ju_b = _ball(jump.lower, rad[0]), _ball(jump.upper, rad[1])
     if swap:

@@ -36,7 +36,7 @@ from functools import cache
 import mpmath
 from flint import arb, arb_series, ctx, fmpq
 
-from .certify import CertificationError, bits_for_digits, to_mpf, upper_mpf
+from .certify import CertificationError, bits_for_digits
 from .inputs import InputError, as_depth, as_digits, as_order
 from .params import exact_fraction
 from .taylor import flow
@@ -365,7 +365,7 @@ def sine_boundary(order, m, *, digits=30):
     wave's tuning at the same depth, as for every modulation)."""
     from analytic.system import system as make_system
 
-    from .solve import Boundary
+    from .enclosure import balls_result
 
     n = as_order(order)
     mm = exact_fraction(as_depth(m))
@@ -381,15 +381,6 @@ def sine_boundary(order, m, *, digits=30):
         balls, names = balls[::-1], names[::-1]
     lo, hi = balls
     sysv = make_system("pendulum")
-    with ctx.workprec(bits + 16), mpmath.workdps(d + 10):
-        # the square wave's tuning n T_av/2 = n pi/omega_av (the offsets' reference)
-        w1, w2 = (arb(fmpq(w.numerator, w.denominator)).sqrt() for w in sysv.values(mm)[:2])
-        half = n / (w1 + w2)
-        parts = (lo, hi, lo - half, hi - half)
-        vals = [to_mpf(x) for x in parts]
-        radii = tuple(upper_mpf(arb(x.rad())) for x in parts)
-        # the ends exactly (arb's endpoints; no rounding to mpmath's working precision)
-        encl = [(to_mpf(arb(x.lower())), to_mpf(arb(x.upper()))) for x in (lo, hi)]
     notes = [
         "sine modulation l = 1 + m sin(2 pi t/T); edges are zeros of "
         f"{names[0]} and {names[1]} of the half-period map, each enclosed by a proven sign "
@@ -398,27 +389,22 @@ def sine_boundary(order, m, *, digits=30):
     ]
     if lo.overlaps(hi):
         notes.append("the two edges could not be separated at this precision")
-    return Boundary(
-        order=n,
-        m=mm,
-        Q=None,
-        damping="exact",
-        digits=d,
-        method="certified",
-        exists=True,
-        lower=vals[0],
-        upper=vals[1],
-        delta_lower=vals[2],
-        delta_upper=vals[3],
-        radius=max(radii),
-        lower_enclosure=encl[0],
-        upper_enclosure=encl[1],
-        certified=True,
-        regime="sine modulation, validated Taylor route",
-        notes=tuple(notes),
-        radii=radii,
-        system=sysv,
-    )
+    with ctx.workprec(bits + 16):
+        # the square wave's tuning n T_av/2 = n pi/omega_av (the offsets' reference)
+        w1, w2 = (arb(fmpq(w.numerator, w.denominator)).sqrt() for w in sysv.values(mm)[:2])
+        half = n / (w1 + w2)
+        return balls_result(
+            (lo, hi, lo - half, hi - half),
+            order=n,
+            m=mm,
+            Q=None,
+            damping="exact",
+            digits=d,
+            method="certified",
+            regime="sine modulation, validated Taylor route",
+            system=sysv,
+            notes=notes,
+        )
 
 
 def check_sine(system, duty, Q=None) -> None:

@@ -265,23 +265,29 @@ def run(args) -> int:
     # error_bound: |printed - exact| for each number of the row, the rounding of the print included
     header += ["delta_lower", "delta_upper", "error_bound"] if certified else []
     header += ["method"] if tol is not None else []
+    # what the columns are and how they were computed: in the JSON, or beside a CSV file
+    about = {
+        "orders": orders,
+        "Q": Qtext,
+        "damping": damping if Q is not None else "none",
+        "digits": digits if digits is not None else (None if tol is not None else GRID_DIGITS),
+        "method": "auto" if tol is not None else ("certified" if certified else "grid"),
+        "columns": header,
+    }
+    inputs: dict = {}
+    if kind != "square":
+        inputs["modulation"] = kind
+        if S is not None:
+            inputs["switch_time"] = decimal_text(S)
+    if tol is not None:
+        inputs["tolerance"] = args.tol.strip()
     if args.format == "json":
         doc = {
             **sysv.as_json(),
-            "orders": orders,
-            "Q": Qtext,
-            "damping": damping if Q is not None else "none",
-            "digits": digits if digits is not None else (None if tol is not None else GRID_DIGITS),
-            "method": "auto" if tol is not None else ("certified" if certified else "grid"),
-            "columns": header,
+            **about,
             "rows": [[r[0], decimal_text(r[1])] + list(r[2:]) for r in data],
+            **inputs,
         }
-        if kind != "square":
-            doc["modulation"] = kind
-            if S is not None:
-                doc["switch_time"] = decimal_text(S)
-        if tol is not None:
-            doc["tolerance"] = args.tol.strip()
         text = json.dumps(doc, indent=2) + "\n"
     else:
         buf = io.StringIO()
@@ -297,21 +303,9 @@ def run(args) -> int:
             meta = {
                 "generated_by": BANNER.format(what="table"),
                 "file": os.path.basename(args.output),
-                "orders": orders,
-                "Q": Qtext,
-                "damping": damping if Q is not None else "none",
-                "digits": (
-                    digits if digits is not None else (None if tol is not None else GRID_DIGITS)
-                ),
-                "method": "auto" if tol is not None else ("certified" if certified else "grid"),
-                "columns": header,
+                **about,
+                **inputs,
             }
-            if kind != "square":
-                meta["modulation"] = kind
-                if S is not None:
-                    meta["switch_time"] = decimal_text(S)
-            if tol is not None:
-                meta["tolerance"] = args.tol.strip()
             atomic_write(sidecar(args.output), json.dumps(meta, indent=2) + "\n")
         atomic_write(args.output, text)
     else:

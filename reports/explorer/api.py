@@ -164,11 +164,17 @@ def _boundary_doc(p: dict) -> dict:
     n = as_order(p["order"])
     if n > LIMITS["max_order"][1] * 10:
         raise InputError(f"order {n} is outside the explorer's range 1 to 120")
+    return _certified_doc(certified, n, p, sysv)
+
+
+def _certified_doc(certified, first, p: dict, sysv) -> dict:
+    """``certified(first, m, ...)`` (:func:`verify.modulation.boundary` or ``multipliers``) with
+    the query's depth, friction, modulation and digits, as JSON (with the modulation)."""
     m = _depth(p, sysv)
     Q, damping = _friction(p)
     mod, S = _modulation(p)
-    b = certified(
-        n,
+    res = certified(
+        first,
         m,
         Q=Q,
         damping=damping,
@@ -177,7 +183,7 @@ def _boundary_doc(p: dict) -> dict:
         modulation=mod,
         switch_time=S,
     )
-    doc = b.as_json()
+    doc = res.as_json()
     doc["modulation"] = mod
     if S is not None:
         doc["switch_time"] = str(S).strip()
@@ -196,25 +202,7 @@ def _multipliers_doc(p: dict) -> dict:
     sysv = _system(p)
     if "T" not in p:
         raise InputError("T is required (the modulation period T/T0 > 0)")
-    T = _period(p["T"])
-    m = _depth(p, sysv)
-    Q, damping = _friction(p)
-    mod, S = _modulation(p)
-    mu = certified(
-        T,
-        m,
-        Q=Q,
-        damping=damping,
-        digits=_digits(p),
-        system=sysv,
-        modulation=mod,
-        switch_time=S,
-    )
-    doc = mu.as_json()
-    doc["modulation"] = mod
-    if S is not None:
-        doc["switch_time"] = str(S).strip()
-    return doc
+    return _certified_doc(certified, _period(p["T"]), p, sysv)
 
 
 def nearest_order(T, m, Q, damping, sysv, max_order: int = 12) -> int:
