@@ -43,7 +43,11 @@ __all__ = [
     "ball",
     "bits_for_digits",
     "Jet",
+    "QUICK_GUARD",
 ]
+
+#: bits above the accuracy asked for at which :func:`quick_root` runs its proof
+QUICK_GUARD = 30
 
 
 class CertificationError(ArithmeticError):
@@ -65,16 +69,31 @@ def bits_for_digits(digits: int) -> int:
     return int(math.ceil(digits * math.log2(10)))
 
 
+def _exact_mpf(x: arb) -> mpmath.mpf:
+    """The exact ball ``x`` (radius zero) as an mpmath number."""
+    man, exp = x.man_exp()
+    man = int(man)
+    if man & 1:  # arb gives the odd mantissa: already mpmath's normal form
+        raw = (
+            (0, man, int(exp), man.bit_length())
+            if man > 0
+            else (1, -man, int(exp), (-man).bit_length())
+        )
+        return _make_mpf(raw)
+    return _make_mpf(from_man_exp(man, int(exp)))
+
+
+_make_mpf = mpmath.mp.make_mpf
+
+
 def to_mpf(x: arb) -> mpmath.mpf:
     """The midpoint of ``x`` as an mpmath number, exactly (no rounding to the mpmath context)."""
-    man, exp = x.mid().man_exp()
-    return mpmath.mp.make_mpf(from_man_exp(int(man), int(exp)))
+    return _exact_mpf(x.mid())
 
 
 def upper_mpf(x: arb) -> mpmath.mpf:
     """An mpmath number ``>= |x|`` for every point of the ball (its upper magnitude bound)."""
-    man, exp = x.abs_upper().man_exp()
-    return mpmath.mp.make_mpf(from_man_exp(int(man), int(exp)))
+    return _exact_mpf(x.abs_upper())
 
 
 def ball(mid, rad=0) -> arb:
@@ -236,7 +255,7 @@ def quick_root(
     precision evaluation is that of the proof, not a further midpoint step.  The enclosure must
     meet the radius that :func:`certified_root` promises (``2**-bits`` relative to ``scale`` or
     ``max(|root|, floor)``)."""
-    work = bits + 30
+    work = bits + QUICK_GUARD
     need = (bits + 12) // 2 + 1
     x = arb(x0)
     acc = start_bits
@@ -320,7 +339,8 @@ class Jet:
     gives, with the value, an enclosure of its derivative with respect to one parameter (the
     derivative over a whole ball when the parameter's jet is ``Jet(ball, 1)``).  Supports what the
     compiled forms use: ``+ - * /``, powers with integer exponents, ``sqrt``, ``sin``, ``cos``,
-    ``sinh``, ``cosh``.  Used for the mean-value form ``f(M) in f(mid) + f'(M) (M - mid)``."""
+    ``sinh``, ``cosh`` and the pairs ``sin_cos``, ``sinh_cosh``.  Used for the mean-value form
+    ``f(M) in f(mid) + f'(M) (M - mid)``."""
 
     __slots__ = ("v", "d")
 
@@ -399,6 +419,14 @@ class Jet:
 
     def cos(self):
         return Jet(self.v.cos(), -self.v.sin() * self.d)
+
+    def sin_cos(self):
+        s, c = self.v.sin_cos()
+        return Jet(s, c * self.d), Jet(c, -s * self.d)
+
+    def sinh_cosh(self):
+        s, c = self.v.sinh_cosh()
+        return Jet(s, c * self.d), Jet(c, s * self.d)
 
     def sinh(self):
         return Jet(self.v.sinh(), self.v.cosh() * self.d)

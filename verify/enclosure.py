@@ -23,21 +23,41 @@ __all__ = [
 
 
 class AtPrecision:
-    """Numbers recomputed for every working precision (``flint.ctx.prec``), cached."""
+    """Numbers recomputed for every working precision (``flint.ctx.prec``), cached.
 
-    def __init__(self, make, min_prec: int = 0):
+    With ``rounded=True`` the value (an ``arb`` or a dataclass of them) is computed once at the
+    highest precision asked for so far, and a lower precision takes it rounded from there (a ball
+    rounded outward still holds the exact value): one evaluation instead of one per precision."""
+
+    def __init__(self, make, min_prec: int = 0, rounded: bool = False):
         self._make = make
         self._cache: dict[int, object] = {}
         self._min = min_prec  # e.g. what a depth range needs to keep 1 - m
+        self._rounded = rounded
+        self._top = -1  # the highest precision computed (rounded=True)
 
     def __call__(self):
         prec = ctx.prec
         val = self._cache.get(prec)
         if val is None:
             with ctx.workprec(max(prec, self._min) + 12):
-                val = self._make()
+                if prec < self._top:
+                    val = _round(self._cache[self._top])
+                else:
+                    val = self._make()
+                    if self._rounded:
+                        self._top = prec
             self._cache[prec] = val
         return val
+
+
+def _round(v):
+    """``v`` (an ``arb``, a tuple or a dataclass of numbers) rounded to the working precision."""
+    if type(v) is arb:
+        return +v
+    if type(v) is tuple:
+        return tuple(_round(x) for x in v)
+    return type(v)(**{k: (+x if type(x) is arb else x) for k, x in vars(v).items()})
 
 
 def sgn_of(n: int) -> int:
@@ -96,14 +116,16 @@ def edges_result(
             pi = arb.pi()
             Ts = [2 * p.Q * z / pi for z in (th_lo, th_hi)]
             ds = [T - arb(n) / (2 * p.w0) for T in Ts]
-        rad = max(x.rad() for x in Ts + ds)
-        radii = tuple(upper_mpf(arb(x.rad())) for x in Ts + ds)
+        balls = Ts + ds
+        rads = [x.rad() for x in balls]
+        radii = tuple(upper_mpf(x) for x in rads)
+        radius = radii[max(range(4), key=rads.__getitem__)]  # the largest radius
+        tol = arb(2) ** (-bits)
         for T in Ts:
-            if not T.rad() <= T.abs_lower() * arb(2) ** (-bits):  # pragma: no cover - guard
+            if not T.rad() <= T.abs_lower() * tol:  # pragma: no cover - guard
                 raise CertificationError(f"enclosure of T too wide: {T}")
-        vals = [to_mpf(x) for x in Ts + ds]
-        encl = [(to_mpf(arb(x.lower())), to_mpf(arb(x.upper()))) for x in Ts]
-        radius = upper_mpf(arb(rad))
+        vals = [to_mpf(x) for x in balls]
+        encl = [(to_mpf(x.lower()), to_mpf(x.upper())) for x in Ts]
     return Boundary(
         order=n,
         m=req.m,

@@ -342,8 +342,9 @@ def hump_normal(
         P = AtPrecision(
             lambda: _params_at(m, Q, damping, m_box, partial(normal_params, system=system)),
             box_prec(m_box) if m_box else 0,
+            rounded=True,
         )
-    C = AtPrecision(lambda: arb.pi() * n / 2)
+    C = AtPrecision(lambda: arb.pi() * n / 2, rounded=True)
 
     def args():
         p = P()
@@ -550,6 +551,7 @@ def hump_trace(
     P = AtPrecision(
         lambda: _params_at(m, Q, None, m_box, partial(trace_params, system=system)),
         box_prec(m_box) if m_box else 0,
+        rounded=True,
     )
     sigma = -1 if n % 2 else 1
 
