@@ -414,7 +414,9 @@ def growth_factor(
     Above 1 inside an interval of instability; 1 on its edges and outside it without friction;
     ``exp(-gamma T)`` outside it with friction.
     """
-    mu = floquet_multipliers(m, tau, Q, damping, backend=backend, dps=dps, system=system, duty=duty)
+    mu = floquet_multipliers(
+        m, tau, Q, damping, backend=backend, dps=dps, system=system, duty=duty
+    )
     if backend == "numpy":
         return np.abs(mu).max(axis=-1)
     with mpmath.workdps(_digits(dps)):

@@ -446,3 +446,4 @@ def _edge_kind(n: int, m, tau) -> str:
     factors = _edge_factors(-1 if n % 2 else 1)
     vals = {kind: abs(f(_mp(m), tau)) for kind, f in factors.items()}
     return min(vals, key=vals.get).value
+
