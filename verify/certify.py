@@ -40,6 +40,7 @@ __all__ = [
     "prove_sign",
     "to_mpf",
     "upper_mpf",
+    "exact_mpf",
     "ball",
     "bits_for_digits",
     "Jet",
@@ -69,7 +70,7 @@ def bits_for_digits(digits: int) -> int:
     return int(math.ceil(digits * math.log2(10)))
 
 
-def _exact_mpf(x: arb) -> mpmath.mpf:
+def exact_mpf(x: arb) -> mpmath.mpf:
     """The exact ball ``x`` (radius zero) as an mpmath number."""
     man, exp = x.man_exp()
     man = int(man)
@@ -88,12 +89,12 @@ _make_mpf = mpmath.mp.make_mpf
 
 def to_mpf(x: arb) -> mpmath.mpf:
     """The midpoint of ``x`` as an mpmath number, exactly (no rounding to the mpmath context)."""
-    return _exact_mpf(x.mid())
+    return exact_mpf(x.mid())
 
 
 def upper_mpf(x: arb) -> mpmath.mpf:
     """An mpmath number ``>= |x|`` for every point of the ball (its upper magnitude bound)."""
-    return _exact_mpf(x.abs_upper())
+    return exact_mpf(x.abs_upper())
 
 
 def ball(mid, rad=0) -> arb:
@@ -272,8 +273,8 @@ def quick_root(
             if lo is not None and not lo < x < hi:
                 return None
     with ctx.workprec(work):
-        size = max(abs(x), arb(floor))
-        delta = (size * arb(2) ** (4 - acc)).abs_upper()
+        size = max(abs(x), floor if type(floor) is arb else arb(floor))
+        delta = (size * arb((1, 4 - acc))).abs_upper()
         X = arb(x, delta)
         dX = dF(X)
         if dX.contains(0) or not dX.is_finite():
@@ -285,7 +286,7 @@ def quick_root(
             want = size
         else:
             want = arb(scale(float(x)) if callable(scale) else scale)
-        if not N.rad() <= (want * arb(2) ** (-bits)).abs_lower():
+        if not N.rad() <= (want * arb((1, -bits))).abs_lower():
             return None
         return Root(N, X, work)
 

@@ -9,7 +9,7 @@ from functools import lru_cache
 
 from flint import arb, ctx
 
-from .certify import CertificationError, to_mpf, upper_mpf
+from .certify import CertificationError, exact_mpf, to_mpf
 from .result import Boundary
 
 __all__ = [
@@ -110,22 +110,25 @@ def edges_result(
         elif theta:
             pi = arb.pi()
             half = arb(n) / 2
+            pw = pi * p.w
             Ts = [(half + th / pi) / p.w for th in (th_lo, th_hi)]
-            ds = [th / (pi * p.w) + half * p.dinv for th in (th_lo, th_hi)]
+            ds = [th / pw for th in (th_lo, th_hi)]
+            if not p.dinv.is_zero():  # 1/w - 1/w0 (the exact model with friction)
+                ds = [d + half * p.dinv for d in ds]
         else:
             pi = arb.pi()
             Ts = [2 * p.Q * z / pi for z in (th_lo, th_hi)]
             ds = [T - arb(n) / (2 * p.w0) for T in Ts]
         balls = Ts + ds
-        rads = [x.rad() for x in balls]
-        radii = tuple(upper_mpf(x) for x in rads)
+        rads = [x.rad() for x in balls]  # exact
+        radii = tuple(exact_mpf(x) for x in rads)
         radius = radii[max(range(4), key=rads.__getitem__)]  # the largest radius
-        tol = arb(2) ** (-bits)
-        for T in Ts:
-            if not T.rad() <= T.abs_lower() * tol:  # pragma: no cover - guard
+        tol = arb((1, -bits))
+        for T, rad in zip(Ts, rads, strict=False):
+            if not rad <= T.abs_lower() * tol:  # pragma: no cover - guard
                 raise CertificationError(f"enclosure of T too wide: {T}")
         vals = [to_mpf(x) for x in balls]
-        encl = [(to_mpf(x.lower()), to_mpf(x.upper())) for x in Ts]
+        encl = [(exact_mpf(x.lower()), exact_mpf(x.upper())) for x in Ts]
     return Boundary(
         order=n,
         m=req.m,
