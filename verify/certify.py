@@ -72,16 +72,12 @@ def bits_for_digits(digits: int) -> int:
 
 def exact_mpf(x: arb) -> mpmath.mpf:
     """The exact ball ``x`` (radius zero) as an mpmath number."""
-    man, exp = x.man_exp()
-    man = int(man)
+    fman, fexp = x.man_exp()
+    man, exp = int(fman), int(fexp)
     if man & 1:  # arb gives the odd mantissa: already mpmath's normal form
-        raw = (
-            (0, man, int(exp), man.bit_length())
-            if man > 0
-            else (1, -man, int(exp), (-man).bit_length())
-        )
+        raw = (0, man, exp, man.bit_length()) if man > 0 else (1, -man, exp, (-man).bit_length())
         return _make_mpf(raw)
-    return _make_mpf(from_man_exp(man, int(exp)))
+    return _make_mpf(from_man_exp(man, exp))
 
 
 _make_mpf = mpmath.mp.make_mpf
