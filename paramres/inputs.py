@@ -10,6 +10,7 @@ from __future__ import annotations
 import math
 import re
 from fractions import Fraction
+from functools import lru_cache
 
 import mpmath
 
@@ -77,6 +78,9 @@ def as_number(value, *, name: str, allowed: str) -> Fraction:
     if not isinstance(value, str):
         raise InputError(f"{name} = {value!r} is not a number; allowed range {allowed}")
     text = value.strip()
+    parsed = _parsed(text)
+    if parsed is not None:
+        return parsed
     shown = text if len(text) <= 60 else text[:40] + "..." + text[-10:]
     if len(text) > MAX_NUMBER_TEXT:
         raise InputError(
@@ -96,6 +100,24 @@ def as_number(value, *, name: str, allowed: str) -> Fraction:
         return Fraction(text)
     except ZeroDivisionError:
         raise InputError(f"{name} = {shown} divides by zero; allowed range {allowed}") from None
+
+
+@lru_cache(maxsize=1024)
+def _parsed(text: str) -> Fraction | None:
+    """The exact value of a well-formed number text (as :func:`as_number` checks it), or
+    ``None`` for anything :func:`as_number` must refuse (it then words the message)."""
+    if len(text) > MAX_NUMBER_TEXT:
+        return None
+    mt = _NUMBER.fullmatch(text)
+    if not mt:
+        return None
+    exponent = mt.group(4)
+    if exponent is not None and abs(int(exponent)) > MAX_EXPONENT:
+        return None
+    try:
+        return Fraction(text)
+    except ZeroDivisionError:
+        return None
 
 
 class InputError(ValueError):

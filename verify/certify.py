@@ -40,10 +40,15 @@ __all__ = [
     "prove_sign",
     "to_mpf",
     "upper_mpf",
+    "exact_mpf",
     "ball",
     "bits_for_digits",
     "Jet",
+    "QUICK_GUARD",
 ]
+
+#: bits above the accuracy asked for at which :func:`quick_root` runs its proof
+QUICK_GUARD = 30
 
 
 class CertificationError(ArithmeticError):
@@ -65,16 +70,27 @@ def bits_for_digits(digits: int) -> int:
     return int(math.ceil(digits * math.log2(10)))
 
 
+def exact_mpf(x: arb) -> mpmath.mpf:
+    """The exact ball ``x`` (radius zero) as an mpmath number."""
+    fman, fexp = x.man_exp()
+    man, exp = int(fman), int(fexp)
+    if man & 1:  # arb gives the odd mantissa: already mpmath's normal form
+        raw = (0, man, exp, man.bit_length()) if man > 0 else (1, -man, exp, (-man).bit_length())
+        return _make_mpf(raw)
+    return _make_mpf(from_man_exp(man, exp))
+
+
+_make_mpf = mpmath.mp.make_mpf
+
+
 def to_mpf(x: arb) -> mpmath.mpf:
     """The midpoint of ``x`` as an mpmath number, exactly (no rounding to the mpmath context)."""
-    man, exp = x.mid().man_exp()
-    return mpmath.mp.make_mpf(from_man_exp(int(man), int(exp)))
+    return exact_mpf(x.mid())
 
 
 def upper_mpf(x: arb) -> mpmath.mpf:
     """An mpmath number ``>= |x|`` for every point of the ball (its upper magnitude bound)."""
-    man, exp = x.abs_upper().man_exp()
-    return mpmath.mp.make_mpf(from_man_exp(int(man), int(exp)))
+    return exact_mpf(x.abs_upper())
 
 
 def ball(mid, rad=0) -> arb:
@@ -236,7 +252,7 @@ def quick_root(
     precision evaluation is that of the proof, not a further midpoint step.  The enclosure must
     meet the radius that :func:`certified_root` promises (``2**-bits`` relative to ``scale`` or
     ``max(|root|, floor)``)."""
-    work = bits + 30
+    work = bits + QUICK_GUARD
     need = (bits + 12) // 2 + 1
     x = arb(x0)
     acc = start_bits
@@ -253,8 +269,8 @@ def quick_root(
             if lo is not None and not lo < x < hi:
                 return None
     with ctx.workprec(work):
-        size = max(abs(x), arb(floor))
-        delta = (size * arb(2) ** (4 - acc)).abs_upper()
+        size = max(abs(x), floor if type(floor) is arb else arb(floor))
+        delta = (size * arb((1, 4 - acc))).abs_upper()
         X = arb(x, delta)
         dX = dF(X)
         if dX.contains(0) or not dX.is_finite():
@@ -266,7 +282,7 @@ def quick_root(
             want = size
         else:
             want = arb(scale(float(x)) if callable(scale) else scale)
-        if not N.rad() <= (want * arb(2) ** (-bits)).abs_lower():
+        if not N.rad() <= (want * arb((1, -bits))).abs_lower():
             return None
         return Root(N, X, work)
 
@@ -320,7 +336,8 @@ class Jet:
     gives, with the value, an enclosure of its derivative with respect to one parameter (the
     derivative over a whole ball when the parameter's jet is ``Jet(ball, 1)``).  Supports what the
     compiled forms use: ``+ - * /``, powers with integer exponents, ``sqrt``, ``sin``, ``cos``,
-    ``sinh``, ``cosh``.  Used for the mean-value form ``f(M) in f(mid) + f'(M) (M - mid)``."""
+    ``sinh``, ``cosh`` and the pairs ``sin_cos``, ``sinh_cosh``.  Used for the mean-value form
+    ``f(M) in f(mid) + f'(M) (M - mid)``."""
 
     __slots__ = ("v", "d")
 
@@ -399,6 +416,14 @@ class Jet:
 
     def cos(self):
         return Jet(self.v.cos(), -self.v.sin() * self.d)
+
+    def sin_cos(self):
+        s, c = self.v.sin_cos()
+        return Jet(s, c * self.d), Jet(c, -s * self.d)
+
+    def sinh_cosh(self):
+        s, c = self.v.sinh_cosh()
+        return Jet(s, c * self.d), Jet(c, s * self.d)
 
     def sinh(self):
         return Jet(self.v.sinh(), self.v.cosh() * self.d)

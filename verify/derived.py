@@ -155,6 +155,8 @@ _BACKENDS = {
         "sqrt": lambda z: z.sqrt(),
         "atan2": lambda a, b: arb.atan2(a, b),
         "asin": lambda z: z.asin(),
+        "sin_cos": lambda z: z.sin_cos(),
+        "sinh_cosh": lambda z: z.sinh_cosh(),
         "_q": _arb_q,
         "_pi": arb.pi,
     },
@@ -230,14 +232,47 @@ class Form:
             exprs,
             modules=[backend(name).namespace],
             printer=_printer(),
-            cse=many,
+            cse=many or name == "arb",  # arb: every evaluation counts (and pairs are shared)
             docstring_limit=0,
         )
         text = inspect.getsource(fn)
         names = {}
-        return re.sub(
+        text = re.sub(
             r"_?Dummy_\d+", lambda mt: names.setdefault(mt.group(0), f"_d{len(names)}"), text
         )
+        return share_pairs(text) if "sin_cos" in backend(name).namespace else text
+
+
+_PAIRS = (("sin", "cos", "sin_cos"), ("sinh", "cosh", "sinh_cosh"))
+
+
+def share_pairs(text: str) -> str:
+    """A compiled form's text with each ``sin(v)``, ``cos(v)`` of one name ``v`` (an argument or
+    a common subexpression) computed by one ``sin_cos(v)`` call (likewise ``sinh``/``cosh`` by
+    ``sinh_cosh``): one evaluation of the pair costs about what one of them does (arb).  The
+    values are the same functions of ``v``; only the work is shared."""
+    lines = text.split("\n")
+    head = lines[0]  # def _lambdifygenerated(args):
+    params = [a.strip() for a in head[head.index("(") + 1 : head.rindex(")")].split(",")]
+    for f, g, both in _PAIRS:
+        pat_f = re.compile(rf"(?<![\w.]){f}\((\w+)\)")
+        pat_g = re.compile(rf"(?<![\w.]){g}\((\w+)\)")
+        body = "\n".join(lines[1:])
+        shared = sorted(set(pat_f.findall(body)) & set(pat_g.findall(body)))
+        for v in shared:
+            fv, gv = f"_{f}_{v}", f"_{g}_{v}"
+            call = f"{fv}, {gv} = {both}({v})"
+            out = [head] if v in params else []
+            for line in lines[1:] if v in params else lines:
+                line = re.sub(rf"(?<![\w.]){f}\({v}\)", fv, line)
+                line = re.sub(rf"(?<![\w.]){g}\({v}\)", gv, line)
+                out.append(line)
+                if v not in params and line.startswith(f"    {v} = "):
+                    out.append(f"    {call}")
+            if v in params:
+                out.insert(1, f"    {call}")
+            lines = out
+    return "\n".join(lines)
 
 
 def load_source(text: str, name: str, orders=0):

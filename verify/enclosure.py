@@ -11,7 +11,7 @@ from functools import lru_cache
 import mpmath
 from flint import arb, ctx
 
-from .certify import CertificationError, to_mpf, upper_mpf
+from .certify import CertificationError, exact_mpf, to_mpf
 from .result import Boundary
 
 __all__ = [
@@ -26,21 +26,41 @@ __all__ = [
 
 
 class AtPrecision:
-    """Numbers recomputed for every working precision (``flint.ctx.prec``), cached."""
+    """Numbers recomputed for every working precision (``flint.ctx.prec``), cached.
 
-    def __init__(self, make, min_prec: int = 0):
+    With ``rounded=True`` the value (an ``arb`` or a dataclass of them) is computed once at the
+    highest precision asked for so far, and a lower precision takes it rounded from there (a ball
+    rounded outward still holds the exact value): one evaluation instead of one per precision."""
+
+    def __init__(self, make, min_prec: int = 0, rounded: bool = False):
         self._make = make
         self._cache: dict[int, object] = {}
         self._min = min_prec  # e.g. what a depth range needs to keep 1 - m
+        self._rounded = rounded
+        self._top = -1  # the highest precision computed (rounded=True)
 
     def __call__(self):
         prec = ctx.prec
         val = self._cache.get(prec)
         if val is None:
             with ctx.workprec(max(prec, self._min) + 12):
-                val = self._make()
+                if prec < self._top:
+                    val = _round(self._cache[self._top])
+                else:
+                    val = self._make()
+                    if self._rounded:
+                        self._top = prec
             self._cache[prec] = val
         return val
+
+
+def _round(v):
+    """``v`` (an ``arb``, a tuple or a dataclass of numbers) rounded to the working precision."""
+    if type(v) is arb:
+        return +v
+    if type(v) is tuple:
+        return tuple(_round(x) for x in v)
+    return type(v)(**{k: (+x if type(x) is arb else x) for k, x in vars(v).items()})
 
 
 def sgn_of(n: int) -> int:
@@ -93,14 +113,18 @@ def edges_result(
         elif theta:
             pi = arb.pi()
             half = arb(n) / 2
+            pw = pi * p.w
             Ts = [(half + th / pi) / p.w for th in (th_lo, th_hi)]
-            ds = [th / (pi * p.w) + half * p.dinv for th in (th_lo, th_hi)]
+            ds = [th / pw for th in (th_lo, th_hi)]
+            if not p.dinv.is_zero():  # 1/w - 1/w0 (the exact model with friction)
+                ds = [d + half * p.dinv for d in ds]
         else:
             pi = arb.pi()
             Ts = [2 * p.Q * z / pi for z in (th_lo, th_hi)]
             ds = [T - arb(n) / (2 * p.w0) for T in Ts]
+        tol = arb((1, -bits))
         for T in Ts:
-            if not T.rad() <= T.abs_lower() * arb(2) ** (-bits):  # pragma: no cover - guard
+            if not T.rad() <= T.abs_lower() * tol:  # pragma: no cover - guard
                 raise CertificationError(f"enclosure of T too wide: {T}")
         return balls_result(
             Ts + ds,
@@ -132,9 +156,9 @@ def balls_result(
     certified=True,
 ) -> Boundary:
     """The result from four balls: ``T/T0`` of the lower and the upper edge and their offsets.
-    The numbers are the midpoints (exactly), ``radii`` the balls' radii and ``radius`` the largest
-    (rounded up), the enclosures of the edges the balls' ends (exactly: midpoint -+ radius)."""
-    radii = tuple(upper_mpf(arb(x.rad())) for x in balls)
+    The numbers are the midpoints (exactly), ``radii`` the balls' radii (exactly) and ``radius``
+    the largest, the enclosures of the edges the balls' ends (exactly: midpoint -+ radius)."""
+    radii = tuple(exact_mpf(x.rad()) for x in balls)
     vals = [to_mpf(x) for x in balls]
     encl = [
         (mpmath.fsub(v, r, exact=True), mpmath.fadd(v, r, exact=True))

@@ -34,6 +34,7 @@ from flint import arb, ctx
 from analytic.system import PAPER
 
 from .certify import (
+    QUICK_GUARD,
     CertificationError,
     Jet,
     ball,
@@ -98,6 +99,8 @@ class _Hump:
     variable: str = "theta"  # or "y" = theta + pi/2 (near m = 1)
     #: for a range of depths (:func:`hump_box`): the hump at its middle depth
     point: object = None
+    #: ``(D, D')`` in one evaluation (shared subexpressions), where there is one
+    DdD: Callable | None = None
 
 
 def _prove_shape(h: _Hump, lo_root, hi_root) -> bool:
@@ -257,15 +260,25 @@ def _solve_hump(req: Request, h: _Hump, bits: int):
 
     neg = lambda t: -h.D(t)  # noqa: E731
     dneg = lambda t: -h.dD(t)  # noqa: E731
+    if h.DdD is not None:
+        both = h.DdD
+
+        def both_neg(t):
+            v, d = h.DdD(t)
+            return -v, -d
+
+    else:
+        both = lambda t: (h.D(t), h.dD(t))  # noqa: E731
+        both_neg = lambda t: (neg(t), dneg(t))  # noqa: E731
     roots = []
-    for F, dF, x0, (a, b), fine in (
-        (h.D, h.dD, lo0, (h.a, top), math.isfinite(h.lo)),
-        (neg, dneg, hi0, (top, h.b), math.isfinite(h.hi)),
+    for F, dF, FD, x0, (a, b), fine in (
+        (h.D, h.dD, both, lo0, (h.a, top), math.isfinite(h.lo)),
+        (neg, dneg, both_neg, hi0, (top, h.b), math.isfinite(h.hi)),
     ):
         root = None
         if fine:  # a float edge from the float stage: the fast path (None where it fails)
             root = quick_root(
-                lambda t, F=F, dF=dF: (F(t), dF(t)),
+                FD,
                 F,
                 dF,
                 x0,
@@ -325,13 +338,6 @@ def hump_normal(
     float stage is that of ``m`` (``float_stage``: computed already, a dict as
     :func:`verify.float_stage.normal_float_stage` returns, plus ``"bm"``)."""
     parity = -1 if n % 2 else 1  # the multiplier (analytic.stitching.Parity)
-    if float_stage is None:
-        # float parameters from the exact rationals (right also next to critical damping)
-        pm = normal_params(m, Q, damping, _MATH, system)
-        fl = normal_float_stage(n, pm)
-        bm = pm.bm
-    else:
-        fl, bm = float_stage, float_stage["bm"]
     form = indicator(parity)
     D0, D1, D2 = (form.compiled("arb", k) for k in (0, 1, 2))
     if jet:  # parameters as jets in m over the range (for the mean-value form, hump_box)
@@ -347,8 +353,22 @@ def hump_normal(
         P = AtPrecision(
             lambda: _params_at(m, Q, damping, m_box, partial(normal_params, system=system)),
             box_prec(m_box) if m_box else 0,
+            rounded=True,
         )
-    C = AtPrecision(lambda: arb.pi() * n / 2)
+    C = AtPrecision(lambda: arb.pi() * n / 2, rounded=True)
+    if float_stage is not None:
+        fl, bm = float_stage, float_stage["bm"]
+    elif jet or m_box is not None:  # pragma: no cover - ranges come with their float stage
+        pm = normal_params(m, Q, damping, _MATH, system)
+        fl, bm = normal_float_stage(n, pm), pm.bm
+    else:
+        # the parameters once, at the precision of the proof (quick_root's) or of the bracket
+        # check below, whichever is higher; lower precisions take them rounded, and the float
+        # stage their midpoints (right to the last bit, also next to critical damping)
+        with ctx.workprec(max(128, bits + QUICK_GUARD)):
+            pt = P()
+            C()
+        fl, bm = normal_float_stage(n, pt), float(pt.bm)
 
     def args():
         p = P()
@@ -370,10 +390,12 @@ def hump_normal(
             a, b = -math.pi / 2, math.pi / 2
     if bm < NEAR_ONE:
         return _hump_near_one(n, P, fl, b, C, E0, check=not jet), P
+    D01 = form.compiled("arb", (0, 1))
     h = _Hump(
         D=lambda t: D0(t, *args()),
         dD=lambda t: D1(t, *args()),
         d2D=lambda t: D2(t, *args()),
+        DdD=lambda t: D01(t, *args()),
         a=a,
         b=b,
         top=fl["top"],
@@ -569,6 +591,7 @@ def hump_trace(
     P = AtPrecision(
         lambda: _params_at(m, Q, None, m_box, partial(trace_params, system=system)),
         box_prec(m_box) if m_box else 0,
+        rounded=True,
     )
     sigma = -1 if n % 2 else 1
 

@@ -13,12 +13,23 @@ def as_system(system="pendulum", duty="1/2", omega_sq=None, jump=None):
     """A member of the family (:class:`analytic.system.System`): a name (``pendulum``,
     ``torsion``, ``meissner``, ``custom`` with ``omega_sq`` and ``jump``) or a ``System``, with the
     duty ``0 < D < 1``."""
-    from analytic.system import PAPER
+    if system == "pendulum" and duty == "1/2" and omega_sq is None and jump is None:
+        return _paper()  # the default, without parsing it again
     from analytic.system import system as make
 
-    if system == "pendulum" and duty == "1/2" and omega_sq is None and jump is None:
-        return PAPER  # the default, without parsing it again
     return make(system, duty=duty, omega_sq=omega_sq, jump=jump)
+
+
+_PAPER: list = []
+
+
+def _paper():
+    """:data:`analytic.system.PAPER`, imported on first use (kept)."""
+    if not _PAPER:
+        from analytic.system import PAPER
+
+        _PAPER.append(PAPER)
+    return _PAPER[0]
 
 
 def __getattr__(name: str):

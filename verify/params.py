@@ -133,6 +133,12 @@ def form_for(
     The normal form without friction, in the paper model, and in the exact model with both halves
     under-damped and half 1 (the low-frequency phase) not within :data:`NEAR_CRITICAL` of critical
     damping (``Omega1^2 / gamma^2 < NEAR_CRITICAL^2``); the trace form otherwise."""
+    return _form_for(m, Q, damping, system)
+
+
+@lru_cache(maxsize=256)
+def _form_for(m, Q, damping: str, system: System) -> tuple[str, tuple[str, str] | None]:
+    """:func:`form_for` (exact rational decisions: the same answer for the same arguments)."""
     if system is not PAPER and not system.is_paper:
         from .system_params import canonical
 
@@ -189,9 +195,20 @@ def _one_minus(m, om):
     return 1 - m if om is None else om
 
 
+@lru_cache(maxsize=256)
+def _rational_parts(m: Fraction) -> tuple:
+    """``1 - m`` and ``(1 - m)(1 + m)`` of an exact depth (the same at every precision)."""
+    om = 1 - m
+    return om, om * (1 + m)
+
+
 def _undamped(m, B: Backend, om=None):
-    om = _one_minus(m, om)
-    s = _root(om * (1 + m), B)
+    if om is None and type(m) is Fraction:
+        om, s2 = _rational_parts(m)
+    else:
+        om = _one_minus(m, om)
+        s2 = om * (1 + m)
+    s = _root(s2, B)
     ps = 1 + s
     beta = _lift(m, B) / ps
     b2 = beta * beta

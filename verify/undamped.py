@@ -19,7 +19,7 @@ from functools import cache
 
 from flint import arb, ctx
 
-from .certify import Root, ball, bits_for_digits, certified_root, quick_root
+from .certify import QUICK_GUARD, Root, ball, bits_for_digits, certified_root, quick_root
 from .derived import backend, edge_equation, near_one_forms, order1_forms
 from .enclosure import AtPrecision, edges_result, sgn_of, theta_floor, theta_scale
 from .float_stage import float_edge
@@ -51,11 +51,14 @@ def undamped(req: Request) -> Boundary:
     """Both edges without friction (any member of the family), certified."""
     n, bits = req.order, bits_for_digits(req.digits + 2)
     f_math, f_arb, df_arb, fd_arb = _forms(n % 2 == 1)
-    pf = normal_params(req.m, None, "exact", _MATH, req.system)
     P = AtPrecision(lambda: normal_params(req.m, None, "exact", _ARB, req.system))
     C = AtPrecision(lambda: arb.pi() * n / 2)
-    sgn = sgn_of(n)
-    if pf.bm < NEAR_ONE:
+    # the parameters once, at the precision of the proof (quick_root's); the float start and
+    # every lower precision of the Newton steps take them rounded from there
+    top = bits + QUICK_GUARD
+    with ctx.workprec(top):
+        pt, ct = P(), C()
+    if float(pt.bm) < NEAR_ONE:
         ys = sorted(
             (near_one_edge(n, eps, P, C, bits) for eps in (1, -1)),
             key=lambda r: float(r.ball.mid()),
@@ -71,24 +74,42 @@ def undamped(req: Request) -> Boundary:
             max(r.prec for r in ys),
             ys=tuple(r.ball for r in ys),
         )
+    r_f, beta_f = float(pt.r), float(pt.beta)
+    sgn = sgn_of(n)
+    rounded: dict[int, tuple] = {top: (ct, pt.r, pt.beta)}
+
+    def args():
+        """``(c, r, beta)`` at the working precision."""
+        prec = ctx.prec
+        a = rounded.get(prec)
+        if a is None:
+            if prec < top:
+                with ctx.workprec(prec + 12):
+                    a = (+ct, +pt.r, +pt.beta)
+            else:
+                p = P()
+                a = (C(), p.r, p.beta)
+            rounded[prec] = a
+        return a
+
     half = math.pi / 2
     floor = theta_floor(bits, n)
-    window = (ball(-half), ball(half))
+    window = _WINDOW
     roots = []
     for eps in (1, -1):
-        start = float_edge(f_math, n, eps, pf.r, pf.beta)
+        start = float_edge(f_math, n, eps, r_f, beta_f)
 
         def F(t, eps=eps):
-            p = P()
-            return f_arb(t, C(), sgn, eps, p.r, p.beta)
+            c, r, beta = args()
+            return f_arb(t, c, sgn, eps, r, beta)
 
         def dF(t, eps=eps):
-            p = P()
-            return df_arb(t, C(), sgn, eps, p.r, p.beta)
+            c, r, beta = args()
+            return df_arb(t, c, sgn, eps, r, beta)
 
         def FD(t, eps=eps):
-            p = P()
-            return fd_arb(t, C(), sgn, eps, p.r, p.beta)
+            c, r, beta = args()
+            return fd_arb(t, c, sgn, eps, r, beta)
 
         def scale(t):
             return theta_scale(t, n, bits)
@@ -110,6 +131,9 @@ def undamped(req: Request) -> Boundary:
         "per-edge equations",
         max(r.prec for r in roots),
     )
+
+
+_WINDOW = (ball(-math.pi / 2), ball(math.pi / 2))
 
 
 def near_one_edge(n: int, eps: int, P, C, bits: int) -> Root:
