@@ -8,8 +8,8 @@ document with its figures, written atomically and compiled when a TeX engine is 
 
 The expensive parts of each section (symbolic derivations, certified tables, boundary grids) go
 through a :class:`~analytic.cache.Cache` keyed by the source of the engine, so a second build with
-unchanged code only assembles and compiles.  A cold build runs the catalogue's derivations and
-the stitching section in a second process while this one builds the other sections
+unchanged code only assembles and compiles.  A cold build runs the catalogue, the stitching
+section and the expansions in a second process while this one builds the other sections
 (:data:`~reports.sections.SECOND_PROCESS`); each section is computed the same way in either
 process, so the document does not depend on it.
 """

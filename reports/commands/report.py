@@ -55,8 +55,9 @@ def register(subparsers) -> None:
         type=int,
         choices=(1, 2),
         default=2,
-        help="processes for a cold build: 2 (default) builds the catalogue and the stitching "
-        "section in a second process, 1 builds everything in this one; the report is the same",
+        help="processes for a cold build: 2 (default) builds the catalogue, the stitching "
+        "section and the expansions in a second process, 1 builds everything in this one; the "
+        "report is the same",
     )
     p.add_argument("--json", action="store_true", help="print what was written as JSON on stdout")
     p.add_argument("-q", "--quiet", action="store_true", help="no progress messages on stderr")

@@ -52,13 +52,14 @@ SECTIONS = (
 
 
 #: sections a cold build hands to a second process (:func:`reports.report.assemble` with
-#: ``jobs=2``), the shared results (:func:`shared`) that process returns with them, and the
-#: sections that need those results and are therefore built after it is done.  The catalogue's
-#: derivations and the stitching section share the slow reductions (:mod:`analytic.reductions`),
-#: so they go together; the other sections need neither.
-SECOND_PROCESS = ("catalogue", "stitching")
+#: ``jobs=2``), in this order, the shared results (:func:`shared`) that process returns with
+#: them, and the sections that need those results and are therefore built after it is done.  The
+#: catalogue's derivations share the slow reductions (:mod:`analytic.reductions`) with the
+#: stitching section and the threshold series (:mod:`analytic.thresholds`) with the expansions,
+#: so those go with the catalogue, after it; the other sections need neither.
+SECOND_PROCESS = ("catalogue", "stitching", "expansions")
 SECOND_SHARES = ("catalogue-rows",)
-AFTER_SECOND = ("summary", "expansions", "conclusions")
+AFTER_SECOND = ("summary", "conclusions")
 
 
 @dataclass(frozen=True)
