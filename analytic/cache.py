@@ -206,6 +206,12 @@ class Cache:
             self._secret = secret
         return self._secret
 
+    def ensure_key(self) -> None:
+        """Create the directory's key now if it has none (before several processes write entries
+        into one directory, so that they all sign with the same key)."""
+        if self.directory is not None:
+            self._secret_key(create=True)
+
     def _tag(self, secret: bytes, name: str, body: bytes) -> str:
         msg = b"\0".join((FORMAT.encode(), name.encode(), self._key().encode(), body))
         return hmac.new(secret, msg, hashlib.sha256).hexdigest()

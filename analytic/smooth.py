@@ -98,13 +98,33 @@ def system_matrix(l, g=_g, gamma=_gamma) -> sp.Matrix:
 def hill_form(l) -> sp.Expr:
     """``q(t)`` of (V3) for the length ``l(t)``, derived: ``u = l phi`` substituted in (V1) and
     the result divided by ``l`` (see :func:`check_hill_form`)."""
+    return sp.simplify(_hill_coefficient(l))
+
+
+def _hill_coefficient(l) -> sp.Expr:
+    """``q(t)`` of (V3) as derived, before simplification."""
     u = sp.Function("u")(_t)
     phi = u / l
     lhs = sp.diff(l**2 * sp.diff(phi, _t), _t) + 2 * _gamma * l**2 * sp.diff(phi, _t)
     lhs = sp.expand((lhs + _g * l * phi) / l)
     # lhs = u'' + 2 gamma u' + q u: read q off as the coefficient of u
-    q = lhs.coeff(u)
-    return sp.simplify(q)
+    return lhs.coeff(u)
+
+
+def _period_integral(expr, x) -> sp.Expr:
+    """The integral of ``expr`` over ``0 <= x <= 2 pi`` for a trigonometric polynomial in ``x``:
+    written with exponentials, every term but the constant one is ``c exp(i k x)`` with a nonzero
+    integer ``k`` and integrates to zero, so the integral is ``2 pi`` times the constant term."""
+    const = sp.S.Zero
+    for term in sp.Add.make_args(sp.expand(expr.rewrite(sp.exp))):
+        _, rest = term.as_independent(x, as_Add=False)
+        if rest == 1:
+            const += term
+            continue
+        k = rest.args[0] / (sp.I * x) if rest.func is sp.exp else None
+        if k is None or not (k.is_integer and k.is_nonzero):  # pragma: no cover - a proof
+            raise AssertionError(f"{term} is not a term of a trigonometric polynomial in {x}")
+    return 2 * sp.pi * const
 
 
 def check_hill_form(l) -> bool:
@@ -142,24 +162,26 @@ def sine_first_width() -> tuple[sp.Expr, sp.Expr]:
     Hill form (see the module's docstring)."""
     W = sp.Symbol("W", positive=True)  # Omega = 2 pi/T
     l = 1 + _m * sp.sin(W * _t)
-    q = sp.simplify(hill_form(l).subs(_gamma, 0))
-    q1 = sp.series(q, _m, 0, 2).removeO()
+    q = _hill_coefficient(l).subs(_gamma, 0)
+    # Taylor to first order in m (the coefficients as derivatives at m = 0)
+    q1 = sp.simplify(q.subs(_m, 0)) + _m * sp.simplify(sp.diff(q, _m).subs(_m, 0))
     a, b = sp.symbols("a b")
     u = a * sp.cos(W * _t / 2) + b * sp.sin(W * _t / 2)
     res = sp.diff(u, _t, 2) + q1 * u
-    period = 2 * (2 * sp.pi / W)
+    # the projections over the period 4 pi/W of u: with x = W t/2 the period is 2 pi in x and
+    # dt = 2 dx/W
+    x = sp.Symbol("x", real=True)
     eqs = []
     for basis in (sp.cos(W * _t / 2), sp.sin(W * _t / 2)):
-        proj = sp.integrate(sp.expand(sp.expand_trig(res * basis)), (_t, 0, period))
-        eqs.append(sp.expand(sp.simplify(proj)))
+        proj = _period_integral((res * basis).subs(_t, 2 * x / W), x) * 2 / W
+        eqs.append(sp.expand(proj))
     mat = sp.Matrix([[e.coeff(a) for e in eqs], [e.coeff(b) for e in eqs]]).T
     det = sp.simplify(mat.det())
     g0 = 4 * sp.pi**2
     c = sp.Symbol("c")
     # T = 1/2 + c m: Omega = 2 pi/T; the determinant vanishes to second order in m
     d = det.subs(_g, g0).subs(W, 2 * sp.pi / (sp.Rational(1, 2) + c * _m))
-    lead = sp.series(d, _m, 0, 3).removeO()
-    lead = sp.simplify(lead.coeff(_m, 2))
+    lead = sp.simplify(sp.diff(d, _m, 2).subs(_m, 0) / 2)  # the coefficient of m**2
     roots = sorted(sp.solve(sp.Eq(lead, 0), c), key=lambda r: float(r))
     if len(roots) != 2:  # pragma: no cover - a proof
         raise AssertionError(f"harmonic balance gave {roots}")

@@ -17,7 +17,8 @@ Every module ``benchmarks/floor_*.py`` defines ``scenes(quick: bool) -> list[dic
 ``note``
     one line: what the floor is;
 
-and optionally ``repeat`` (a costly scene: that many single calls per sample set),
+and optionally ``repeat`` (a costly scene: that many single calls per sample set), ``warm``
+(``False``: no warm-up call, for a scene that is cold by construction),
 ``extra`` (a callable whose JSON-ready result joins the row: errors, memory), ``kind``
 (``"cpu"``, the default: CPU time of this process, or ``"wall"``: wall time, for scenes that run
 a subprocess) and ``baseline`` (seconds per call of the same job in the
@@ -79,12 +80,16 @@ def _batch(fn, clock, min_time: float) -> int:
     return max(1, min(10_000, int(min_time / dt)))
 
 
-def measure(ours, floor, *, samples: int = 9, kind: str = "cpu", min_time: float = 0.02):
+def measure(
+    ours, floor, *, samples: int = 9, kind: str = "cpu", min_time: float = 0.02, warm: bool = True
+):
     """Medians (seconds per call) of ``ours`` and ``floor``, timed alternately.  ``floor=None``
-    (a scene whose target is absolute, in seconds): ``ours`` alone, and ``None`` for the floor."""
+    (a scene whose target is absolute, in seconds): ``ours`` alone, and ``None`` for the floor.
+    ``warm=False``: no call before the samples (a scene that is cold by construction, e.g. a
+    fresh process with an empty cache, gains nothing from one)."""
     clock = _clock(kind)
     pairs = [(ours, [])] + ([] if floor is None else [(floor, [])])
-    for fn, _ in pairs:
+    for fn, _ in pairs if warm else ():
         fn()  # warm
     ks = [_batch(fn, clock, min_time) if min_time > 0 else 1 for fn, _ in pairs]
     for _ in range(samples):
@@ -124,6 +129,7 @@ def run(quick: bool = False, only: str | None = None, progress=None) -> dict:
             samples=repeat or (5 if quick else 9),
             kind=kind,
             min_time=0 if repeat else (0.01 if quick else 0.03),
+            warm=sc.get("warm", True),
         )
         # no floor: the target is a time in seconds, and the "ratio" is ours against it
         ratio = ours_s / (floor_s if floor_s is not None else sc["target"])

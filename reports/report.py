@@ -8,7 +8,10 @@ document with its figures, written atomically and compiled when a TeX engine is 
 
 The expensive parts of each section (symbolic derivations, certified tables, boundary grids) go
 through a :class:`~analytic.cache.Cache` keyed by the source of the engine, so a second build with
-unchanged code only assembles and compiles.
+unchanged code only assembles and compiles.  A cold build runs the catalogue, the stitching
+section and the expansions in a second process while this one builds the other sections
+(:data:`~reports.sections.SECOND_PROCESS`); each section is computed the same way in either
+process, so the document does not depend on it.
 """
 
 from __future__ import annotations
@@ -28,7 +31,15 @@ from .frontmatter import provenance
 from .i18n import language
 from .latex import DEFAULT, Config, Latex, document, section
 from .output import BANNER
-from .sections import SECTIONS, Context, Part, load
+from .sections import (
+    AFTER_SECOND,
+    SECOND_PROCESS,
+    SECOND_SHARES,
+    SECTIONS,
+    Context,
+    Part,
+    load,
+)
 
 __all__ = ["TEX_NAME", "FIGURE_DIR", "Assembled", "assemble", "build_report", "tex_name"]
 
@@ -64,39 +75,161 @@ def assemble(
     *,
     lang: str = "en",
     command: str | None = None,
+    jobs: int = 1,
 ) -> Assembled:
     """Build every section and the document around them (no files written), in ``lang``;
-    ``command`` is the command line that produced the report, printed under the title."""
+    ``command`` is the command line that produced the report, printed under the title.
+    ``jobs=2`` builds the sections of :data:`~reports.sections.SECOND_PROCESS` in a second
+    process while this one builds the others (when they are not all in the cache); the document
+    is the same either way."""
     ctx = ctx or Context()
     with language(lang):
-        return _assemble(ctx, sections, lang, command)
+        return _assemble(ctx, sections, lang, command, jobs)
 
 
-def _assemble(ctx: Context, sections, lang: str, command: str | None) -> Assembled:
+def _key(name: str, lang: str) -> str:
+    return f"section-{name}" if lang == "en" else f"section-{name}-{lang}"
+
+
+def _build(ctx: Context, name: str, lang: str) -> Part:
+    """Section ``name``, through the cache unless it is cheap."""
+    module = load(name)
+    if getattr(module, "CACHED", True):
+        return ctx.cache.get(_key(name, lang), lambda: module.build(ctx))
+    return module.build(ctx)
+
+
+def _second_names(ctx: Context, sections: tuple[str, ...], lang: str, jobs: int) -> tuple:
+    """The sections to build in a second process: none for ``jobs=1``, when they would be all
+    there is to build, or when they and the sections waiting for them are all in the cache."""
+    names = tuple(n for n in SECOND_PROCESS if n in sections) if jobs > 1 else ()
+    if not names or len(names) == len(sections):
+        return ()
+    waiting = names + tuple(n for n in AFTER_SECOND if n in sections)
+    if ctx.cache.enabled and all(ctx.cache.path(_key(n, lang)).exists() for n in waiting):
+        return ()
+    return names
+
+
+def _second_process(conn, config: Config, directory, packages, names, lang: str) -> None:
+    """The second process: build ``names`` and send back ``("ok", parts, shares, messages)``,
+    or ``("error", exception)``."""
+    try:
+        messages: list[str] = []
+        ctx = Context(config=config, cache=Cache(directory, packages), log=messages.append)
+        parts = {}
+        with language(lang):
+            for name in names:
+                start = time.perf_counter()
+                parts[name] = (_build(ctx, name, lang), time.perf_counter() - start)
+        shares = {k: ctx.memo[k] for k in SECOND_SHARES if k in ctx.memo}
+        conn.send(("ok", parts, shares, messages))
+    except BaseException as exc:  # handed to the first process, which raises it
+        try:
+            conn.send(("error", exc))
+        except Exception:
+            conn.send(("error", RuntimeError(f"{type(exc).__name__}: {exc}")))
+    finally:
+        conn.close()
+
+
+class _Second:
+    """The second process and the pipe its results come back through."""
+
+    def __init__(self, ctx: Context, names: tuple[str, ...], lang: str):
+        import multiprocessing
+
+        from analytic.cache import cache_dir
+
+        # one key per cache directory, made before two processes write entries into it
+        ctx.cache.ensure_key()
+        base = cache_dir()
+        if base is not None:
+            Cache(base / "analytic").ensure_key()
+        mp = multiprocessing.get_context("spawn")
+        self.conn, child = mp.Pipe(duplex=False)
+        self.process = mp.Process(
+            target=_second_process,
+            args=(child, ctx.config, ctx.cache.directory, ctx.cache.packages, names, lang),
+            daemon=True,
+        )
+        self.process.start()
+        child.close()
+
+    def result(self):
+        try:
+            reply = self.conn.recv()
+        except EOFError:
+            raise RuntimeError("the report's second process ended without a result") from None
+        finally:
+            self.process.join()
+        if reply[0] == "error":
+            raise reply[1]
+        return reply[1:]
+
+    def stop(self) -> None:
+        if self.process.is_alive():
+            self.process.terminate()
+        self.process.join()
+        self.conn.close()
+
+
+def _assemble(ctx: Context, sections, lang: str, command: str | None, jobs: int) -> Assembled:
+    total = len(sections)
+    number = {name: k for k, name in enumerate(sections, start=1)}
+    parts: dict[str, Part] = {}
+    seconds: dict[str, float] = {}
+
+    def title(name: str) -> str:
+        return f"report: [{number[name]}/{total}] {load(name).TITLE}"
+
+    def build(name: str) -> None:
+        ctx.log(f"{title(name)} ...")
+        start = time.perf_counter()
+        parts[name] = _build(ctx, name, lang)
+        seconds[name] = time.perf_counter() - start
+        ctx.log(f"{title(name)}: {seconds[name]:.1f} s")
+
+    second_names = _second_names(ctx, sections, lang, jobs)
+    mine = [n for n in sections if n not in second_names]
+    later = [n for n in mine if second_names and n in AFTER_SECOND]
+    second = None
+    try:
+        if second_names:
+            second = _Second(ctx, second_names, lang)
+            for name in second_names:
+                ctx.log(f"{title(name)} ... (in a second process)")
+        for name in mine:
+            if name not in later:
+                build(name)
+        if second is not None:
+            done, shares, messages = second.result()
+            for msg in messages:
+                ctx.log(msg)
+            for name in second_names:
+                parts[name], seconds[name] = done[name]
+                ctx.log(f"{title(name)}: {seconds[name]:.1f} s (second process)")
+            for k, v in shares.items():
+                ctx.memo.setdefault(k, v)
+        for name in later:
+            build(name)
+    finally:
+        if second is not None:
+            second.stop()
     body: list[Latex] = []
     files: dict[str, str | bytes] = {}
-    timings = []
-    for k, name in enumerate(sections, start=1):
+    for name in sections:
         module = load(name)
-        ctx.log(f"report: [{k}/{len(sections)}] {module.TITLE} ...")
-        start = time.perf_counter()
-        if getattr(module, "CACHED", True):
-            key = f"section-{name}" if lang == "en" else f"section-{name}-{lang}"
-            part: Part = ctx.cache.get(key, lambda m=module: m.build(ctx))
-        else:
-            part = module.build(ctx)
-        seconds = time.perf_counter() - start
-        timings.append((name, seconds))
-        ctx.log(f"report: [{k}/{len(sections)}] {module.TITLE}: {seconds:.1f} s")
         if getattr(module, "NEW_PAGE", False):  # the floats of the sections before end here
             body.append(Latex(r"\clearpage"))
         body.append(section(module.TITLE, module.LABEL))
-        body.append(part.body)
-        for fname, data in part.figures:
+        body.append(parts[name].body)
+        for fname, data in parts[name].figures:
             path = f"{FIGURE_DIR}/{fname}"
             if path in files:
                 raise ValueError(f"two sections draw {path}")
             files[path] = data
+    timings = tuple((name, seconds[name]) for name in sections)
     prov = provenance(command)
     abstract = None
     if "summary" in sections:
@@ -138,13 +271,15 @@ def build_report(
     sections: tuple[str, ...] = SECTIONS,
     lang: str = "en",
     command: str | None = None,
+    jobs: int = 2,
 ) -> BuildResult:
     """Assemble the report and write it to ``out_dir`` (source, figures and, if a TeX engine is
     found or ``compile=True``, the PDF), in ``lang`` (``"en"`` or ``"ru"``; the Russian report is
     ``paramres-report-ru.tex``/``.pdf``, compiled only where TeX has Cyrillic fonts); ``command``
     is printed under the title.  ``compile=None`` compiles when an engine is installed;
     ``compile=True`` fails if none is.  ``cache_dir`` is the cache directory of the engine and the
-    report (see :mod:`analytic.cache`); ``None`` computes everything afresh (a cold build)."""
+    report (see :mod:`analytic.cache`); ``None`` computes everything afresh (a cold build).
+    ``jobs``: processes for a cold build (1 or 2, see :func:`assemble`)."""
     log = log or (lambda msg: print(msg, file=sys.stderr, flush=True))
     engine = find_engine() if compile is not False else None
     if engine is not None and not supports(lang):
@@ -159,7 +294,7 @@ def build_report(
             cache=Cache(report_cache, ("analytic", "verify", "reports", "paramres")),
             log=log,
         )
-        assembled = assemble(ctx, sections, lang=lang, command=command)
+        assembled = assemble(ctx, sections, lang=lang, command=command, jobs=jobs)
     if engine is not None:
         log(f"report: compiling with {engine.name} ...")
     start = time.perf_counter()

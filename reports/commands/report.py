@@ -50,6 +50,15 @@ def register(subparsers) -> None:
         default="en",
         help="language of the report: en (default) or ru (paramres-report-ru.pdf, in Russian)",
     )
+    p.add_argument(
+        "--jobs",
+        type=int,
+        choices=(1, 2),
+        default=2,
+        help="processes for a cold build: 2 (default) builds the catalogue, the stitching "
+        "section and the expansions in a second process, 1 builds everything in this one; the "
+        "report is the same",
+    )
     p.add_argument("--json", action="store_true", help="print what was written as JSON on stdout")
     p.add_argument("-q", "--quiet", action="store_true", help="no progress messages on stderr")
     p.set_defaults(func=run)
@@ -80,6 +89,7 @@ def run(args) -> int:
             log=log,
             lang=args.lang,
             command=_command_line(args),
+            jobs=args.jobs,
         )
     except BuildError as exc:
         print(f"paramres: LaTeX failed, {out} left as it was:\n{exc}", file=sys.stderr)

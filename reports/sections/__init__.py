@@ -21,7 +21,16 @@ from analytic.cache import Cache
 
 from ..latex import DEFAULT, Config, Latex
 
-__all__ = ["Part", "Context", "SECTIONS", "load", "shared"]
+__all__ = [
+    "Part",
+    "Context",
+    "SECTIONS",
+    "SECOND_PROCESS",
+    "SECOND_SHARES",
+    "AFTER_SECOND",
+    "load",
+    "shared",
+]
 
 #: section modules, in the order they appear
 SECTIONS = (
@@ -40,6 +49,17 @@ SECTIONS = (
     "certification",
     "conclusions",
 )
+
+
+#: sections a cold build hands to a second process (:func:`reports.report.assemble` with
+#: ``jobs=2``), in this order, the shared results (:func:`shared`) that process returns with
+#: them, and the sections that need those results and are therefore built after it is done.  The
+#: catalogue's derivations share the slow reductions (:mod:`analytic.reductions`) with the
+#: stitching section and the threshold series (:mod:`analytic.thresholds`) with the expansions,
+#: so those go with the catalogue, after it; the other sections need neither.
+SECOND_PROCESS = ("catalogue", "stitching", "expansions")
+SECOND_SHARES = ("catalogue-rows",)
+AFTER_SECOND = ("summary", "conclusions")
 
 
 @dataclass(frozen=True)
