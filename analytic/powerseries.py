@@ -29,7 +29,15 @@ from collections.abc import Iterable, Mapping, Sequence
 import sympy as sp
 from flint import fmpq
 
-__all__ = ["LaurentRing", "Series", "evaluate", "newton", "reversion"]
+__all__ = [
+    "LaurentRing",
+    "Series",
+    "evaluate",
+    "fixed_parts",
+    "newton",
+    "newton_doubling",
+    "reversion",
+]
 
 
 def _q(x) -> fmpq:
@@ -573,13 +581,59 @@ def _binomial_series(t: Series, e: sp.Rational) -> Series:
     return total
 
 
-_FUNCS = {
-    sp.sin: Series.sin,
-    sp.cos: Series.cos,
-    sp.sinh: Series.sinh,
-    sp.cosh: Series.cosh,
-    sp.exp: Series.exp,
+#: ``function: ((first, second) of the pair, sign of Series._pair, index in the pair)``
+_PAIRS = {
+    sp.sin: ((sp.sin, sp.cos), -1, 0),
+    sp.cos: ((sp.sin, sp.cos), -1, 1),
+    sp.sinh: ((sp.sinh, sp.cosh), 1, 0),
+    sp.cosh: ((sp.sinh, sp.cosh), 1, 1),
 }
+
+#: memo key tag of the fixed part of a sum or product (:func:`fixed_parts`)
+_FIXED = "fixed part"
+
+
+def fixed_parts(
+    exprs: Iterable[sp.Expr],
+    env: Mapping[sp.Symbol, Series | str],
+    ring: LaurentRing,
+    prec: int,
+    *,
+    var: sp.Symbol | None = None,
+    vary: Iterable[sp.Symbol],
+) -> dict:
+    """A memo for :func:`evaluate` holding every part of ``exprs`` free of the symbols ``vary``,
+    evaluated once through ``var**prec``: each maximal sub-expression free of them, and for a sum
+    or product that contains them, the sum or product of its arguments free of them.
+
+    Evaluating ``exprs`` again with ``memo=dict(fixed)`` for new values of the ``vary`` symbols
+    (at any precision up to ``prec``) then computes only the parts that depend on them; the result
+    is the same series (exact arithmetic in a commutative ring: the order of the operations does
+    not change it).
+    """
+    vary = frozenset(vary)
+    memo: dict = {}
+
+    def walk(e) -> None:
+        if e in memo or (_FIXED, e) in memo:
+            return
+        if not (e.free_symbols & vary):
+            evaluate(e, env, ring, prec, var=var, memo=memo)
+            return
+        if e.is_Add or e.is_Mul:
+            free = [a for a in e.args if not (a.free_symbols & vary)]
+            if len(free) > 1:
+                vals = [evaluate(a, env, ring, prec, var=var, memo=memo) for a in free]
+                out = vals[0]
+                for a in vals[1:]:
+                    out = out + a if e.is_Add else out * a
+                memo[(_FIXED, e)] = (out, tuple(a for a in e.args if a.free_symbols & vary))
+        for a in e.args:
+            walk(a)
+
+    for e in exprs:
+        walk(sp.sympify(e))
+    return memo
 
 
 def evaluate(
@@ -602,8 +656,8 @@ def evaluate(
 
     def ev(e) -> Series:
         hit = memo.get(e)
-        if hit is not None:
-            return hit
+        if hit is not None:  # possibly from an evaluation at a higher precision
+            return hit if hit.prec <= prec else hit.truncate(prec)
         out = _ev(e)
         memo[e] = out
         return out
@@ -622,26 +676,31 @@ def evaluate(
             if isinstance(val, str):
                 return Series.constant(R, R.gen(val), prec)
             return val.truncate(prec)
-        if e.is_Add:
-            args = [ev(a) for a in e.args]
+        if e.is_Add or e.is_Mul:
+            # a part of the arguments may be fixed (see :func:`fixed_parts`): evaluated once
+            part = memo.get((_FIXED, e))
+            args = [ev(a) for a in (e.args if part is None else part[1])]
+            if part is not None:
+                args.insert(0, part[0].truncate(prec))
             out = args[0]
             for a in args[1:]:
-                out = out + a
-            return out
-        if e.is_Mul:
-            args = [ev(a) for a in e.args]
-            out = args[0]
-            for a in args[1:]:
-                out = out * a
+                out = out + a if e.is_Add else out * a
             return out
         if e.is_Pow:
             base, ex = e.args
             if not ex.is_Rational:
                 raise ValueError(f"non-rational exponent in {e}")
             return ev(base) ** (int(ex) if ex.is_Integer else sp.Rational(ex))
-        for f, method in _FUNCS.items():
+        for f, (pair, sign, first) in _PAIRS.items():
             if isinstance(e, f):
-                return method(ev(e.args[0]))
+                # both functions of the pair from one recurrence; the other one is kept
+                arg = e.args[0]
+                one, two = ev(arg)._pair(sign)
+                other = pair[1 - first]
+                memo.setdefault(other(arg, evaluate=False), two if first == 0 else one)
+                return one if first == 0 else two
+        if isinstance(e, sp.exp):
+            return ev(e.args[0]).exp()
         raise ValueError(f"cannot evaluate {type(e).__name__} as a series: {e}")
 
     return ev(sp.sympify(expr))
@@ -662,6 +721,32 @@ def newton(residual, derivative, start: Series, *, max_iter: int = 40) -> Series
         step = res / derivative(u)
         u = u - step
     raise ArithmeticError("Newton iteration on series did not converge")
+
+
+def newton_doubling(system, start: Series, prec: int) -> Series:
+    """Solve ``F(u) = 0`` for the series ``u`` through ``var**prec`` by Newton steps that double
+    the precision: ``start`` is right through ``var**0`` (``F(start) = O(var)``) and ``system(u,
+    L, Ld)`` returns ``(F(u), F'(u))``, ``F`` through ``var**L`` and ``F'`` through ``var**Ld``,
+    for the polynomial ``u`` of degree ``L``.
+
+    If ``u`` is right through ``var**j``, then ``F(u) = var**(j+1) G`` and, the constant term of
+    ``F'`` being a unit, ``u - F/F'`` is right through ``var**(2j+1)`` (the quadratic convergence
+    of Newton's method on formal power series); ``F/F'`` through ``var**(2j+1)`` needs ``F'`` only
+    through ``var**j``.  So each step evaluates ``F`` only to the precision it can gain, and ``F'``
+    to half of it: the last step costs about as much as all the earlier ones together.
+    """
+    u = start.truncate(0)
+    known = 0
+    while known < prec:
+        L = min(2 * known + 1, prec)
+        Ld = L - known - 1
+        u = u.padded(L)
+        F, D = system(u, L, Ld)
+        # F vanishes through var**known (a nonzero low coefficient raises: no Newton step then)
+        step = (F.truncate(L).shift(-(known + 1)) / D.truncate(Ld)).shift(known + 1)
+        u = (u - step).truncate(L)
+        known = L
+    return u
 
 
 def reversion(f: Series) -> Series:
