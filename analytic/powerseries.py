@@ -96,6 +96,32 @@ def _mul_coeff_flint(nv: int, a: dict, b: dict) -> dict:
     }
 
 
+def _plain_base(b: sp.Expr) -> bool:
+    return b is sp.pi or b.is_Symbol or not b.is_number
+
+
+def _times_rational(c: sp.Rational, mono: sp.Expr) -> sp.Expr:
+    """``c * mono``, the same expression as sympy's product, without its general flattening
+    where the product is plain: ``mono`` a symbol, ``pi``, a power of a base that is not a
+    number (or is ``pi``), or a product of these with a rational coefficient ``a``; then sympy's canonical
+    product is ``c a`` (dropped if 1) followed by the factors (the tests compare the two)."""
+    factors = mono.args if mono.is_Mul else (mono,)
+    coeff = c
+    if factors[0].is_Rational:  # the rational coefficient of mono
+        coeff, factors = c * factors[0], factors[1:]
+    plain = (
+        c != 0
+        and coeff != 0
+        and bool(factors)
+        and all(f.is_Symbol or f is sp.pi or (f.is_Pow and _plain_base(f.base)) for f in factors)
+    )
+    if not plain:
+        return c * mono
+    if coeff == 1:
+        return factors[0] if len(factors) == 1 else sp.Mul._from_args(factors)
+    return sp.Mul._from_args((coeff, *factors))
+
+
 class LaurentRing:
     """Laurent polynomials over ``Q`` in the generators ``gens``.
 
@@ -252,16 +278,24 @@ class LaurentRing:
         return {tuple(x // den * num for x in k): c}
 
     # -- conversion ---------------------------------------------------------------------------
-    def to_sympy(self, a: dict, symbols: Mapping[str, sp.Expr] | None = None) -> sp.Expr:
+    def to_sympy(
+        self, a: dict, symbols: Mapping[str, sp.Expr] | None = None, monomials: dict | None = None
+    ) -> sp.Expr:
+        """``a`` as a sympy expression, generators replaced by ``symbols`` (default: their names;
+        ``pi`` is sympy's).  ``monomials``: a cache of the products of powers of the generators,
+        shared by the calls with the same ``symbols`` (as by :meth:`Series.to_sympy`)."""
         symbols = symbols or {}
-        syms = [symbols.get(g, sp.pi if g == "pi" else sp.Symbol(g)) for g in self.gens]
+        monomials = {} if monomials is None else monomials
+        syms = None
         terms = []
         for k, v in a.items():
-            t = sp.Rational(int(v.p), int(v.q))
-            for s_, e in zip(syms, k, strict=False):
-                if e:
-                    t = t * s_**e
-            terms.append(t)
+            mono = monomials.get(k)
+            if mono is None:
+                if syms is None:
+                    syms = [symbols.get(g, sp.pi if g == "pi" else sp.Symbol(g)) for g in self.gens]
+                mono = sp.Mul(*(s_**e for s_, e in zip(syms, k, strict=False) if e))
+                monomials[k] = mono
+            terms.append(_times_rational(sp.Rational(int(v.p), int(v.q)), mono))
         return sp.Add(*terms)
 
 
@@ -552,7 +586,10 @@ class Series:
 
     # -- conversion ---------------------------------------------------------------------------
     def to_sympy(self, var: sp.Expr, symbols: Mapping[str, sp.Expr] | None = None) -> sp.Expr:
-        return sp.Add(*(self.ring.to_sympy(a, symbols) * var**k for k, a in enumerate(self.c) if a))
+        mono: dict = {}
+        return sp.Add(
+            *(self.ring.to_sympy(a, symbols, mono) * var**k for k, a in enumerate(self.c) if a)
+        )
 
     def coefficients_sympy(self, symbols: Mapping[str, sp.Expr] | None = None) -> list[sp.Expr]:
         return [self.ring.to_sympy(a, symbols) for a in self.c]
@@ -566,19 +603,26 @@ class Series:
 
 
 def _binomial_series(t: Series, e: sp.Rational) -> Series:
-    """``(1 + t)**e`` for ``t`` without constant term."""
+    """``y = (1 + t)**e`` for ``t`` without constant term, from ``(1 + t) y' = e t' y``: ``k y_k =
+    sum_(i=1..k) ((e + 1) i - k) t_i y_(k-i)``, ``y_0 = 1`` (as many coefficient products as one
+    series product; the series is unique, so these are the coefficients of the binomial sum)."""
     R = t.ring
     P = t.prec
-    total = Series.constant(R, R.one, P)
-    power = Series.constant(R, R.one, P)
-    coeff = fmpq(1)
-    ee = fmpq(int(e.p), int(e.q))
+    if t.c[0]:
+        raise ValueError("binomial series of a series with a constant term")
+    e1 = fmpq(int(e.p), int(e.q)) + 1
+    nz = [i for i in range(1, P + 1) if t.c[i]]
+    y = [R.one]
     for k in range(1, P + 1):
-        coeff = coeff * (ee - (k - 1)) / k
-        power = power * t
-        if coeff != 0:
-            total = total + power * coeff
-    return total
+        acc: dict = {}
+        for i in nz:
+            if i > k:
+                break
+            w = e1 * i - k
+            if w != 0 and y[k - i]:
+                acc = R.add(acc, R.scale(R.mul(t.c[i], y[k - i]), w))
+        y.append(R.scale(acc, fmpq(1, k)))
+    return Series(R, y)
 
 
 #: ``function: ((first, second) of the pair, sign of Series._pair, index in the pair)``
@@ -735,10 +779,14 @@ def newton_doubling(system, start: Series, prec: int) -> Series:
     through ``var**j``.  So each step evaluates ``F`` only to the precision it can gain, and ``F'``
     to half of it: the last step costs about as much as all the earlier ones together.
     """
+    targets = [prec]  # each step from j reaches 2j + 1: the schedule read backwards
+    while targets[-1] > 1:
+        targets.append(targets[-1] // 2)
     u = start.truncate(0)
     known = 0
-    while known < prec:
-        L = min(2 * known + 1, prec)
+    for L in reversed(targets):
+        if L <= known:
+            continue
         Ld = L - known - 1
         u = u.padded(L)
         F, D = system(u, L, Ld)
