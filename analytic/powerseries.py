@@ -90,9 +90,10 @@ def _mul_coeff_flint(nv: int, a: dict, b: dict) -> dict:
         {tuple(x - y for x, y in zip(k, lo_b, strict=True)): v for k, v in b.items()}
     )
     lo = [x + y for x, y in zip(lo_a, lo_b, strict=True)]
+    prod = pa * pb
     return {
-        tuple(x + y for x, y in zip(k, lo, strict=True)): fmpq(v)
-        for k, v in (pa * pb).to_dict().items()
+        tuple(x + y for x, y in zip(k, lo, strict=True)): v
+        for k, v in zip(prod.monoms(), prod.coeffs(), strict=True)
     }
 
 
@@ -199,9 +200,12 @@ class LaurentRing:
     def mul(self, a: dict, b: dict) -> dict:
         if not a or not b:
             return {}
+        r = self._rel_index
+        # the constrained generator's square occurs only if both factors hold it
+        rel = r is not None and any(k[r] for k in a) and any(k[r] for k in b)
         if len(a) * len(b) > _FLINT_TERMS:
             out = _mul_coeff_flint(self.nvars, a, b)
-            return self._reduce(out) if self._rel_index is not None else out
+            return self._reduce(out) if rel else out
         out: dict = {}
         for ka, va in a.items():
             for kb, vb in b.items():
@@ -209,7 +213,7 @@ class LaurentRing:
                 w = out.get(k)
                 out[k] = va * vb if w is None else w + va * vb
         out = {k: v for k, v in out.items() if v != 0}
-        if self._rel_index is not None:
+        if rel:
             out = self._reduce(out)
         return out
 
@@ -334,11 +338,15 @@ def _mul_flint(R: LaurentRing, a, b, nz_a, nz_b, P: int) -> list:
     prod = ctx.from_dict(da) * ctx.from_dict(db)
     lo = [x + y for x, y in zip(lo_a, lo_b, strict=True)]
     out: list = [{} for _ in range(P + 1)]
-    for k, v in prod.to_dict().items():
+    shift = any(lo)
+    for k, v in zip(prod.monoms(), prod.coeffs(), strict=True):
         i = k[0]
         if i <= P:
-            out[i][tuple(x + y for x, y in zip(k[1:], lo, strict=True))] = fmpq(v)
-    if R._rel_index is not None:
+            out[i][tuple(x + y for x, y in zip(k[1:], lo, strict=True)) if shift else k[1:]] = v
+    r = R._rel_index
+    if r is not None and any(k[r] for i in nz_a for k in a[i]) and any(
+        k[r] for j in nz_b for k in b[j]
+    ):  # the constrained generator in both factors: its square may occur
         out = [R._reduce(c) for c in out]
     return out
 
