@@ -104,8 +104,9 @@ def _plain_base(b: sp.Expr) -> bool:
 def _times_rational(c: sp.Rational, mono: sp.Expr) -> sp.Expr:
     """``c * mono``, the same expression as sympy's product, without its general flattening
     where the product is plain: ``mono`` a symbol, ``pi``, a power of a base that is not a
-    number (or is ``pi``), or a product of these with a rational coefficient ``a``; then sympy's canonical
-    product is ``c a`` (dropped if 1) followed by the factors (the tests compare the two)."""
+    number (or is ``pi``), or a product of these with a rational coefficient ``a``; then
+    sympy's canonical product is ``c a`` (dropped if 1) followed by the factors (the tests
+    compare the two)."""
     factors = mono.args if mono.is_Mul else (mono,)
     coeff = c
     if factors[0].is_Rational:  # the rational coefficient of mono
@@ -344,8 +345,10 @@ def _mul_flint(R: LaurentRing, a, b, nz_a, nz_b, P: int) -> list:
         if i <= P:
             out[i][tuple(x + y for x, y in zip(k[1:], lo, strict=True)) if shift else k[1:]] = v
     r = R._rel_index
-    if r is not None and any(k[r] for i in nz_a for k in a[i]) and any(
-        k[r] for j in nz_b for k in b[j]
+    if (
+        r is not None
+        and any(k[r] for i in nz_a for k in a[i])
+        and any(k[r] for j in nz_b for k in b[j])
     ):  # the constrained generator in both factors: its square may occur
         out = [R._reduce(c) for c in out]
     return out

@@ -200,19 +200,25 @@ def _threshold_raw(n, damping: str, prec: int, system=None) -> tuple[Series, Ser
     lam0 = ring.root(ring.mul(A, ring.inverse(B)), 1, 2)
     # leading Jacobian of (N/m^2p, N_theta/m^p) in (lam, u): diag(2 B lam0, 2)
     j11_inv = ring.inverse(ring.scale(ring.mul(B, lam0), 2))
-    lam = Series.constant(ring, lam0, prec)
-    u = Series.constant(ring, ring.zero, prec)
-    hi = prec + 2 * p
-    for _ in range(prec + 6):
-        # the iterates are polynomials: padded, the residuals are exact through m^prec
-        env = {LAM: lam.padded(hi), S.theta: u.shift(p).padded(hi)}
-        F1 = _eval(model["N"], env, ring, hi).shift(-2 * p)
-        F2 = _eval(model["dN"], env, ring, prec + p).shift(-p)
-        if all(not a for a in F1.c) and all(not a for a in F2.c):
-            return lam, u
-        lam = lam - F1.scale_coeff(j11_inv)
-        u = u - F2 * sp.Rational(1, 2)
-    raise ArithmeticError("threshold series did not converge")  # pragma: no cover
+    lam = Series.constant(ring, lam0, 0)
+    u = Series.constant(ring, ring.zero, 0)
+    # one order at a time: each step with the leading Jacobian gains (at least) one order, so
+    # the residuals are needed only through the order being fixed (through m^L at level L)
+    for L in range(prec + 1):
+        hi = L + 2 * p
+        for _ in range(8):
+            # the iterates are polynomials: padded, the residuals are exact through m^L
+            lam, u = lam.padded(L), u.padded(L)
+            env = {LAM: lam.padded(hi), S.theta: u.shift(p).padded(hi)}
+            F1 = _eval(model["N"], env, ring, hi).shift(-2 * p)
+            F2 = _eval(model["dN"], env, ring, L + p).shift(-p)
+            if all(not a for a in F1.c) and all(not a for a in F2.c):
+                break
+            lam = (lam - F1.scale_coeff(j11_inv)).truncate(L)
+            u = (u - F2 * sp.Rational(1, 2)).truncate(L)
+        else:  # pragma: no cover
+            raise ArithmeticError("threshold series did not converge")
+    return lam, u
 
 
 def _check_terms(terms):
