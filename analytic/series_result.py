@@ -17,7 +17,8 @@ MAX_TERMS = 40
 
 #: the largest number of terms per route, where a call still takes a few seconds: the cost grows
 #: about like ``K^3`` (frictionless, order 6: K = 30 about 1 s, K = 40 about 2.5 s; the closed
-#: forms in ``n``: K = 24 about 1.5 s, K = 40 about 10 s; with friction K = 12 takes seconds)
+#: forms in ``n``: K = 24 about 1.5 s, K = 40 about 10 s; with friction the edges through K = 12
+#: take under 1 s, K = 16 about 2 s, but the threshold series the command adds K = 16 about 8 s)
 TERM_LIMITS = {"frictionless": MAX_TERMS, "parity": 24, "friction": 12, "family": 12}
 _ROUTE_WORDS = {
     "frictionless": "without friction",
