@@ -29,7 +29,15 @@ from collections.abc import Iterable, Mapping, Sequence
 import sympy as sp
 from flint import fmpq
 
-__all__ = ["LaurentRing", "Series", "evaluate", "newton", "reversion"]
+__all__ = [
+    "LaurentRing",
+    "Series",
+    "evaluate",
+    "fixed_parts",
+    "newton",
+    "newton_doubling",
+    "reversion",
+]
 
 
 def _q(x) -> fmpq:
@@ -82,10 +90,38 @@ def _mul_coeff_flint(nv: int, a: dict, b: dict) -> dict:
         {tuple(x - y for x, y in zip(k, lo_b, strict=True)): v for k, v in b.items()}
     )
     lo = [x + y for x, y in zip(lo_a, lo_b, strict=True)]
+    prod = pa * pb
     return {
-        tuple(x + y for x, y in zip(k, lo, strict=True)): fmpq(v)
-        for k, v in (pa * pb).to_dict().items()
+        tuple(x + y for x, y in zip(k, lo, strict=True)): v
+        for k, v in zip(prod.monoms(), prod.coeffs(), strict=True)
     }
+
+
+def _plain_base(b: sp.Expr) -> bool:
+    return b is sp.pi or b.is_Symbol or not b.is_number
+
+
+def _times_rational(c: sp.Rational, mono: sp.Expr) -> sp.Expr:
+    """``c * mono``, the same expression as sympy's product, without its general flattening
+    where the product is plain: ``mono`` a symbol, ``pi``, a power of a base that is not a
+    number (or is ``pi``), or a product of these with a rational coefficient ``a``; then
+    sympy's canonical product is ``c a`` (dropped if 1) followed by the factors (the tests
+    compare the two)."""
+    factors = mono.args if mono.is_Mul else (mono,)
+    coeff = c
+    if factors[0].is_Rational:  # the rational coefficient of mono
+        coeff, factors = c * factors[0], factors[1:]
+    plain = (
+        c != 0
+        and coeff != 0
+        and bool(factors)
+        and all(f.is_Symbol or f is sp.pi or (f.is_Pow and _plain_base(f.base)) for f in factors)
+    )
+    if not plain:
+        return c * mono
+    if coeff == 1:
+        return factors[0] if len(factors) == 1 else sp.Mul._from_args(factors)
+    return sp.Mul._from_args((coeff, *factors))
 
 
 class LaurentRing:
@@ -165,9 +201,12 @@ class LaurentRing:
     def mul(self, a: dict, b: dict) -> dict:
         if not a or not b:
             return {}
+        r = self._rel_index
+        # the constrained generator's square occurs only if both factors hold it
+        rel = r is not None and any(k[r] for k in a) and any(k[r] for k in b)
         if len(a) * len(b) > _FLINT_TERMS:
             out = _mul_coeff_flint(self.nvars, a, b)
-            return self._reduce(out) if self._rel_index is not None else out
+            return self._reduce(out) if rel else out
         out: dict = {}
         for ka, va in a.items():
             for kb, vb in b.items():
@@ -175,7 +214,7 @@ class LaurentRing:
                 w = out.get(k)
                 out[k] = va * vb if w is None else w + va * vb
         out = {k: v for k, v in out.items() if v != 0}
-        if self._rel_index is not None:
+        if rel:
             out = self._reduce(out)
         return out
 
@@ -244,16 +283,24 @@ class LaurentRing:
         return {tuple(x // den * num for x in k): c}
 
     # -- conversion ---------------------------------------------------------------------------
-    def to_sympy(self, a: dict, symbols: Mapping[str, sp.Expr] | None = None) -> sp.Expr:
+    def to_sympy(
+        self, a: dict, symbols: Mapping[str, sp.Expr] | None = None, monomials: dict | None = None
+    ) -> sp.Expr:
+        """``a`` as a sympy expression, generators replaced by ``symbols`` (default: their names;
+        ``pi`` is sympy's).  ``monomials``: a cache of the products of powers of the generators,
+        shared by the calls with the same ``symbols`` (as by :meth:`Series.to_sympy`)."""
         symbols = symbols or {}
-        syms = [symbols.get(g, sp.pi if g == "pi" else sp.Symbol(g)) for g in self.gens]
+        monomials = {} if monomials is None else monomials
+        syms = None
         terms = []
         for k, v in a.items():
-            t = sp.Rational(int(v.p), int(v.q))
-            for s_, e in zip(syms, k, strict=False):
-                if e:
-                    t = t * s_**e
-            terms.append(t)
+            mono = monomials.get(k)
+            if mono is None:
+                if syms is None:
+                    syms = [symbols.get(g, sp.pi if g == "pi" else sp.Symbol(g)) for g in self.gens]
+                mono = sp.Mul(*(s_**e for s_, e in zip(syms, k, strict=False) if e))
+                monomials[k] = mono
+            terms.append(_times_rational(sp.Rational(int(v.p), int(v.q)), mono))
         return sp.Add(*terms)
 
 
@@ -292,11 +339,17 @@ def _mul_flint(R: LaurentRing, a, b, nz_a, nz_b, P: int) -> list:
     prod = ctx.from_dict(da) * ctx.from_dict(db)
     lo = [x + y for x, y in zip(lo_a, lo_b, strict=True)]
     out: list = [{} for _ in range(P + 1)]
-    for k, v in prod.to_dict().items():
+    shift = any(lo)
+    for k, v in zip(prod.monoms(), prod.coeffs(), strict=True):
         i = k[0]
         if i <= P:
-            out[i][tuple(x + y for x, y in zip(k[1:], lo, strict=True))] = fmpq(v)
-    if R._rel_index is not None:
+            out[i][tuple(x + y for x, y in zip(k[1:], lo, strict=True)) if shift else k[1:]] = v
+    r = R._rel_index
+    if (
+        r is not None
+        and any(k[r] for i in nz_a for k in a[i])
+        and any(k[r] for j in nz_b for k in b[j])
+    ):  # the constrained generator in both factors: its square may occur
         out = [R._reduce(c) for c in out]
     return out
 
@@ -544,7 +597,10 @@ class Series:
 
     # -- conversion ---------------------------------------------------------------------------
     def to_sympy(self, var: sp.Expr, symbols: Mapping[str, sp.Expr] | None = None) -> sp.Expr:
-        return sp.Add(*(self.ring.to_sympy(a, symbols) * var**k for k, a in enumerate(self.c) if a))
+        mono: dict = {}
+        return sp.Add(
+            *(self.ring.to_sympy(a, symbols, mono) * var**k for k, a in enumerate(self.c) if a)
+        )
 
     def coefficients_sympy(self, symbols: Mapping[str, sp.Expr] | None = None) -> list[sp.Expr]:
         return [self.ring.to_sympy(a, symbols) for a in self.c]
@@ -558,28 +614,81 @@ class Series:
 
 
 def _binomial_series(t: Series, e: sp.Rational) -> Series:
-    """``(1 + t)**e`` for ``t`` without constant term."""
+    """``y = (1 + t)**e`` for ``t`` without constant term, from ``(1 + t) y' = e t' y``: ``k y_k =
+    sum_(i=1..k) ((e + 1) i - k) t_i y_(k-i)``, ``y_0 = 1`` (as many coefficient products as one
+    series product; the series is unique, so these are the coefficients of the binomial sum)."""
     R = t.ring
     P = t.prec
-    total = Series.constant(R, R.one, P)
-    power = Series.constant(R, R.one, P)
-    coeff = fmpq(1)
-    ee = fmpq(int(e.p), int(e.q))
+    if t.c[0]:
+        raise ValueError("binomial series of a series with a constant term")
+    e1 = fmpq(int(e.p), int(e.q)) + 1
+    nz = [i for i in range(1, P + 1) if t.c[i]]
+    y = [R.one]
     for k in range(1, P + 1):
-        coeff = coeff * (ee - (k - 1)) / k
-        power = power * t
-        if coeff != 0:
-            total = total + power * coeff
-    return total
+        acc: dict = {}
+        for i in nz:
+            if i > k:
+                break
+            w = e1 * i - k
+            if w != 0 and y[k - i]:
+                acc = R.add(acc, R.scale(R.mul(t.c[i], y[k - i]), w))
+        y.append(R.scale(acc, fmpq(1, k)))
+    return Series(R, y)
 
 
-_FUNCS = {
-    sp.sin: Series.sin,
-    sp.cos: Series.cos,
-    sp.sinh: Series.sinh,
-    sp.cosh: Series.cosh,
-    sp.exp: Series.exp,
+#: ``function: ((first, second) of the pair, sign of Series._pair, index in the pair)``
+_PAIRS = {
+    sp.sin: ((sp.sin, sp.cos), -1, 0),
+    sp.cos: ((sp.sin, sp.cos), -1, 1),
+    sp.sinh: ((sp.sinh, sp.cosh), 1, 0),
+    sp.cosh: ((sp.sinh, sp.cosh), 1, 1),
 }
+
+#: memo key tag of the fixed part of a sum or product (:func:`fixed_parts`)
+_FIXED = "fixed part"
+
+
+def fixed_parts(
+    exprs: Iterable[sp.Expr],
+    env: Mapping[sp.Symbol, Series | str],
+    ring: LaurentRing,
+    prec: int,
+    *,
+    var: sp.Symbol | None = None,
+    vary: Iterable[sp.Symbol],
+) -> dict:
+    """A memo for :func:`evaluate` holding every part of ``exprs`` free of the symbols ``vary``,
+    evaluated once through ``var**prec``: each maximal sub-expression free of them, and for a sum
+    or product that contains them, the sum or product of its arguments free of them.
+
+    Evaluating ``exprs`` again with ``memo=dict(fixed)`` for new values of the ``vary`` symbols
+    (at any precision up to ``prec``) then computes only the parts that depend on them; the result
+    is the same series (exact arithmetic in a commutative ring: the order of the operations does
+    not change it).
+    """
+    vary = frozenset(vary)
+    memo: dict = {}
+
+    def walk(e) -> None:
+        if e in memo or (_FIXED, e) in memo:
+            return
+        if not (e.free_symbols & vary):
+            evaluate(e, env, ring, prec, var=var, memo=memo)
+            return
+        if e.is_Add or e.is_Mul:
+            free = [a for a in e.args if not (a.free_symbols & vary)]
+            if len(free) > 1:
+                vals = [evaluate(a, env, ring, prec, var=var, memo=memo) for a in free]
+                out = vals[0]
+                for a in vals[1:]:
+                    out = out + a if e.is_Add else out * a
+                memo[(_FIXED, e)] = (out, tuple(a for a in e.args if a.free_symbols & vary))
+        for a in e.args:
+            walk(a)
+
+    for e in exprs:
+        walk(sp.sympify(e))
+    return memo
 
 
 def evaluate(
@@ -602,8 +711,8 @@ def evaluate(
 
     def ev(e) -> Series:
         hit = memo.get(e)
-        if hit is not None:
-            return hit
+        if hit is not None:  # possibly from an evaluation at a higher precision
+            return hit if hit.prec <= prec else hit.truncate(prec)
         out = _ev(e)
         memo[e] = out
         return out
@@ -622,26 +731,31 @@ def evaluate(
             if isinstance(val, str):
                 return Series.constant(R, R.gen(val), prec)
             return val.truncate(prec)
-        if e.is_Add:
-            args = [ev(a) for a in e.args]
+        if e.is_Add or e.is_Mul:
+            # a part of the arguments may be fixed (see :func:`fixed_parts`): evaluated once
+            part = memo.get((_FIXED, e))
+            args = [ev(a) for a in (e.args if part is None else part[1])]
+            if part is not None:
+                args.insert(0, part[0].truncate(prec))
             out = args[0]
             for a in args[1:]:
-                out = out + a
-            return out
-        if e.is_Mul:
-            args = [ev(a) for a in e.args]
-            out = args[0]
-            for a in args[1:]:
-                out = out * a
+                out = out + a if e.is_Add else out * a
             return out
         if e.is_Pow:
             base, ex = e.args
             if not ex.is_Rational:
                 raise ValueError(f"non-rational exponent in {e}")
             return ev(base) ** (int(ex) if ex.is_Integer else sp.Rational(ex))
-        for f, method in _FUNCS.items():
+        for f, (pair, sign, first) in _PAIRS.items():
             if isinstance(e, f):
-                return method(ev(e.args[0]))
+                # both functions of the pair from one recurrence; the other one is kept
+                arg = e.args[0]
+                one, two = ev(arg)._pair(sign)
+                other = pair[1 - first]
+                memo.setdefault(other(arg, evaluate=False), two if first == 0 else one)
+                return one if first == 0 else two
+        if isinstance(e, sp.exp):
+            return ev(e.args[0]).exp()
         raise ValueError(f"cannot evaluate {type(e).__name__} as a series: {e}")
 
     return ev(sp.sympify(expr))
@@ -662,6 +776,36 @@ def newton(residual, derivative, start: Series, *, max_iter: int = 40) -> Series
         step = res / derivative(u)
         u = u - step
     raise ArithmeticError("Newton iteration on series did not converge")
+
+
+def newton_doubling(system, start: Series, prec: int) -> Series:
+    """Solve ``F(u) = 0`` for the series ``u`` through ``var**prec`` by Newton steps that double
+    the precision: ``start`` is right through ``var**0`` (``F(start) = O(var)``) and ``system(u,
+    L, Ld)`` returns ``(F(u), F'(u))``, ``F`` through ``var**L`` and ``F'`` through ``var**Ld``,
+    for the polynomial ``u`` of degree ``L``.
+
+    If ``u`` is right through ``var**j``, then ``F(u) = var**(j+1) G`` and, the constant term of
+    ``F'`` being a unit, ``u - F/F'`` is right through ``var**(2j+1)`` (the quadratic convergence
+    of Newton's method on formal power series); ``F/F'`` through ``var**(2j+1)`` needs ``F'`` only
+    through ``var**j``.  So each step evaluates ``F`` only to the precision it can gain, and ``F'``
+    to half of it: the last step costs about as much as all the earlier ones together.
+    """
+    targets = [prec]  # each step from j reaches 2j + 1: the schedule read backwards
+    while targets[-1] > 1:
+        targets.append(targets[-1] // 2)
+    u = start.truncate(0)
+    known = 0
+    for L in reversed(targets):
+        if L <= known:
+            continue
+        Ld = L - known - 1
+        u = u.padded(L)
+        F, D = system(u, L, Ld)
+        # F vanishes through var**known (a nonzero low coefficient raises: no Newton step then)
+        step = (F.truncate(L).shift(-(known + 1)) / D.truncate(Ld)).shift(known + 1)
+        u = (u - step).truncate(L)
+        known = L
+    return u
 
 
 def reversion(f: Series) -> Series:

@@ -17,7 +17,8 @@ MAX_TERMS = 40
 
 #: the largest number of terms per route, where a call still takes a few seconds: the cost grows
 #: about like ``K^3`` (frictionless, order 6: K = 30 about 1 s, K = 40 about 2.5 s; the closed
-#: forms in ``n``: K = 24 about 1.5 s, K = 40 about 10 s; with friction K = 12 takes seconds)
+#: forms in ``n``: K = 24 about 1.5 s, K = 40 about 10 s; with friction the edges through K = 12
+#: take under 1 s, K = 16 about 2 s, but the threshold series the command adds K = 16 about 8 s)
 TERM_LIMITS = {"frictionless": MAX_TERMS, "parity": 24, "friction": 12, "family": 12}
 _ROUTE_WORDS = {
     "frictionless": "without friction",
@@ -73,29 +74,44 @@ class EdgeSeries:
     def upper(self) -> sp.Expr:
         return (self.in_T0 if self.units == "T0" else self.in_Tav)["upper"]
 
-    def as_json(self) -> dict:
+    def as_json(self, edge_printer=str) -> dict:
+        """The series as text; ``edge_printer`` prints the edges (``lower``, ``upper``,
+        ``in_T0``, ``in_Tav``), ``str`` everything else."""
+        # ``lower``/``upper`` are entries of ``in_T0`` or ``in_Tav``: each expression is printed
+        # once (printing dominates for long series)
+        printed: dict[int, tuple[object, str]] = {}  # id -> (the object, kept alive; its text)
+
+        def text(v, printer=str) -> str:
+            hit = printed.get(id(v))
+            if hit is None:
+                hit = printed[id(v)] = (v, printer(v))
+            return hit[1]
+
+        def edge(v) -> str:
+            return text(v, edge_printer)
+
         out = {
             **({} if self.system is None else self.system.as_json()),
             "order": self.order,
             "terms": self.terms,
             "units": self.units,
-            "lower": str(self.lower),
-            "upper": str(self.upper),
-            "in_T0": {k: str(v) for k, v in self.in_T0.items()},
-            "in_Tav": {k: str(v) for k, v in self.in_Tav.items()},
+            "lower": edge(self.lower),
+            "upper": edge(self.upper),
+            "in_T0": {k: edge(v) for k, v in self.in_T0.items()},
+            "in_Tav": {k: edge(v) for k, v in self.in_Tav.items()},
         }
         if self.lower_factor is not None:
             out["lower_factor_epsilon"] = self.lower_factor
         if self.Q is not None:
-            out["Q"] = str(self.Q)
+            out["Q"] = text(self.Q)
             out["damping"] = self.damping
         if self.threshold is not None:
-            out["threshold"] = {k: str(v) for k, v in self.threshold.items()}
+            out["threshold"] = {k: text(v) for k, v in self.threshold.items()}
         if self.scaled is not None:
             out["scaled"] = {
-                "s": str(self.scaled["s"]),
-                "in_T0": {k: str(v) for k, v in self.scaled["T0"].items()},
-                "in_Tav": {k: str(v) for k, v in self.scaled["Tav"].items()},
+                "s": text(self.scaled["s"]),
+                "in_T0": {k: text(v) for k, v in self.scaled["T0"].items()},
+                "in_Tav": {k: text(v) for k, v in self.scaled["Tav"].items()},
             }
         return out
 

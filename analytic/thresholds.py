@@ -46,7 +46,7 @@ import sympy as sp
 
 from .model import Damping, S
 from .normal_form import order_form, parameters, r2
-from .powerseries import LaurentRing, Series, evaluate, newton, reversion
+from .powerseries import LaurentRing, Series, evaluate, fixed_parts, newton_doubling, reversion
 from .stitching import Parity
 
 __all__ = [
@@ -116,12 +116,12 @@ def _gens(n, extra: tuple[str, ...] = (), system=None) -> list[str]:
     return ["pi"] + (["n"] if _symbolic(n) else []) + family + list(extra)
 
 
-def _eval(expr, env, ring, prec):
+def _eval(expr, env, ring, prec, memo=None):
     e = dict(env)
     e.setdefault(S.n, "n")
     for name in _ANGLE_GENS:  # the family's constant-angle generators (absent for the paper)
         e.setdefault(sp.Symbol(name), name)
-    return evaluate(expr, e, ring, prec, var=S.m)
+    return evaluate(expr, e, ring, prec, var=S.m, memo=memo)
 
 
 def _leading_balance(n, damping: str, ring: LaurentRing, system=None) -> tuple[dict, dict]:
@@ -200,19 +200,25 @@ def _threshold_raw(n, damping: str, prec: int, system=None) -> tuple[Series, Ser
     lam0 = ring.root(ring.mul(A, ring.inverse(B)), 1, 2)
     # leading Jacobian of (N/m^2p, N_theta/m^p) in (lam, u): diag(2 B lam0, 2)
     j11_inv = ring.inverse(ring.scale(ring.mul(B, lam0), 2))
-    lam = Series.constant(ring, lam0, prec)
-    u = Series.constant(ring, ring.zero, prec)
-    hi = prec + 2 * p
-    for _ in range(prec + 6):
-        # the iterates are polynomials: padded, the residuals are exact through m^prec
-        env = {LAM: lam.padded(hi), S.theta: u.shift(p).padded(hi)}
-        F1 = _eval(model["N"], env, ring, hi).shift(-2 * p)
-        F2 = _eval(model["dN"], env, ring, prec + p).shift(-p)
-        if all(not a for a in F1.c) and all(not a for a in F2.c):
-            return lam, u
-        lam = lam - F1.scale_coeff(j11_inv)
-        u = u - F2 * sp.Rational(1, 2)
-    raise ArithmeticError("threshold series did not converge")  # pragma: no cover
+    lam = Series.constant(ring, lam0, 0)
+    u = Series.constant(ring, ring.zero, 0)
+    # one order at a time: each step with the leading Jacobian gains (at least) one order, so
+    # the residuals are needed only through the order being fixed (through m^L at level L)
+    for L in range(prec + 1):
+        hi = L + 2 * p
+        for _ in range(8):
+            # the iterates are polynomials: padded, the residuals are exact through m^L
+            lam, u = lam.padded(L), u.padded(L)
+            env = {LAM: lam.padded(hi), S.theta: u.shift(p).padded(hi)}
+            F1 = _eval(model["N"], env, ring, hi).shift(-2 * p)
+            F2 = _eval(model["dN"], env, ring, L + p).shift(-p)
+            if all(not a for a in F1.c) and all(not a for a in F2.c):
+                break
+            lam = (lam - F1.scale_coeff(j11_inv)).truncate(L)
+            u = (u - F2 * sp.Rational(1, 2)).truncate(L)
+        else:  # pragma: no cover
+            raise ArithmeticError("threshold series did not converge")
+    return lam, u
 
 
 def _check_terms(terms):
@@ -456,7 +462,20 @@ def _revert_power(lam: Series, p: int, terms: int) -> tuple[Series, dict]:
 @cache
 def _near_raw(n, damping: str, prec: int, system=None) -> dict[str, Series]:
     """``theta(m)`` on both edges at fixed ``nu``, coefficients in ``pi, (n,) s, nu``, and the
-    conversion series to ``T/T0`` and ``T/T_av``."""
+    conversion series to ``T/T0`` and ``T/T_av``.
+
+    The parts of the model free of ``theta`` (the parameters as series in ``m`` at ``lam = lam_0
+    nu``) are evaluated once (:func:`analytic.powerseries.fixed_parts`); Newton steps that double
+    the precision (:func:`analytic.powerseries.newton_doubling`) then evaluate only the parts that
+    depend on ``theta``.  The upper edge (``u(0) = +sqrt(A) s``) is solved; the lower one
+    (``u(0) = -sqrt(A) s``) is its image under ``s -> -s``, an automorphism of the coefficient
+    ring (it keeps ``nu^2 = 1 - s^2``) that fixes the equation, which involves ``nu`` but not
+    ``s``: the same exact series as solving it anew (the tests check both ways)."""
+    return _near_edges(n, damping, prec, system, ("upper",))
+
+
+def _near_edges(n, damping: str, prec: int, system, solved: tuple[str, ...]) -> dict:
+    """:func:`_near_raw` with the edges in ``solved`` solved directly, the others by ``s -> -s``."""
     p = _power(n, system)
     base = LaurentRing(_gens(n, (), system))
     A, B = _leading_balance(n, damping, base, system)
@@ -465,30 +484,47 @@ def _near_raw(n, damping: str, prec: int, system=None) -> dict[str, Series]:
     tmp = LaurentRing(gens)
     ring = LaurentRing(gens, relation=("nu", tmp.sub(tmp.one, tmp.gen("s", 2))))
     lift = _lift(base, ring)
-    lam = Series.constant(ring, ring.mul(lift(lam0), ring.gen("nu")), prec + 2 * p)
+    hi = prec + 2 * p
+    lam = Series.constant(ring, ring.mul(lift(lam0), ring.gen("nu")), hi)
     model = _scaled_model(n, damping, system)
     sqrtA = lift(base.root(A, 1, 2))
+    env = {S.n: "n", **{sp.Symbol(g): g for g in _ANGLE_GENS}, LAM: lam}
+    fixed = fixed_parts(
+        [model["N"], model["dN"], model["T0"]], env, ring, hi, var=S.m, vary={S.theta}
+    )
+    w0 = evaluate(model["w0"], {}, ring, prec, var=S.m)
     out = {}
-    for name, sign in (("lower", -1), ("upper", 1)):
+    signs = {"upper": 1, "lower": -1}
+    for name in sorted(signs, key=lambda k: k not in solved):  # the solved edges first
+        sign = signs[name]
+        if name not in solved:
+            flip = _flip(ring, ring.index["s"])
+            out[name] = {k: v.map(flip) for k, v in out["upper" if sign < 0 else "lower"].items()}
+            continue
         u0 = ring.scale(ring.mul(sqrtA, ring.gen("s")), sign)
 
-        hi = prec + 2 * p
+        def system_at(u, L, Ld):
+            memo = dict(fixed)
+            th = u.shift(p).padded(L + 2 * p)
+            F = _eval(model["N"], {LAM: lam, S.theta: th}, ring, L + 2 * p, memo).shift(-2 * p)
+            D = _eval(model["dN"], {LAM: lam, S.theta: th}, ring, Ld + p, memo).shift(-p)
+            return F, D
 
-        def resid(uu, lam=lam, hi=hi):
-            env = {LAM: lam, S.theta: uu.shift(p).padded(hi)}
-            return _eval(model["N"], env, ring, hi).shift(-2 * p)
-
-        def deriv(uu, lam=lam, hi=hi):
-            env = {LAM: lam, S.theta: uu.shift(p).padded(hi)}
-            return _eval(model["dN"], env, ring, prec + p).shift(-p)
-
-        u = newton(resid, deriv, Series.constant(ring, u0, prec))
+        u = newton_doubling(system_at, Series.constant(ring, u0, 0), prec)
         theta = u.shift(p).truncate(prec)
-        w0 = evaluate(model["w0"], {}, ring, prec, var=S.m)
-        T0 = _eval(model["T0"], {LAM: lam, S.theta: theta}, ring, prec)
+        T0 = _eval(model["T0"], {LAM: lam, S.theta: theta}, ring, prec, dict(fixed))
         out[name] = {"theta": theta, "T0": T0, "Tav": T0 * w0}
     out["lam0"] = Series.constant(base, lam0, 0)
-    return out
+    return {k: out[k] for k in ("lower", "upper", "lam0")}
+
+
+def _flip(ring: LaurentRing, i: int):
+    """The map ``s -> -s`` on ring elements (``s`` the generator at index ``i``)."""
+
+    def f(a: dict) -> dict:
+        return {k: (-v if k[i] % 2 else v) for k, v in a.items()}
+
+    return f
 
 
 def _as_sympy_number(x) -> sp.Expr:

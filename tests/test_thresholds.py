@@ -416,3 +416,43 @@ def test_cli_series_threshold_for_the_family(capsys):
     code = main(["series", "--order", "1", "--Q", "5", "--system", "custom", "--omega-sq", "1,2"])
     out, err = capsys.readouterr()
     assert code == 2 and out == "" and err.startswith("paramres: error:")
+
+
+@pytest.mark.parametrize("order,model", [(1, "exact"), (2, "paper")])
+def test_twelve_term_edges_against_roots(order, model):
+    """The longest friction series (K = 12, the limit) against the root of det(M - sigma I) of the
+    period map built in this file, at fixed nu = 0.6 and small depths: the error is the first
+    omitted term (the first nonzero term beyond m^12, from the solver run two orders further) to
+    10 %, and falls like its power of m (slope within 0.2)."""
+    from analytic.thresholds import _near_raw
+
+    K = 12
+    sigma = -1 if order % 2 else 1
+    es = near_threshold_edges(order, K, damping=model)
+    raw = _near_raw(order, model, K + 2)  # beyond the limit: the omitted terms
+    ms = ["0.001", "0.002"] if order % 2 else ["0.01", "0.02"]
+    nu = mpmath.mpf("0.6")
+    lam0 = 6 / (order * pi) if order % 2 else sp.Rational(3, 2)
+    nus = sp.Symbol("nu")
+    for name in ("lower", "upper"):
+        f = sp.lambdify((m, Q), es.in_T0[name], "mpmath")
+        T0 = raw[name]["T0"]
+        q = next(k for k in (K + 1, K + 2) if T0.c[k])  # the first omitted power
+        tsym = T0.ring.to_sympy(T0.c[q], {"s": sp.sqrt(1 - nus**2), "nu": nus})
+        g = sp.lambdify((nus,), tsym, "mpmath")
+        errs, preds = [], []
+        with mpmath.workdps(80):
+            for x in ms:
+                mm = mpmath.mpf(x)
+                QQ = 1 / (nu * mpmath.mpf(sp.N(lam0, 90)) * mm ** (1 if order % 2 else 2))
+                guess = f(mm, QQ)
+                root = mpmath.findroot(
+                    lambda T, mm=mm, QQ=QQ: det_condition(T, mm, QQ, sigma, model),
+                    guess,
+                    tol=mpmath.mpf(10) ** -150,
+                )
+                errs.append(abs(root - guess))
+                preds.append(abs(g(nu) * mm**q))
+            assert abs(errs[0] / preds[0] - 1) < 0.1, (order, model, name, errs, preds)
+            slope = mpmath.log(errs[1] / errs[0]) / mpmath.log(2)
+            assert abs(slope - q) < 0.2, (order, model, name, slope, q)

@@ -83,11 +83,9 @@ def run(args) -> int:
     Q = as_quality(args.Q)
     sysv = system_of(args)
     es = edge_series(order, terms, Q=Q, damping=damping, system=sysv)
-    payload = es.as_json()
-    payload["lower"] = _s(es.in_T0["lower"])
-    payload["upper"] = _s(es.in_T0["upper"])
-    payload["in_T0"] = {k: _s(v) for k, v in es.in_T0.items()}
-    payload["in_Tav"] = {k: _s(v) for k, v in es.in_Tav.items()}
+    payload = es.as_json(edge_printer=_s)
+    payload["lower"] = payload["in_T0"]["lower"]  # in T0 whatever the units
+    payload["upper"] = payload["in_T0"]["upper"]
     if Q is not None:
         payload["threshold"] = {
             **payload.get("threshold", {}),
