@@ -100,6 +100,9 @@ def _sgn(n) -> np.ndarray:
 _FAST_STEPS = 8
 
 
+#: Halley steps for starting values (:func:`undamped_roots` with ``rough``)
+_ROUGH_STEPS = 4
+
 #: a Halley step below this (times ``K step^2``, checked) leaves the point converged
 _SMALL_STEP = 1e-5
 
@@ -112,7 +115,7 @@ def _sin_cos(a):
     return 2.0 * h * inv, (1.0 - h) * (1.0 + h) * inv
 
 
-def undamped_roots(n, r, beta, eps, *, start=None, iterations: int = 80):
+def undamped_roots(n, r, beta, eps, *, start=None, iterations: int = 80, rough=None):
     """The root in ``(-pi/2, pi/2)`` of the edge equation ``eps`` (``+-1``) for order(s) ``n``;
     ``n``, ``r``, ``beta``, ``eps`` are broadcast together (orders of both parities may be mixed).
 
@@ -127,6 +130,10 @@ def undamped_roots(n, r, beta, eps, *, start=None, iterations: int = 80):
     solved again by the safeguarded iteration (:func:`_safeguarded`: the bracket starts as the
     window and shrinks with every sign seen).  Returns float64 ``theta`` of the broadcast
     shape.
+
+    ``rough``: starting values only (e.g. the nodes of :func:`_table_start`): a point stops once
+    its Halley step is below ``rough``, and a point that has not stopped after
+    :data:`_ROUGH_STEPS` steps keeps its last iterate (inside the window).
     """
     _lin, coef = edge_equation_linear()
     n = np.asarray(n)
@@ -168,7 +175,8 @@ def undamped_roots(n, r, beta, eps, *, start=None, iterations: int = 80):
     bc = beta * c
     done = np.zeros(th.size, bool)
     with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
-        for it in range(_FAST_STEPS):
+        steps = _FAST_STEPS if rough is None else _ROUGH_STEPS
+        for it in range(steps):
             st, ct = np.sin(t), np.cos(t)  # to half an ulp: the last step's residual is the error
             y = bc + bb * t
             sy, cy = np.sin(y), np.cos(y)
@@ -186,9 +194,12 @@ def undamped_roots(n, r, beta, eps, *, start=None, iterations: int = 80):
             # with |F3| <= 1 + r beta^3 <= 2: below 2^-57 (theta is an absolute angle next to
             # c = n pi/2 >= pi/2; the order-1 edge where x = pi/2 + theta is small is solved in x
             # by the caller)
-            stop = (a <= _SMALL_STEP) & ~out
-            stop &= (1.0 / (3.0 * np.abs(d1)) + h * h) * (a * a * a) <= 7e-18
-            last = it == _FAST_STEPS - 1
+            if rough is None:
+                stop = (a <= _SMALL_STEP) & ~out
+                stop &= (1.0 / (3.0 * np.abs(d1)) + h * h) * (a * a * a) <= 7e-18
+            else:
+                stop = (a <= rough) & ~out
+            last = it == steps - 1
             nstop = np.count_nonzero(stop)
             if not last and nstop * 2 < stop.size:
                 continue
@@ -198,7 +209,7 @@ def undamped_roots(n, r, beta, eps, *, start=None, iterations: int = 80):
                 break
             keep = ~stop
             idx, t, bc, bb, AA, BB = (v[keep] for v in (idx, t, bc, bb, AA, BB))
-    if not done.all():
+    if rough is None and not done.all():
         redo = np.nonzero(~done)[0]
         th[redo] = _safeguarded(
             start[redo], c[redo], beta[redo], A[redo], B[redo], iterations=iterations
@@ -274,7 +285,8 @@ def _table_start(n, r, beta, eps):
     pick = order[np.unique(np.linspace(0, beta.size - 1, _TABLE_NODES).round().astype(int))]
     xb, keep = np.unique(beta[pick], return_index=True)
     pick = pick[keep]
-    nodes = undamped_roots(n[None], r[pick][None], xb[None], eps)  # (len(eps), orders, nodes)
+    # (len(eps), orders, nodes), to about 1e-12 (a Halley step of 1e-4 leaves ~K 1e-12)
+    nodes = undamped_roots(n[None], r[pick][None], xb[None], eps, rough=1e-4)
     flat = nodes.reshape(-1, xb.size)
     return _cubic(xb, flat, beta).reshape(nodes.shape[:-1] + (beta.size,))
 
@@ -451,6 +463,18 @@ M_MIN = 2.0**-1022
 DECIMAL_OM = 0.11
 
 
+def _one_minus_decimal(x: float) -> float:
+    """``1 - d`` rounded once to a double, ``d`` the shortest decimal of ``x`` (``0 < x < 1``)."""
+    text = repr(x)
+    whole, _, frac = text.partition(".")
+    if whole != "0" or not frac.isdigit():  # an exponent form (not for x near 1): exact decimals
+        with decimal.localcontext() as dc:
+            dc.prec = 60
+            return float(decimal.Decimal(1) - decimal.Decimal(text))
+    scale = 10 ** len(frac)
+    return (scale - int(frac)) / scale
+
+
 class _Depths:
     """The depths of a grid: ``m`` and ``om = 1 - m`` as float64 arrays, ``om`` computed from the
     exact depth (``1 - float(m)`` loses every digit of ``1 - m`` that ``float(m)`` rounded off,
@@ -476,15 +500,10 @@ class _Depths:
             self.om = 1 - self.m
             near = np.nonzero(self.om < DECIMAL_OM)[0]
             if near.size:
-                # om = (1 - x) - (decimal(x) - x): 1 - x is exact here (Sterbenz), the correction
-                # exact in decimal arithmetic, then rounded once
-                with decimal.localcontext() as dc:
-                    dc.prec = 60
-                    for j in near:
-                        x = float(self.m[j])
-                        self.om[j] = float(
-                            (decimal.Decimal(1) - decimal.Decimal(repr(x))).normalize()
-                        )
+                # 1 - decimal(x) exactly, rounded once: for "0.d1...dk", (10^k - d1...dk) / 10^k
+                # in integers (Python's int division rounds correctly)
+                for j in near:
+                    self.om[j] = _one_minus_decimal(float(self.m[j]))
         self.size = self.m.size
         self.double = (self.om >= OM_MIN) & (self.m >= M_MIN)
 
@@ -735,12 +754,15 @@ def _order1_lower(P, cols, x_hi, eps=None, *, x_theta=None, doubt=False):
         form = ind
         args = (P.r2[cols], P.u[cols], P.beta[cols], bm, P.g[cols])
     f01 = form.compiled("numpy", (0, 1))
-    f0, f2 = form.compiled("numpy", (0, 2))(np.zeros(bm.shape), *args)
     x_hi = np.asarray(x_hi, float) * np.ones(bm.shape)
-    with np.errstate(invalid="ignore", divide="ignore"):
-        x0 = np.sqrt(-2 * np.asarray(f0, float) / np.asarray(f2, float))
-    if x_theta is not None:  # right to an absolute 1e-16: the better start unless x is tiny
-        x0 = np.where(np.asarray(x_theta) > 1e-4, x_theta, x0)
+    # x_theta is right to an absolute 1e-16: the better start unless x is tiny
+    taylor = np.ones(bm.shape, bool) if x_theta is None else ~(np.asarray(x_theta) > 1e-4)
+    x0 = np.array(x_theta if x_theta is not None else x_hi, float, copy=True)
+    if taylor.any():
+        sub = tuple(a[taylor] for a in args)
+        f0, f2 = form.compiled("numpy", (0, 2))(np.zeros(sub[0].shape), *sub)
+        with np.errstate(invalid="ignore", divide="ignore"):
+            x0[taylor] = np.sqrt(-2 * np.asarray(f0, float) / np.asarray(f2, float))
     x = np.where(np.isfinite(x0) & (x0 > 0) & (x0 < x_hi), x0, 0.5 * x_hi)
     # Newton from there (the points not yet converged only); a point that leaves the bracket or
     # does not converge is solved again by the safeguarded iteration
