@@ -103,9 +103,6 @@ _FAST_STEPS = 8
 #: Halley steps for starting values (:func:`undamped_roots` with ``rough``)
 _ROUGH_STEPS = 4
 
-#: a Halley step below this (times ``K step^2``, checked) leaves the point converged
-_SMALL_STEP = 1e-5
-
 
 def _sin_cos(a):
     """``sin(a)``, ``cos(a)`` from one tangent of the half angle (``h = tan(a/2)``: ``2h/(1+h^2)``,
@@ -162,17 +159,18 @@ def undamped_roots(n, r, beta, eps, *, start=None, iterations: int = 80, rough=N
         with np.errstate(divide="ignore", invalid="ignore"):
             th1 = th - kb * th / (np.sqrt((1 - s0) * (1 + s0)) + kb)
         th = np.where(np.isfinite(th1) & (np.abs(th1) < _HALF_PI), th1, th)
+        start, bc = th, beta * c
+        th = th.copy()
     else:
-        c, beta = full(c), full(beta)
-        th = np.clip(full(start), -1.57, 1.57)
+        bc = full(beta * c)
+        beta = full(beta)
+        start = full(start)
+        th = np.clip(start, -1.57, 1.57)
     A, B = full(A), full(B)
-    start = th
     trig = edge_equation_trig().compiled("numpy", (0, 1, 2))
     # Halley steps, the arrays compacted to the points still moving once half of them stopped
     idx = np.arange(th.size)
-    th = th.copy()
     t, bb, AA, BB = th, beta, A, B
-    bc = beta * c
     done = np.zeros(th.size, bool)
     with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
         steps = _FAST_STEPS if rough is None else _ROUGH_STEPS
@@ -194,11 +192,13 @@ def undamped_roots(n, r, beta, eps, *, start=None, iterations: int = 80, rough=N
             # with |F3| <= 1 + r beta^3 <= 2: below 2^-57 (theta is an absolute angle next to
             # c = n pi/2 >= pi/2; the order-1 edge where x = pi/2 + theta is small is solved in x
             # by the caller)
+            # by the caller); K >= 1/(3 |F1|) >= 1/6, so this stops no step above 3.5e-6
             if rough is None:
-                stop = (a <= _SMALL_STEP) & ~out
-                stop &= (1.0 / (3.0 * np.abs(d1)) + h * h) * (a * a * a) <= 7e-18
+                stop = (1.0 / (3.0 * np.abs(d1)) + h * h) * (a * a * a) <= 7e-18
             else:
-                stop = (a <= rough) & ~out
+                stop = a <= rough
+            if out.any():
+                stop &= ~out
             last = it == steps - 1
             nstop = np.count_nonzero(stop)
             if not last and nstop * 2 < stop.size:
@@ -212,7 +212,7 @@ def undamped_roots(n, r, beta, eps, *, start=None, iterations: int = 80, rough=N
     if rough is None and not done.all():
         redo = np.nonzero(~done)[0]
         th[redo] = _safeguarded(
-            start[redo], c[redo], beta[redo], A[redo], B[redo], iterations=iterations
+            start[redo], full(c)[redo], beta[redo], A[redo], B[redo], iterations=iterations
         )
     return th.reshape(shape)
 
@@ -272,7 +272,7 @@ def normal_edges(n, P, eps_pair=(1, -1)):
 
 #: grids with at least this many depths start from a table of roots at a few of their own depths
 _TABLE_MIN = 256
-_TABLE_NODES = 65
+_TABLE_NODES = 97
 
 
 def _table_start(n, r, beta, eps):
