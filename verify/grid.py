@@ -212,7 +212,8 @@ def undamped_roots(n, r, beta, eps, *, start=None, iterations: int = 80, rough=N
     if rough is None and not done.all():
         redo = np.nonzero(~done)[0]
         th[redo] = _safeguarded(
-            start[redo], full(c)[redo], beta[redo], A[redo], B[redo], iterations=iterations
+            start[redo], c.ravel()[redo] if c.size == th.size else full(c)[redo], beta[redo],
+            A[redo], B[redo], iterations=iterations,
         )
     return th.reshape(shape)
 
