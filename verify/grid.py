@@ -312,7 +312,18 @@ def _cubic(xb, rows, x):
 
 
 def _bisect_newton_compact(
-    fn, args, lo, hi, x0, increasing: bool, *, scale=None, halley=False, rtol=4e-16, iterations=100
+    fn,
+    args,
+    lo,
+    hi,
+    x0,
+    increasing: bool,
+    *,
+    scale=None,
+    halley=False,
+    rtol=4e-16,
+    iterations=100,
+    first=None,
 ):
     """Safeguarded Newton (``halley=True``: Halley, ``fn`` also giving ``f''``) for ``fn(x, *args)
     -> (f, df[, d2f])`` on arrays, one root per point in ``[lo, hi]`` with a sign change
@@ -322,7 +333,8 @@ def _bisect_newton_compact(
     point dropped from the iteration once it has converged, so that the few slow points do not keep
     the whole array iterating.  A point has converged when its last step or its bracket is below
     ``rtol`` of ``scale`` (the size that sets the relative error: ``c + theta``, where ``T`` is
-    proportional to it; ``|x|`` when ``scale`` is None), or when ``f`` is exactly 0."""
+    proportional to it; ``|x|`` when ``scale`` is None), or when ``f`` is exactly 0.  ``first``:
+    ``fn(x0, *args)`` flattened, if the caller has it already."""
     shape = np.broadcast(np.asarray(x0), np.asarray(lo), np.asarray(hi), *args).shape
     if isinstance(increasing, bool):
         increasing = 1.0 if increasing else -1.0
@@ -339,8 +351,8 @@ def _bisect_newton_compact(
     idx = np.arange(x.size)
     sub, tl, sign = args, tol, sgn
     with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
-        for _ in range(iterations):
-            vals = fn(x, *sub)
+        for it in range(iterations):
+            vals = first if it == 0 and first is not None else fn(x, *sub)
             f, df = sign * np.asarray(vals[0], float), sign * np.asarray(vals[1], float)
             lo = np.where(f < 0, x, lo)
             hi = np.where(f > 0, x, hi)
@@ -364,26 +376,32 @@ def _bisect_newton_compact(
     return out.reshape(shape)
 
 
-def damped_normal(n, P):
+def damped_normal(n, P, edges=None):
     """Friction, normal form: ``dict(a, b, top, lo, hi)`` of float64 ``theta`` arrays (one parity):
     the undamped-form bracket ``[a, b]``, the maximiser ``top`` of ``D`` and the edges (NaN where
-    the interval does not exist)."""
+    the interval does not exist).  ``edges``: the undamped roots ``normal_edges(n, P)`` if the
+    caller has them already."""
     n = np.asarray(n)
     parity = _parity(int(n.flat[0]))
     form = indicator(parity)
     dd = form.compiled("numpy", (1, 2))
-    t1, t2 = normal_edges(n, P)
+    d012 = form.compiled("numpy", (0, 1, 2))
+    t1, t2 = normal_edges(n, P) if edges is None else edges
     a, b = np.minimum(t1, t2), np.maximum(t1, t2)
     c = n * _HALF_PI
     args = (c, P.r2, P.u, P.beta, P.g)
     shape = np.broadcast(a, *args).shape
     a, b = np.broadcast_to(a, shape), np.broadcast_to(b, shape)
+    # D, D', D'' at both ends: D' for the maximiser's bracket and start, D where the maximiser is
+    # an end, and all three for the first Halley step of each edge
+    at_a = [np.asarray(v, float) * np.ones(shape) for v in d012(a, *args)]
+    at_b = [np.asarray(v, float) * np.ones(shape) for v in d012(b, *args)]
+    d1a, d1b = at_a[1], at_b[1]
     # maximiser: zero of D' (decreasing through it), started where the secant of D' through the
     # ends vanishes
-    d1a = np.asarray(dd(a, *args)[0], float) * np.ones(shape)
-    d1b = np.asarray(dd(b, *args)[0], float) * np.ones(shape)
     inside = (d1a > 0) & (d1b < 0)
     top = np.where(d1a <= 0, a, b)
+    dtop = np.where(d1a <= 0, at_a[0], at_b[0])
     scale = np.maximum(np.broadcast_to(c, shape) + 0.5 * (a + b), 1.0)
     if inside.any():  # (only there: elsewhere D' has no sign change)
         sel = np.nonzero(inside.ravel())[0]
@@ -394,10 +412,10 @@ def damped_normal(n, P):
         x0 = np.where((x0 > aa) & (x0 < bb), x0, 0.5 * (aa + bb))
         # to 1e-12 of c + theta: D(top) is then below its maximum by ~D'' 1e-24, far below
         # the rounding of D (the existence decision and the edge brackets need no more)
+        tops = _bisect_newton_compact(dd, sub, aa, bb, x0, False, scale=sc, rtol=1e-12)
         top = np.array(top, float, copy=True)
-        top.ravel()[sel] = _bisect_newton_compact(dd, sub, aa, bb, x0, False, scale=sc, rtol=1e-12)
-    d012 = form.compiled("numpy", (0, 1, 2))
-    dtop = np.asarray(d012(top, *args)[0], float) * np.ones(shape)
+        top.ravel()[sel] = tops
+        dtop.ravel()[sel] = np.asarray(d012(tops, *sub)[0], float)
     exists = dtop > 0
     lo = np.full(shape, np.nan)
     hi = np.full(shape, np.nan)
@@ -419,6 +437,7 @@ def damped_normal(n, P):
             np.concatenate([np.ones(k), -np.ones(k)]),
             scale=np.maximum(np.concatenate([cc + aa, cc + bb]), 1.0),
             halley=True,
+            first=[np.concatenate([va.ravel()[sel], vb.ravel()[sel]]) for va, vb in zip(at_a, at_b)],
         )
         lo.ravel()[sel] = both[:k]
         hi.ravel()[sel] = both[k:]
@@ -846,12 +865,13 @@ def _fill_normal(out, orders, ms, P, damped: bool) -> np.ndarray:
         out[:, 0, :] = np.minimum(T1, T2)
         out[:, 1, :] = np.maximum(T1, T2)
         return doubt
+    t1, t2 = normal_edges(orders_arr[:, None], P)  # the undamped roots of all orders at once
     for parity in (1, 0):
         rows = np.nonzero(orders_arr % 2 == parity)[0]
         if rows.size == 0:
             continue
         n = orders_arr[rows][:, None]
-        res = damped_normal(n, P)
+        res = damped_normal(n, P, edges=(t1[rows], t2[rows]))
         near = near_one_forms()[2]
         lo = _polish_near_one(res["lo"], orders_arr[rows], P, near)
         hi = _polish_near_one(res["hi"], orders_arr[rows], P, near)
