@@ -283,9 +283,13 @@ def _table_start(n, r, beta, eps):
     simple root, so the start is right to ``O(h^4)``, about 1e-8, and one Halley step finishes
     it; where it is not, the iteration goes on for those points)."""
     order = np.argsort(beta, kind="stable")
-    pick = order[np.unique(np.linspace(0, beta.size - 1, _TABLE_NODES).round().astype(int))]
-    xb, keep = np.unique(beta[pick], return_index=True)
-    pick = pick[keep]
+    # distinct positions (beta.size >= _TABLE_NODES), then distinct depths
+    pick = order[np.linspace(0, beta.size - 1, min(_TABLE_NODES, beta.size)).round().astype(int)]
+    xb = beta[pick]
+    keep = np.diff(xb) > 0
+    if not keep.all():
+        keep = np.concatenate([[True], keep])
+        pick, xb = pick[keep], xb[keep]
     # (len(eps), orders, nodes), to about 1e-12 (a Halley step of 1e-4 leaves ~K 1e-12)
     nodes = undamped_roots(n[None], r[pick][None], xb[None], eps, rough=1e-4)
     flat = nodes.reshape(-1, xb.size)
@@ -299,15 +303,18 @@ def _cubic(xb, rows, x):
     if xb.size < 4:
         return np.stack([np.interp(x, xb, row) for row in rows])
     j = np.clip(np.searchsorted(xb, x) - 2, 0, xb.size - 4)
-    p = [xb[j + i] for i in range(4)]
-    d = [x - q for q in p]
-    out = 0.0
-    for i in range(4):
-        w = np.ones(x.shape)
-        for k in range(4):
-            if k != i:
-                w *= d[k] / (p[i] - p[k])
-        out = out + w * rows[:, j + i]
+    # the denominators of the Lagrange weights, per interval of nodes (on the small table)
+    q = [xb[i : xb.size - 3 + i] for i in range(4)]
+    den = [
+        (q[i] - q[(i + 1) % 4]) * (q[i] - q[(i + 2) % 4]) * (q[i] - q[(i + 3) % 4])
+        for i in range(4)
+    ]
+    d = [x - q[i][j] for i in range(4)]
+    d01, d23 = d[0] * d[1], d[2] * d[3]
+    w = (d[1] * d23, d[0] * d23, d01 * d[3], d01 * d[2])
+    out = (w[0] / den[0][j]) * np.take(rows, j, axis=1)
+    for i in range(1, 4):
+        out += (w[i] / den[i][j]) * np.take(rows, j + i, axis=1)
     return out
 
 
@@ -520,10 +527,8 @@ class _Depths:
             self.om = 1 - self.m
             near = np.nonzero(self.om < DECIMAL_OM)[0]
             if near.size:
-                # 1 - decimal(x) exactly, rounded once: for "0.d1...dk", (10^k - d1...dk) / 10^k
-                # in integers (Python's int division rounds correctly)
-                for j in near:
-                    self.om[j] = _one_minus_decimal(float(self.m[j]))
+                # 1 - decimal(x) exactly, rounded once (:func:`_one_minus_decimal`)
+                self.om[near] = [_one_minus_decimal(x) for x in self.m[near].tolist()]
         self.size = self.m.size
         self.double = (self.om >= OM_MIN) & (self.m >= M_MIN)
 
