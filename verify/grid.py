@@ -141,7 +141,11 @@ def undamped_roots(n, r, beta, eps, *, start=None, iterations: int = 80, rough=N
     A, B = coef.compiled("numpy", (0, 1))(sgn, eps, odd, r)
 
     def full(a):
-        return np.ascontiguousarray(np.broadcast_to(np.asarray(a, float), shape)).ravel()
+        if np.shape(a) == shape:
+            return np.ascontiguousarray(a, float).ravel()
+        out = np.empty(shape)  # (assignment broadcasts in C; np.broadcast_to is slower)
+        out[...] = a
+        return out.ravel()
 
     if start is None:
         c, sgn, odd, r, eps = (full(a) for a in (c, sgn, odd, r, eps))
@@ -165,7 +169,7 @@ def undamped_roots(n, r, beta, eps, *, start=None, iterations: int = 80, rough=N
         bc = full(beta * c)
         beta = full(beta)
         start = full(start)
-        th = np.clip(start, -1.57, 1.57)
+        th = np.minimum(np.maximum(start, -1.57), 1.57)
     A, B = full(A), full(B)
     trig = edge_equation_trig().compiled("numpy", (0, 1, 2))
     # Halley steps, the arrays compacted to the points still moving once half of them stopped
@@ -284,9 +288,10 @@ def _table_start(n, r, beta, eps):
     it; where it is not, the iteration goes on for those points)."""
     order = np.argsort(beta, kind="stable")
     # distinct positions (beta.size >= _TABLE_NODES), then distinct depths
-    pick = order[np.linspace(0, beta.size - 1, min(_TABLE_NODES, beta.size)).round().astype(int)]
+    k = min(_TABLE_NODES, beta.size)
+    pick = order[np.rint(np.arange(k) * ((beta.size - 1) / (k - 1))).astype(int)]
     xb = beta[pick]
-    keep = np.diff(xb) > 0
+    keep = xb[1:] > xb[:-1]
     if not keep.all():
         keep = np.concatenate([[True], keep])
         pick, xb = pick[keep], xb[keep]
@@ -302,7 +307,7 @@ def _cubic(xb, rows, x):
     there are fewer than four nodes): shape ``(k, len(x))``."""
     if xb.size < 4:
         return np.stack([np.interp(x, xb, row) for row in rows])
-    j = np.clip(np.searchsorted(xb, x) - 2, 0, xb.size - 4)
+    j = np.minimum(np.maximum(np.searchsorted(xb, x) - 2, 0), xb.size - 4)
     # the denominators of the Lagrange weights, per interval of nodes (on the small table)
     q = [xb[i : xb.size - 3 + i] for i in range(4)]
     den = [
