@@ -104,6 +104,14 @@ _FAST_STEPS = 8
 _ROUGH_STEPS = 4
 
 
+def _full(a, shape) -> np.ndarray:
+    """``a`` broadcast to ``shape`` as a new C-contiguous float64 array (broadcasting assignment:
+    cheaper than ``np.broadcast_to(...).copy()`` on the arrays of a grid)."""
+    out = np.empty(shape)
+    out[...] = a
+    return out
+
+
 def _sin_cos(a):
     """``sin(a)``, ``cos(a)`` from one tangent of the half angle (``h = tan(a/2)``: ``2h/(1+h^2)``,
     ``(1-h)(1+h)/(1+h^2)``), each to a few ulp of 1: one transcendental call instead of two."""
@@ -168,8 +176,8 @@ def undamped_roots(n, r, beta, eps, *, start=None, iterations: int = 80, rough=N
     else:
         bc = full(beta * c)
         beta = full(beta)
-        start = full(start)
-        th = np.minimum(np.maximum(start, -1.57), 1.57)
+        start = np.minimum(np.maximum(full(start), -1.57), 1.57)  # inside the window
+        th = start.copy()
     A, B = full(A), full(B)
     trig = edge_equation_trig().compiled("numpy", (0, 1, 2))
     # Halley steps, the arrays compacted to the points still moving once half of them stopped
@@ -352,10 +360,7 @@ def _bisect_newton_compact(
         increasing = 1.0 if increasing else -1.0
     if scale is None:
         scale = np.abs(np.asarray(x0, float))
-    flat = [
-        np.broadcast_to(np.asarray(a, float), shape).ravel()
-        for a in (x0, lo, hi, scale, increasing, *args)
-    ]
+    flat = [_full(a, shape).ravel() for a in (x0, lo, hi, scale, increasing, *args)]
     x, lo, hi, sc, sgn = flat[0].copy(), flat[1].copy(), flat[2].copy(), flat[3], flat[4]
     args = flat[5:]
     tol = rtol * np.maximum(np.abs(sc), 1e-300)
@@ -403,7 +408,7 @@ def damped_normal(n, P, edges=None):
     c = n * _HALF_PI
     args = (c, P.r2, P.u, P.beta, P.g)
     shape = np.broadcast(a, *args).shape
-    a, b = np.broadcast_to(a, shape), np.broadcast_to(b, shape)
+    a, b = _full(a, shape), _full(b, shape)
     # D, D', D'' at both ends: D' for the maximiser's bracket and start, D where the maximiser is
     # an end, and all three for the first Halley step of each edge
     at_a = [np.asarray(v, float) * np.ones(shape) for v in d012(a, *args)]
@@ -414,11 +419,11 @@ def damped_normal(n, P, edges=None):
     inside = (d1a > 0) & (d1b < 0)
     top = np.where(d1a <= 0, a, b)
     dtop = np.where(d1a <= 0, at_a[0], at_b[0])
-    scale = np.maximum(np.broadcast_to(c, shape) + 0.5 * (a + b), 1.0)
+    scale = np.maximum(c + 0.5 * (a + b), 1.0)
     if inside.any():  # (only there: elsewhere D' has no sign change)
         sel = np.nonzero(inside.ravel())[0]
         aa, bb, ya, yb, sc = (np.ravel(v)[sel] for v in (a, b, d1a, d1b, scale))
-        sub = tuple(np.broadcast_to(v, shape).ravel()[sel] for v in args)
+        sub = tuple(_full(v, shape).ravel()[sel] for v in args)
         with np.errstate(divide="ignore", invalid="ignore"):
             x0 = aa + ya * (bb - aa) / (ya - yb)
         x0 = np.where((x0 > aa) & (x0 < bb), x0, 0.5 * (aa + bb))
@@ -436,9 +441,9 @@ def damped_normal(n, P, edges=None):
         # is no sign change), each from its undamped root, in the bracket between it and the
         # maximiser (D negative at the one end, positive at the other)
         sel = np.nonzero(exists.ravel())[0]
-        cc = np.broadcast_to(c, shape).ravel()[sel]
+        cc = _full(c, shape).ravel()[sel]
         aa, bb, tt = (np.ravel(v)[sel] for v in (a, b, top))
-        sub = tuple(np.tile(np.broadcast_to(v, shape).ravel()[sel], 2) for v in args)
+        sub = tuple(np.concatenate([w, w]) for w in (_full(v, shape).ravel()[sel] for v in args))
         k = sel.size
         both = _bisect_newton_compact(
             d012,
@@ -934,8 +939,10 @@ def _normal_doubt(n, P, res, lo, hi):
     where the edges are a near-double root)."""
     parity = _parity(int(n.flat[0]))
     c = n * _HALF_PI
-    top, lo, hi = np.broadcast_arrays(res["top"], lo, hi)
-    c, r2, u, beta, g, bm = np.broadcast_arrays(c, P.r2, P.u, P.beta, P.g, P.bm, lo)[:-1]
+    params = (c, P.r2, P.u, P.beta, P.g, P.bm)
+    shape = np.broadcast_shapes(*(np.shape(v) for v in (res["top"], lo, hi, *params)))
+    top, lo, hi = (_full(v, shape) for v in (res["top"], lo, hi))
+    c, r2, u, beta, g, bm = (_full(v, shape) for v in params)
     form, nearf = indicator(parity), near_one_forms()[2]
     with np.errstate(invalid="ignore", over="ignore"):
         undecided = np.abs(res["dtop"]) <= _noise(form, top, (c, r2, u, beta, g), c + top)
