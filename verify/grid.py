@@ -224,8 +224,12 @@ def undamped_roots(n, r, beta, eps, *, start=None, iterations: int = 80, rough=N
     if rough is None and not done.all():
         redo = np.nonzero(~done)[0]
         th[redo] = _safeguarded(
-            start[redo], c.ravel()[redo] if c.size == th.size else full(c)[redo], beta[redo],
-            A[redo], B[redo], iterations=iterations,
+            start[redo],
+            c.ravel()[redo] if c.size == th.size else full(c)[redo],
+            beta[redo],
+            A[redo],
+            B[redo],
+            iterations=iterations,
         )
     return th.reshape(shape)
 
@@ -454,7 +458,10 @@ def damped_normal(n, P, edges=None):
             np.concatenate([np.ones(k), -np.ones(k)]),
             scale=np.maximum(np.concatenate([cc + aa, cc + bb]), 1.0),
             halley=True,
-            first=[np.concatenate([va.ravel()[sel], vb.ravel()[sel]]) for va, vb in zip(at_a, at_b)],
+            first=[
+                np.concatenate([va.ravel()[sel], vb.ravel()[sel]])
+                for va, vb in zip(at_a, at_b, strict=True)
+            ],
         )
         lo.ravel()[sel] = both[:k]
         hi.ravel()[sel] = both[k:]
