@@ -118,3 +118,20 @@ def test_figures_2_and_8_can_be_drawn():
                 | (np.abs(ms - float(a2)) < 2e-3)
             )
             assert np.array_equal(has[~margin], inside[~margin])
+
+
+@pytest.mark.parametrize("Q", [None, 7])
+def test_large_grid_near_one_matches_certified(Q):
+    """A grid of at least 256 depths starts from interpolated roots at some of its own depths
+    (:func:`verify.grid._table_start`), which may overshoot the window next to ``m = 1``; the
+    entries there must still be the edges.  Reference: the certified route at 20 digits on the
+    depths closest to 1 (every interval of orders 1-3), the rest of the grid as filler."""
+    near = 1 - np.logspace(-12, -1, 40)
+    ms = np.concatenate([(np.arange(1000) + 0.5) / 1000, near])
+    g = boundary_grid([1, 2, 3], ms, Q=Q)
+    for i, n in enumerate((1, 2, 3)):
+        for j in range(1000, ms.size):
+            b = boundary(n, float(ms[j]), Q=Q, digits=20)
+            assert b.exists, (n, ms[j])
+            for k, want in ((0, b.lower), (1, b.upper)):
+                assert abs(g[i, k, j] - float(want)) <= RTOL * abs(float(want)), (n, ms[j], k)

@@ -100,8 +100,16 @@ def _sgn(n) -> np.ndarray:
 _FAST_STEPS = 8
 
 
-#: a Halley step below this (times ``K step^2``, checked) leaves the point converged
-_SMALL_STEP = 1e-7
+#: Halley steps for starting values (:func:`undamped_roots` with ``rough``)
+_ROUGH_STEPS = 4
+
+
+def _full(a, shape) -> np.ndarray:
+    """``a`` broadcast to ``shape`` as a new C-contiguous float64 array (broadcasting assignment:
+    cheaper than ``np.broadcast_to(...).copy()`` on the arrays of a grid)."""
+    out = np.empty(shape)
+    out[...] = a
+    return out
 
 
 def _sin_cos(a):
@@ -112,7 +120,7 @@ def _sin_cos(a):
     return 2.0 * h * inv, (1.0 - h) * (1.0 + h) * inv
 
 
-def undamped_roots(n, r, beta, eps, *, start=None, iterations: int = 80):
+def undamped_roots(n, r, beta, eps, *, start=None, iterations: int = 80, rough=None):
     """The root in ``(-pi/2, pi/2)`` of the edge equation ``eps`` (``+-1``) for order(s) ``n``;
     ``n``, ``r``, ``beta``, ``eps`` are broadcast together (orders of both parities may be mixed).
 
@@ -127,6 +135,10 @@ def undamped_roots(n, r, beta, eps, *, start=None, iterations: int = 80):
     solved again by the safeguarded iteration (:func:`_safeguarded`: the bracket starts as the
     window and shrinks with every sign seen).  Returns float64 ``theta`` of the broadcast
     shape.
+
+    ``rough``: starting values only (e.g. the nodes of :func:`_table_start`): a point stops once
+    its Halley step is below ``rough``, and a point that has not stopped after
+    :data:`_ROUGH_STEPS` steps keeps its last iterate (inside the window).
     """
     _lin, coef = edge_equation_linear()
     n = np.asarray(n)
@@ -137,7 +149,11 @@ def undamped_roots(n, r, beta, eps, *, start=None, iterations: int = 80):
     A, B = coef.compiled("numpy", (0, 1))(sgn, eps, odd, r)
 
     def full(a):
-        return np.ascontiguousarray(np.broadcast_to(np.asarray(a, float), shape)).ravel()
+        if np.shape(a) == shape:
+            return np.ascontiguousarray(a, float).ravel()
+        out = np.empty(shape)  # (assignment broadcasts in C; np.broadcast_to is slower)
+        out[...] = a
+        return out.ravel()
 
     if start is None:
         c, sgn, odd, r, eps = (full(a) for a in (c, sgn, odd, r, eps))
@@ -155,20 +171,22 @@ def undamped_roots(n, r, beta, eps, *, start=None, iterations: int = 80):
         with np.errstate(divide="ignore", invalid="ignore"):
             th1 = th - kb * th / (np.sqrt((1 - s0) * (1 + s0)) + kb)
         th = np.where(np.isfinite(th1) & (np.abs(th1) < _HALF_PI), th1, th)
+        start, bc = th, beta * c
+        th = th.copy()
     else:
-        c, beta = full(c), full(beta)
-        th = np.clip(full(start), -1.57, 1.57)
+        bc = full(beta * c)
+        beta = full(beta)
+        start = np.minimum(np.maximum(full(start), -1.57), 1.57)  # inside the window
+        th = start.copy()
     A, B = full(A), full(B)
-    start = th
     trig = edge_equation_trig().compiled("numpy", (0, 1, 2))
     # Halley steps, the arrays compacted to the points still moving once half of them stopped
     idx = np.arange(th.size)
-    th = th.copy()
     t, bb, AA, BB = th, beta, A, B
-    bc = beta * c
     done = np.zeros(th.size, bool)
     with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
-        for it in range(_FAST_STEPS):
+        steps = _FAST_STEPS if rough is None else _ROUGH_STEPS
+        for it in range(steps):
             st, ct = np.sin(t), np.cos(t)  # to half an ulp: the last step's residual is the error
             y = bc + bb * t
             sy, cy = np.sin(y), np.cos(y)
@@ -176,30 +194,42 @@ def undamped_roots(n, r, beta, eps, *, start=None, iterations: int = 80):
             step = f / d1
             h = 0.5 * d2 / d1
             step /= 1.0 - step * h
-            t = t - step
+            t_old, t = t, t - step
+            # a step out of the window goes half way from where it was to the window's end
+            out = np.abs(t) >= _HALF_PI
+            if out.any():
+                t = np.where(out, 0.5 * (t_old + np.copysign(_HALF_PI, t)), t)
             a = np.abs(step)
-            moving = ~(a <= _SMALL_STEP)
-            last = it == _FAST_STEPS - 1
-            if not last and moving.sum() * 2 > moving.size:
-                continue
             # Halley's error after the step is about K step^3, K = F3/(6 F1) - (F2/(2 F1))^2
             # with |F3| <= 1 + r beta^3 <= 2: below 2^-57 (theta is an absolute angle next to
             # c = n pi/2 >= pi/2; the order-1 edge where x = pi/2 + theta is small is solved in x
             # by the caller)
-            stop = np.nonzero(~moving)[0]
-            sa, sd1, sh = a[stop], d1[stop], h[stop]
-            ok = (1.0 / (3.0 * np.abs(sd1)) + sh * sh) * (sa * sa * sa) <= 7e-18
-            ok &= np.abs(t[stop]) < _HALF_PI
+            # by the caller); K >= 1/(3 |F1|) >= 1/6, so this stops no step above 3.5e-6
+            if rough is None:
+                stop = (1.0 / (3.0 * np.abs(d1)) + h * h) * (a * a * a) <= 7e-18
+            else:
+                stop = a <= rough
+            if out.any():
+                stop &= ~out
+            last = it == steps - 1
+            nstop = np.count_nonzero(stop)
+            if not last and nstop * 2 < stop.size:
+                continue
             th[idx] = t
-            done[idx[stop[ok]]] = True
-            if last or not moving.any():
+            done[idx[stop]] = True
+            if last or nstop == stop.size:
                 break
-            moving[stop[~ok]] = True
-            idx, t, bc, bb, AA, BB = (v[moving] for v in (idx, t, bc, bb, AA, BB))
-    if not done.all():
+            keep = ~stop
+            idx, t, bc, bb, AA, BB = (v[keep] for v in (idx, t, bc, bb, AA, BB))
+    if rough is None and not done.all():
         redo = np.nonzero(~done)[0]
         th[redo] = _safeguarded(
-            start[redo], c[redo], beta[redo], A[redo], B[redo], iterations=iterations
+            start[redo],
+            c.ravel()[redo] if c.size == th.size else full(c)[redo],
+            beta[redo],
+            A[redo],
+            B[redo],
+            iterations=iterations,
         )
     return th.reshape(shape)
 
@@ -259,28 +289,65 @@ def normal_edges(n, P, eps_pair=(1, -1)):
 
 #: grids with at least this many depths start from a table of roots at a few of their own depths
 _TABLE_MIN = 256
-_TABLE_NODES = 65
+_TABLE_NODES = 97
 
 
 def _table_start(n, r, beta, eps):
     """Starting values for the roots at every depth: the roots at :data:`_TABLE_NODES` of the
-    depths (spread evenly in ``beta``), interpolated linearly in ``beta`` (each root is an
-    analytic function of the depth with the window theorem's one simple root, so the start is
-    right to ``O(h^2)`` and two Halley steps finish it)."""
+    depths (spread evenly over the sorted ``beta``), interpolated by the cubic through the four
+    nearest nodes (each root is an analytic function of the depth with the window theorem's one
+    simple root, so the start is right to ``O(h^4)``, about 1e-8, and one Halley step finishes
+    it; where it is not, the iteration goes on for those points)."""
     order = np.argsort(beta, kind="stable")
-    pick = order[np.unique(np.linspace(0, beta.size - 1, _TABLE_NODES).round().astype(int))]
-    xb, keep = np.unique(beta[pick], return_index=True)
-    pick = pick[keep]
-    nodes = undamped_roots(n[None], r[pick][None], xb[None], eps)  # (len(eps), orders, nodes)
+    # distinct positions (beta.size >= _TABLE_NODES), then distinct depths
+    k = min(_TABLE_NODES, beta.size)
+    pick = order[np.rint(np.arange(k) * ((beta.size - 1) / (k - 1))).astype(int)]
+    xb = beta[pick]
+    keep = xb[1:] > xb[:-1]
+    if not keep.all():
+        keep = np.concatenate([[True], keep])
+        pick, xb = pick[keep], xb[keep]
+    # (len(eps), orders, nodes), to about 1e-12 (a Halley step of 1e-4 leaves ~K 1e-12)
+    nodes = undamped_roots(n[None], r[pick][None], xb[None], eps, rough=1e-4)
     flat = nodes.reshape(-1, xb.size)
-    out = np.empty((flat.shape[0], beta.size))
-    for i, row in enumerate(flat):
-        out[i] = np.interp(beta, xb, row)
-    return out.reshape(nodes.shape[:-1] + (beta.size,))
+    return _cubic(xb, flat, beta).reshape(nodes.shape[:-1] + (beta.size,))
+
+
+def _cubic(xb, rows, x):
+    """The rows ``rows`` (``(k, len(xb))``, values at the sorted nodes ``xb``) interpolated at
+    ``x`` by the cubic (Lagrange) through the four nodes nearest each point (linearly where
+    there are fewer than four nodes): shape ``(k, len(x))``."""
+    if xb.size < 4:
+        return np.stack([np.interp(x, xb, row) for row in rows])
+    j = np.minimum(np.maximum(np.searchsorted(xb, x) - 2, 0), xb.size - 4)
+    # the denominators of the Lagrange weights, per interval of nodes (on the small table)
+    q = [xb[i : xb.size - 3 + i] for i in range(4)]
+    den = [
+        (q[i] - q[(i + 1) % 4]) * (q[i] - q[(i + 2) % 4]) * (q[i] - q[(i + 3) % 4])
+        for i in range(4)
+    ]
+    d = [x - q[i][j] for i in range(4)]
+    d01, d23 = d[0] * d[1], d[2] * d[3]
+    w = (d[1] * d23, d[0] * d23, d01 * d[3], d01 * d[2])
+    out = (w[0] / den[0][j]) * np.take(rows, j, axis=1)
+    for i in range(1, 4):
+        out += (w[i] / den[i][j]) * np.take(rows, j + i, axis=1)
+    return out
 
 
 def _bisect_newton_compact(
-    fn, args, lo, hi, x0, increasing: bool, *, scale=None, halley=False, rtol=4e-16, iterations=100
+    fn,
+    args,
+    lo,
+    hi,
+    x0,
+    increasing: bool,
+    *,
+    scale=None,
+    halley=False,
+    rtol=4e-16,
+    iterations=100,
+    first=None,
 ):
     """Safeguarded Newton (``halley=True``: Halley, ``fn`` also giving ``f''``) for ``fn(x, *args)
     -> (f, df[, d2f])`` on arrays, one root per point in ``[lo, hi]`` with a sign change
@@ -290,16 +357,14 @@ def _bisect_newton_compact(
     point dropped from the iteration once it has converged, so that the few slow points do not keep
     the whole array iterating.  A point has converged when its last step or its bracket is below
     ``rtol`` of ``scale`` (the size that sets the relative error: ``c + theta``, where ``T`` is
-    proportional to it; ``|x|`` when ``scale`` is None), or when ``f`` is exactly 0."""
+    proportional to it; ``|x|`` when ``scale`` is None), or when ``f`` is exactly 0.  ``first``:
+    ``fn(x0, *args)`` flattened, if the caller has it already."""
     shape = np.broadcast(np.asarray(x0), np.asarray(lo), np.asarray(hi), *args).shape
     if isinstance(increasing, bool):
         increasing = 1.0 if increasing else -1.0
     if scale is None:
         scale = np.abs(np.asarray(x0, float))
-    flat = [
-        np.broadcast_to(np.asarray(a, float), shape).ravel()
-        for a in (x0, lo, hi, scale, increasing, *args)
-    ]
+    flat = [_full(a, shape).ravel() for a in (x0, lo, hi, scale, increasing, *args)]
     x, lo, hi, sc, sgn = flat[0].copy(), flat[1].copy(), flat[2].copy(), flat[3], flat[4]
     args = flat[5:]
     tol = rtol * np.maximum(np.abs(sc), 1e-300)
@@ -307,8 +372,8 @@ def _bisect_newton_compact(
     idx = np.arange(x.size)
     sub, tl, sign = args, tol, sgn
     with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
-        for _ in range(iterations):
-            vals = fn(x, *sub)
+        for it in range(iterations):
+            vals = first if it == 0 and first is not None else fn(x, *sub)
             f, df = sign * np.asarray(vals[0], float), sign * np.asarray(vals[1], float)
             lo = np.where(f < 0, x, lo)
             hi = np.where(f > 0, x, hi)
@@ -332,40 +397,46 @@ def _bisect_newton_compact(
     return out.reshape(shape)
 
 
-def damped_normal(n, P):
+def damped_normal(n, P, edges=None):
     """Friction, normal form: ``dict(a, b, top, lo, hi)`` of float64 ``theta`` arrays (one parity):
     the undamped-form bracket ``[a, b]``, the maximiser ``top`` of ``D`` and the edges (NaN where
-    the interval does not exist)."""
+    the interval does not exist).  ``edges``: the undamped roots ``normal_edges(n, P)`` if the
+    caller has them already."""
     n = np.asarray(n)
     parity = _parity(int(n.flat[0]))
     form = indicator(parity)
     dd = form.compiled("numpy", (1, 2))
-    t1, t2 = normal_edges(n, P)
+    d012 = form.compiled("numpy", (0, 1, 2))
+    t1, t2 = normal_edges(n, P) if edges is None else edges
     a, b = np.minimum(t1, t2), np.maximum(t1, t2)
     c = n * _HALF_PI
     args = (c, P.r2, P.u, P.beta, P.g)
     shape = np.broadcast(a, *args).shape
-    a, b = np.broadcast_to(a, shape), np.broadcast_to(b, shape)
+    a, b = _full(a, shape), _full(b, shape)
+    # D, D', D'' at both ends: D' for the maximiser's bracket and start, D where the maximiser is
+    # an end, and all three for the first Halley step of each edge
+    at_a = [np.asarray(v, float) * np.ones(shape) for v in d012(a, *args)]
+    at_b = [np.asarray(v, float) * np.ones(shape) for v in d012(b, *args)]
+    d1a, d1b = at_a[1], at_b[1]
     # maximiser: zero of D' (decreasing through it), started where the secant of D' through the
     # ends vanishes
-    d1a = np.asarray(dd(a, *args)[0], float) * np.ones(shape)
-    d1b = np.asarray(dd(b, *args)[0], float) * np.ones(shape)
     inside = (d1a > 0) & (d1b < 0)
     top = np.where(d1a <= 0, a, b)
-    scale = np.maximum(np.broadcast_to(c, shape) + 0.5 * (a + b), 1.0)
+    dtop = np.where(d1a <= 0, at_a[0], at_b[0])
+    scale = np.maximum(c + 0.5 * (a + b), 1.0)
     if inside.any():  # (only there: elsewhere D' has no sign change)
         sel = np.nonzero(inside.ravel())[0]
         aa, bb, ya, yb, sc = (np.ravel(v)[sel] for v in (a, b, d1a, d1b, scale))
-        sub = tuple(np.broadcast_to(v, shape).ravel()[sel] for v in args)
+        sub = tuple(_full(v, shape).ravel()[sel] for v in args)
         with np.errstate(divide="ignore", invalid="ignore"):
             x0 = aa + ya * (bb - aa) / (ya - yb)
         x0 = np.where((x0 > aa) & (x0 < bb), x0, 0.5 * (aa + bb))
         # to 1e-12 of c + theta: D(top) is then below its maximum by ~D'' 1e-24, far below
         # the rounding of D (the existence decision and the edge brackets need no more)
+        tops = _bisect_newton_compact(dd, sub, aa, bb, x0, False, scale=sc, rtol=1e-12)
         top = np.array(top, float, copy=True)
-        top.ravel()[sel] = _bisect_newton_compact(dd, sub, aa, bb, x0, False, scale=sc, rtol=1e-12)
-    d012 = form.compiled("numpy", (0, 1, 2))
-    dtop = np.asarray(d012(top, *args)[0], float) * np.ones(shape)
+        top.ravel()[sel] = tops
+        dtop.ravel()[sel] = np.asarray(d012(tops, *sub)[0], float)
     exists = dtop > 0
     lo = np.full(shape, np.nan)
     hi = np.full(shape, np.nan)
@@ -374,9 +445,9 @@ def damped_normal(n, P):
         # is no sign change), each from its undamped root, in the bracket between it and the
         # maximiser (D negative at the one end, positive at the other)
         sel = np.nonzero(exists.ravel())[0]
-        cc = np.broadcast_to(c, shape).ravel()[sel]
+        cc = _full(c, shape).ravel()[sel]
         aa, bb, tt = (np.ravel(v)[sel] for v in (a, b, top))
-        sub = tuple(np.tile(np.broadcast_to(v, shape).ravel()[sel], 2) for v in args)
+        sub = tuple(np.concatenate([w, w]) for w in (_full(v, shape).ravel()[sel] for v in args))
         k = sel.size
         both = _bisect_newton_compact(
             d012,
@@ -387,6 +458,10 @@ def damped_normal(n, P):
             np.concatenate([np.ones(k), -np.ones(k)]),
             scale=np.maximum(np.concatenate([cc + aa, cc + bb]), 1.0),
             halley=True,
+            first=[
+                np.concatenate([va.ravel()[sel], vb.ravel()[sel]])
+                for va, vb in zip(at_a, at_b, strict=True)
+            ],
         )
         lo.ravel()[sel] = both[:k]
         hi.ravel()[sel] = both[k:]
@@ -432,6 +507,18 @@ M_MIN = 2.0**-1022
 DECIMAL_OM = 0.11
 
 
+def _one_minus_decimal(x: float) -> float:
+    """``1 - d`` rounded once to a double, ``d`` the shortest decimal of ``x`` (``0 < x < 1``)."""
+    text = repr(x)
+    whole, _, frac = text.partition(".")
+    if whole != "0" or not frac.isdigit():  # an exponent form (not for x near 1): exact decimals
+        with decimal.localcontext() as dc:
+            dc.prec = 60
+            return float(decimal.Decimal(1) - decimal.Decimal(text))
+    scale = 10 ** len(frac)
+    return (scale - int(frac)) / scale
+
+
 class _Depths:
     """The depths of a grid: ``m`` and ``om = 1 - m`` as float64 arrays, ``om`` computed from the
     exact depth (``1 - float(m)`` loses every digit of ``1 - m`` that ``float(m)`` rounded off,
@@ -457,15 +544,8 @@ class _Depths:
             self.om = 1 - self.m
             near = np.nonzero(self.om < DECIMAL_OM)[0]
             if near.size:
-                # om = (1 - x) - (decimal(x) - x): 1 - x is exact here (Sterbenz), the correction
-                # exact in decimal arithmetic, then rounded once
-                with decimal.localcontext() as dc:
-                    dc.prec = 60
-                    for j in near:
-                        x = float(self.m[j])
-                        self.om[j] = float(
-                            (decimal.Decimal(1) - decimal.Decimal(repr(x))).normalize()
-                        )
+                # 1 - decimal(x) exactly, rounded once (:func:`_one_minus_decimal`)
+                self.om[near] = [_one_minus_decimal(x) for x in self.m[near].tolist()]
         self.size = self.m.size
         self.double = (self.om >= OM_MIN) & (self.m >= M_MIN)
 
@@ -716,12 +796,15 @@ def _order1_lower(P, cols, x_hi, eps=None, *, x_theta=None, doubt=False):
         form = ind
         args = (P.r2[cols], P.u[cols], P.beta[cols], bm, P.g[cols])
     f01 = form.compiled("numpy", (0, 1))
-    f0, f2 = form.compiled("numpy", (0, 2))(np.zeros(bm.shape), *args)
     x_hi = np.asarray(x_hi, float) * np.ones(bm.shape)
-    with np.errstate(invalid="ignore", divide="ignore"):
-        x0 = np.sqrt(-2 * np.asarray(f0, float) / np.asarray(f2, float))
-    if x_theta is not None:  # right to an absolute 1e-16: the better start unless x is tiny
-        x0 = np.where(np.asarray(x_theta) > 1e-4, x_theta, x0)
+    # x_theta is right to an absolute 1e-16: the better start unless x is tiny
+    taylor = np.ones(bm.shape, bool) if x_theta is None else ~(np.asarray(x_theta) > 1e-4)
+    x0 = np.array(x_theta if x_theta is not None else x_hi, float, copy=True)
+    if taylor.any():
+        sub = tuple(a[taylor] for a in args)
+        f0, f2 = form.compiled("numpy", (0, 2))(np.zeros(sub[0].shape), *sub)
+        with np.errstate(invalid="ignore", divide="ignore"):
+            x0[taylor] = np.sqrt(-2 * np.asarray(f0, float) / np.asarray(f2, float))
     x = np.where(np.isfinite(x0) & (x0 > 0) & (x0 < x_hi), x0, 0.5 * x_hi)
     # Newton from there (the points not yet converged only); a point that leaves the bracket or
     # does not converge is solved again by the safeguarded iteration
@@ -804,12 +887,13 @@ def _fill_normal(out, orders, ms, P, damped: bool) -> np.ndarray:
         out[:, 0, :] = np.minimum(T1, T2)
         out[:, 1, :] = np.maximum(T1, T2)
         return doubt
+    t1, t2 = normal_edges(orders_arr[:, None], P)  # the undamped roots of all orders at once
     for parity in (1, 0):
         rows = np.nonzero(orders_arr % 2 == parity)[0]
         if rows.size == 0:
             continue
         n = orders_arr[rows][:, None]
-        res = damped_normal(n, P)
+        res = damped_normal(n, P, edges=(t1[rows], t2[rows]))
         near = near_one_forms()[2]
         lo = _polish_near_one(res["lo"], orders_arr[rows], P, near)
         hi = _polish_near_one(res["hi"], orders_arr[rows], P, near)
@@ -862,8 +946,10 @@ def _normal_doubt(n, P, res, lo, hi):
     where the edges are a near-double root)."""
     parity = _parity(int(n.flat[0]))
     c = n * _HALF_PI
-    top, lo, hi = np.broadcast_arrays(res["top"], lo, hi)
-    c, r2, u, beta, g, bm = np.broadcast_arrays(c, P.r2, P.u, P.beta, P.g, P.bm, lo)[:-1]
+    params = (c, P.r2, P.u, P.beta, P.g, P.bm)
+    shape = np.broadcast_shapes(*(np.shape(v) for v in (res["top"], lo, hi, *params)))
+    top, lo, hi = (_full(v, shape) for v in (res["top"], lo, hi))
+    c, r2, u, beta, g, bm = (_full(v, shape) for v in params)
     form, nearf = indicator(parity), near_one_forms()[2]
     with np.errstate(invalid="ignore", over="ignore"):
         undecided = np.abs(res["dtop"]) <= _noise(form, top, (c, r2, u, beta, g), c + top)

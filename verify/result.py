@@ -9,16 +9,35 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, field
 from fractions import Fraction
-from functools import cached_property
 
 import mpmath
 from mpmath.libmp import to_str
 
 from analytic.system import PAPER, System
 
-from .rounding import _pow10
+from .rounding import _pow10, printed_bound
 
 __all__ = ["Boundary", "proven_text", "fraction_text"]
+
+
+class _once:
+    """A property computed on first use and kept in the instance (``functools.cached_property``
+    without its lock, which costs more than the texts it keeps, Python 3.11)."""
+
+    def __init__(self, fn):
+        self.fn = fn
+        self.name = fn.__name__
+        self.__doc__ = fn.__doc__
+
+    def __set_name__(self, owner, name):
+        self.name = name
+
+    def __get__(self, obj, owner=None):
+        if obj is None:
+            return self
+        value = self.fn(obj)
+        obj.__dict__[self.name] = value
+        return value
 
 
 @dataclass(frozen=True)
@@ -70,7 +89,7 @@ class Boundary:
             return self._texts[k]
         return proven_text(x, None, self.digits)
 
-    @cached_property
+    @_once
     def _printed(self) -> tuple:
         """The four printed numbers (lower, upper and the two offsets), formatted once, each as
         ``(text, (D, k) or None)`` (:func:`_proven`)."""
@@ -81,7 +100,7 @@ class Boundary:
             for k, x in enumerate(values)
         )
 
-    @cached_property
+    @_once
     def _texts(self) -> tuple:
         return tuple(p[0] for p in self._printed)
 
@@ -90,10 +109,8 @@ class Boundary:
         included; see :mod:`verify.rounding`), or ``None`` if not certified."""
         return self._error_bound
 
-    @cached_property
+    @_once
     def _error_bound(self) -> str | None:
-        from .rounding import printed_bound
-
         if not (self.certified and self.exists and self.radius is not None):
             return None
         values = (self.lower, self.upper, self.delta_lower, self.delta_upper)

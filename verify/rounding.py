@@ -64,12 +64,14 @@ def printed_bound(items) -> str | None:
 def _error_parts(text, x, radius) -> tuple[int, int] | None:
     """``(num, den)`` with ``printed_error(text, x, radius) = num / den`` (not reduced;
     ``den > 0``), or ``None`` unless ``x`` and ``radius`` are mpmath numbers."""
-    if not (isinstance(x, mpmath.mpf) and isinstance(radius, mpmath.mpf)):
+    xv = getattr(x, "_mpf_", None)
+    rv = getattr(radius, "_mpf_", None)
+    if xv is None or rv is None:  # not mpmath numbers
         return None
     # in integers on one common scale 2^-a 10^-b
-    D, k = text if isinstance(text, tuple) else _decimal(text)
-    xs, xm, xe, _ = x._mpf_
-    _, rm, re, _ = radius._mpf_
+    D, k = text if type(text) is tuple else _decimal(text)
+    xs, xm, xe, _ = xv
+    _, rm, re, _ = rv
     X = -xm if xs else xm
     e2 = min(xe, re, 0)
     k10 = min(k, 0)
