@@ -208,7 +208,7 @@ def argv_for(draw, tmp: Path):
             key = key or {("existence", "order"): "small_order"}.get((name, dest), dest)
             valid = _cheap_valid(key)
             if action.choices:
-                valid = st.sampled_from(list(action.choices))
+                valid = st.sampled_from([str(c) for c in action.choices])
             use_valid = valid is not None and draw(st.integers(0, 3)) > 0
             value = draw(valid if use_valid else any_value)
         if draw(st.integers(0, 10)) == 0:
