@@ -45,7 +45,7 @@ import sys
 import time
 from pathlib import Path
 
-__all__ = ["discover", "measure", "run", "render", "main"]
+__all__ = ["discover", "measure", "run", "render", "markdown", "main"]
 
 HERE = Path(__file__).resolve().parent
 
@@ -206,12 +206,48 @@ def render(doc: dict) -> str:
     return head + "\n".join(lines) + tail
 
 
+def markdown(doc: dict) -> str:
+    """The README's table of a run (``--markdown FILE``: of a run written by ``--output``): its
+    date and machine, then one row per scene, then the summary notes."""
+    m = doc["machine"]
+    versions = ", ".join(
+        f"{k} {m[k]}" for k in ("python", "numpy", "mpmath", "python-flint") if m.get(k)
+    )
+    head = (
+        f"Measured {doc['date']} (`paramres bench --floors{' --quick' if doc['quick'] else ''}`, "
+        f"{doc['seconds']:.0f} s) on {m['cpu']}, {m['cores']} cores, load {m['load']}; "
+        f"{versions}.\n\n"
+        "| scene | ours | floor | ratio | target | result |\n|---|---:|---:|---:|---:|---|\n"
+    )
+    rows = []
+    for r in doc["scenes"]:
+        absolute = r.get("target_is_seconds")
+        floor = "—" if absolute else _fmt_time(r["floor_seconds"]).replace("us", "µs")
+        target = f"{r['target']:g} s" if absolute else f"{r['target']:g}"
+        ratio = "—" if absolute else f"{r['ratio']:.2f}"
+        result = ("pass" if r["passed"] else "**fails**") + (
+            " (wall)" if r["clock"] == "wall" else ""
+        )
+        ours = _fmt_time(r["ours_seconds"]).replace("us", "µs")
+        rows.append(f"| {r['name']} | {ours} | {floor} | {ratio} | {target} | {result} |")
+    notes = "".join(f"\n- {line}" for line in doc.get("notes", []))
+    return head + "\n".join(rows) + ("\n" + notes if notes else "") + "\n"
+
+
 def main(argv=None) -> int:
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("--quick", action="store_true")
     ap.add_argument("--only", help="only the floor_* modules whose name contains this")
     ap.add_argument("--output", help="write the JSON here")
+    ap.add_argument(
+        "--markdown",
+        metavar="FILE",
+        help="print the README's table of a run written by --output (and measure nothing)",
+    )
     a = ap.parse_args(argv)
+    if a.markdown:
+        print(markdown(json.loads(Path(a.markdown).read_text())), end="")
+        return 0
     doc = run(a.quick, a.only)
     print(render(doc), end="")
     if a.output:

@@ -63,6 +63,24 @@ def test_measure_times_both_and_render_marks_failures():
     }
     text = floors.render(doc)
     assert "FAIL" in text and "pass (wall)" in text and "1 of 2 scenes within target" in text
+    table = floors.markdown(doc).splitlines()
+    rows = [line for line in table if line.startswith("| a ") or line.startswith("| b ")]
+    assert rows == [
+        "| a | 2 ms | 1 ms | 2.00 | 1.5 | **fails** |",
+        "| b | 1 µs | 1 µs | 1.00 | 1.5 | pass (wall) |",
+    ]
+    assert table[0].startswith("Measured d (") and "2 cores, load 1.0" in table[0]
+
+
+def test_the_readme_table_is_the_stored_run():
+    """The README's table of the floors is what ``floors.py --markdown`` prints of the stored run
+    (``benchmarks/floors.json``): regenerated, not typed."""
+    import json
+
+    floors = _load("floors")
+    doc = json.loads((BENCH / "floors.json").read_text())
+    readme = (BENCH.parent / "README.md").read_text()
+    assert floors.markdown(doc) in readme
 
 
 @pytest.mark.parametrize("name", sorted(p.stem for p in BENCH.glob("floor_*.py")))
