@@ -152,7 +152,8 @@ def _eq1() -> Row:
         "agrees" if ok else "differs",
         _latex(pr),
         _latex(derived),
-        "The limit m -> 0 of the exact tuning condition (6), T = n T_av/2 with T_av -> T_0; "
+        "The limit $m \\to 0$ of the exact tuning condition (6), $T = nT_{av}/2$ with "
+        "$T_{av} \\to T_0$; "
         + ("decided symbolically." if ok else "the limits differ."),
         "Naive resonance condition",
     )
@@ -409,7 +410,7 @@ def _eq2830() -> Row:
         "the text "
         "says, the printed velocity is not the derivative of the angle: it drops "
         f"${sp.latex(dropped)}$ "
-        "(valid for gamma << omega). The 'exact' model keeps it.",
+        "(valid for $\\gamma \\ll \\omega$). The 'exact' model keeps it.",
         "Damped segments (paper model)",
     )
 
@@ -530,7 +531,7 @@ def _reference_row(label: str, title: str, candidates: tuple[str, ...]) -> Row:
             matches.append(cand)
     ok = eq_to in matches
     how = (
-        f"{text} At p = 1 the (squared) equation ({eq_from}) is a non-vanishing multiple of "
+        f"{text} At $p = 1$ the (squared) equation ({eq_from}) is a non-vanishing multiple of "
         + (", ".join(f"({c})" for c in matches) if matches else "none of " + ", ".join(candidates))
         + (
             "; the reference is right."
@@ -577,8 +578,9 @@ def _ref40() -> Row:
         _latex(printed()["39"]),
         f"{text} Equation ({eq_from}) has no radicand; the printed equations with one are "
         + ", ".join(f"({h})" for h in holders)
-        + ". The simplification described (q ~ 1 + 3m, cosine ~ 1) is of the radicand of (39), "
-        "whose small-m solution is (40).",
+        + ". The simplification described ($q \\approx 1 + 3m$, cosine $\\approx 1$) is of the "
+        "radicand of (39), "
+        "whose small-$m$ solution is (40).",
         "Cross-reference before eq. (40)",
     )
 
@@ -597,20 +599,16 @@ def _claim15() -> Row:
     side = "upper (right)" if sign13 > 0 else "lower (left)"
     status = "agrees" if same_as_13 and sign13 < 0 else "differs"
     how = (
-        f"{text} Derived: for n = 3 the shape (8)-(9) of eqs. (10)-(11) gives ${sp.latex(f13)}$, "
-        "whose small-m "
-        f"root has Delta T {'>' if sign13 > 0 else '<'} 0: the {side} edge. Eq. (15) with T_av/2 "
-        "-> 3 T_av/2 "
+        f"{text} Derived: for $n = 3$ the shape (8)-(9) of eqs. (10)-(11) gives "
+        f"${sp.latex(f13)}$, whose small-$m$ root has "
+        f"$\\Delta T {'>' if sign13 > 0 else '<'} 0$: the {side} edge. Eq. (15) with "
+        "$T_{av}/2 \\to 3T_{av}/2$ "
         f"{'is' if same_as_17 else 'is not'} the equation of the other shape (16)-(17), and it is "
-        "that one "
-        "that gives the left edge. In general the shape of (8)-(9) gives the lower edge for n = "
-        "1, 5, 9, ... "
-        "and the upper edge for n = 3, 7, 11, ... at small m, and the two shapes swap edges at "
-        "every "
-        "closing of the interval. The printed (15) with n T_av/2 does give the left edge of every "
-        "odd "
-        "interval at small m; the statement that it comes from (10)-(11) holds only for n = 1, 5, "
-        "9, ..."
+        "that one that gives the left edge. In general the shape of (8)-(9) gives the lower edge "
+        "for $n = 1, 5, 9, \\dots$ and the upper edge for $n = 3, 7, 11, \\dots$ at small $m$, and "
+        "the two shapes swap edges at every closing of the interval. The printed (15) with "
+        "$nT_{av}/2$ does give the left edge of every odd interval at small $m$; the statement "
+        "that it comes from (10)-(11) holds only for $n = 1, 5, 9, \\dots$"
     )
     return Row(
         "15-n3",

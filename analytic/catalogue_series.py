@@ -138,10 +138,10 @@ def _eq7() -> Row:
         sp.Eq(Tav / T0, sp.Add(invw, sp.Order(m**7)), evaluate=False),
     )
     how = (
-        "The exact form omega_av = (omega_0/2)(1/sqrt(1+m) + 1/sqrt(1-m)) follows from the model "
-        f"({v0.describe()}); its series (and that of T_av/T_0 = 1/w) agree with the printed ones "
-        f"through m^3 ({_route(vs1 + vs2)}), the printed order being m^2. Next terms: "
-        f"omega_av/omega_0 ${sp.latex(next_term(w, m, 3))}$, T_av/T_0 "
+        "The exact form $\\omega_{av} = (\\omega_0/2)(1/\\sqrt{1+m} + 1/\\sqrt{1-m})$ follows from "
+        f"the model ({v0.describe()}); its series (and that of $T_{{av}}/T_0 = 1/w$) agree with the "
+        f"printed ones through $m^3$ ({_route(vs1 + vs2)}), the printed order being $m^2$. Next "
+        f"terms: $\\omega_{{av}}/\\omega_0$: ${sp.latex(next_term(w, m, 3))}$, $T_{{av}}/T_0$: "
         f"${sp.latex(next_term(invw, m, 3))}$."
     )
     return Row(
@@ -177,12 +177,12 @@ def _edge_row(
     )
     if ok:
         how = (
-            "Both edges agree with the derived series through m^2, the printed order, in units of "
-            "T_av "
-            f"and of T_0 ({_route(verdicts)}, coefficient by coefficient). The derived series go "
+            "Both edges agree with the derived series through $m^2$, the printed order, in units "
+            "of $T_{av}$ "
+            f"and of $T_0$ ({_route(verdicts)}, coefficient by coefficient). The derived series go "
             "on: "
-            f"T_-/T_av next term ${sp.latex(next_term(d['Tav']['lower'], m, 2))}$, "
-            f"T_-/T_0 next term ${sp.latex(next_term(d['T0']['lower'], m, 2))}$ "
+            f"$T_-/T_{{av}}$ next term ${sp.latex(next_term(d['Tav']['lower'], m, 2))}$, "
+            f"$T_-/T_0$ next term ${sp.latex(next_term(d['T0']['lower'], m, 2))}$ "
             f"(any order: paramres series --order {n} --terms K)."
         )
     else:
@@ -205,7 +205,7 @@ def _eq18() -> Row:
         sp.Rational(1, 2) * (1 + MP * 3 * m / pi),
         sp.Rational(1, 2) * (1 + MP * 3 * m / pi - sp.Rational(3, 8) * m**2),
         "First interval at small depth",
-        "The lower edge is the root of the eq.-(13) factor ($\\varepsilon = +1$) for n = 1.",
+        "The lower edge is the root of the eq.-(13) factor ($\\varepsilon = +1$) for $n = 1$.",
     )
 
 
@@ -217,12 +217,10 @@ def _eq19() -> Row:
         sp.Rational(3, 2) * (1 + MP * m / pi),
         sp.Rational(3, 2) * (1 + MP * m / pi - sp.Rational(3, 8) * m**2),
         "Third interval at small depth",
-        "For n = 3 the eq.-(13) factor ($\\varepsilon = +1$, the shape of eqs. 8-9) gives the "
-        "upper edge and "
-        "the factor of opposite sign (eqs. 16-17) the lower one: for odd n the eq.-(13) factor is "
-        "the "
-        "lower edge when n = 1, 5, 9, ... and the upper edge when n = 3, 7, 11, ... (c_n = -sin(n "
-        "pi/2)).",
+        "For $n = 3$ the eq.-(13) factor ($\\varepsilon = +1$, the shape of eqs. 8-9) gives the "
+        "upper edge and the factor of opposite sign (eqs. 16-17) the lower one: for odd $n$ the "
+        "eq.-(13) factor is the lower edge when $n = 1, 5, 9, \\dots$ and the upper edge when "
+        "$n = 3, 7, 11, \\dots$ ($c_n = -\\sin(n\\pi/2)$).",
     )
 
 
@@ -256,11 +254,11 @@ def _eq19_shift() -> Row:
         sp.Eq((T_hi - T_lo) / T0, sp.Add(width3, sp.Order(m**5)), evaluate=False),
     )
     how = (
-        f"The centre of the third interval lies (9/16) m^2 T_0 below (3/2) T_0 and its width is "
-        f"(3m/pi) T_0, the same as the first interval's, both through the printed order "
-        f"({_route(vs1 + vs2 + vs3)}). In general the centre shift is -(3n/16) m^2 T_0 for every "
-        "order (it is the shift of n T_av/2) and the leading width 3m/pi T_av for every odd "
-        "order. "
+        "The centre of the third interval lies $(9/16)\\,m^2 T_0$ below $(3/2)\\,T_0$ and its "
+        "width is $(3m/\\pi)\\,T_0$, the same as the first interval's, both through the printed "
+        f"order ({_route(vs1 + vs2 + vs3)}). In general the centre shift is "
+        "$-(3n/16)\\,m^2 T_0$ for every order (it is the shift of $nT_{av}/2$) and the leading "
+        "width $(3m/\\pi)\\,T_{av}$ for every odd order. "
         f"Next terms: centre ${sp.latex(next_term(centre, m, 2))}$, width "
         f"${sp.latex(next_term(width3, m, 1))}$ "
         f"(first interval: ${sp.latex(next_term(width1, m, 1))}$)."
@@ -293,9 +291,9 @@ def _eq27() -> Row:
     ok_hi = compare_through(1 + sp.Rational(3, 8) * m**2, d["upper"], m, 3)[0]
     ok = base.status == "agrees" and ok_w and ok_lo and ok_hi
     how = base.how + (
-        " The explicit forms T_- = T_0(1 - 9m^2/8), T_+ = T_0(1 + 3m^2/8) and the width (3/2) m^2 "
-        "T_0 "
-        "agree through m^3 (there is no m^3 term: even orders are even in m)."
+        " The explicit forms $T_- = T_0(1 - 9m^2/8)$, $T_+ = T_0(1 + 3m^2/8)$ and the width "
+        "$(3/2)\\,m^2 T_0$ agree through $m^3$ (there is no $m^3$ term: even orders are even "
+        "in $m$)."
     )
     return Row("27", "agrees" if ok else "differs", base.printed, base.derived, how, base.title)
 
@@ -331,31 +329,30 @@ def _threshold_row(label: str, n: int, title: str) -> Row:
         sp.Eq(sp.Derivative(sp.Symbol("N"), S.theta), 0, evaluate=False),
         sp.Eq(1 / (Q_min * m**p_), sp.Add(lam_tangent, sp.Order(m ** (terms + 1))), evaluate=False),
     )
-    where = "T = T_av/2" if label == "37" else "T = T_av"
+    where = "$T = T_{av}/2$" if label == "37" else "$T = T_{av}$"
     text = (
         f"Read at exact tuning ({where}), as the text does, the printed condition is exactly the "
-        "engine's radicand R(theta = 0) = 0 (its threshold series "
-        f"{'agrees' if same_as_radicand else 'does not agree'} with that of R(0) = 0 through "
-        f"m^{terms}). But the threshold is where the interval shrinks to a point: a "
-        "double root, N = 0 and $dN/d\\theta$ = 0 together (the radicand and (q+1)^2 f(x)^2 "
-        "touch), "
+        "engine's radicand $R(\\theta = 0) = 0$ (its threshold series "
+        f"{'agrees' if same_as_radicand else 'does not agree'} with that of $R(0) = 0$ through "
+        f"$m^{{{terms}}}$). But the threshold is where the interval shrinks to a point: a "
+        "double root, $N = 0$ and $dN/d\\theta = 0$ together (the radicand and "
+        "$(q+1)^2 f(x)^2$ touch), "
         "and "
         f"the double root does not sit at exact tuning: $\\theta_* = "
         f"{sp.latex(threshold_series(n, 4 if n % 2 else 6, damping='paper').theta)} + \\dots$."
     )
     if ok:
-        how = text + f" The two thresholds nevertheless agree through m^{terms}."
+        how = text + f" The two thresholds nevertheless agree through $m^{{{terms}}}$."
         status = "agrees"
     else:
         rel = sp.simplify((b - a) / lam_tangent.coeff(m, 0))
         how = text + (
             f" So the threshold read off the printed condition is right through relative order "
-            f"m^{k - 1} and wrong at m^{k} (1/Q^{k // p_}): with 1/Q_min = $\\lambda(m)$ m^{p_}, "
-            f"the "
-            f"m^{k} coefficient "
+            f"$m^{{{k - 1}}}$ and wrong at $m^{{{k}}}$ ($1/Q^{{{k // p_}}}$): with "
+            f"$1/Q_{{\\min}} = \\lambda(m)\\, m^{{{p_}}}$, the $m^{{{k}}}$ coefficient "
             f"of $\\lambda$ is ${sp.latex(a)}$ from the printed condition but ${sp.latex(b)}$ at "
             f"the tangency "
-            f"(relative difference ${sp.latex(rel)}$ m^{k}); the leading term, eq. "
+            f"(relative difference ${sp.latex(rel)}\\, m^{{{k}}}$); the leading term, eq. "
             f"({'38' if label == '37' else '43'}), is right. The correct condition is the tangency "
             f"(paper model)."
         )
@@ -399,7 +396,7 @@ def _mmin_row(label: str, n: int, printed_Qmin: sp.Expr, printed_mmin: sp.Expr, 
         lead_Q = sp.simplify(sp.limit(th.Q_min * m ** (1 if n % 2 else 2), m, 0))
         okQ = prove_zero(sp.simplify(lead_Q - printed_Qmin * m ** (1 if n % 2 else 2))).holds
         ok_all = ok_all and ok and okQ
-        what = "m_min" if n % 2 else "m_min^2"
+        what = "$m_{\\min}$" if n % 2 else "$m_{\\min}^2$"
         texts.append(
             f"{model} model: leading term {'agrees' if ok and okQ else 'differs'}; next term of "
             f"{what}: ${sp.latex(nxt)}$"
@@ -418,14 +415,13 @@ def _mmin_row(label: str, n: int, printed_Qmin: sp.Expr, printed_mmin: sp.Expr, 
     p_ = scaling_power(n)
     gap = model_gap(n, 4)["threshold"]
     how = (
-        "Threshold = tangency of the normal form (N = 0, $dN/d\\theta$ = 0), solved in the "
-        "distinguished "
-        f"scaling 1/Q ~ m^{1 if n % 2 else 2} and compared with the printed leading term, "
-        "coefficient "
-        "by coefficient in 1/Q. " + "; ".join(texts) + f". The two damping models part at relative "
-        f"order m^{gap} = 1/Q^{gap // p_} in the threshold (1/Q_min = $\\lambda(m)$ m^{p_}; exact: "
-        f"damped "
-        "frequencies sqrt(omega_i^2 - gamma^2) and their r, beta, w)."
+        "The threshold is the tangency of the normal form ($N = 0$, $dN/d\\theta = 0$), solved "
+        f"in the distinguished scaling $1/Q \\sim m^{{{1 if n % 2 else 2}}}$ and compared with the "
+        "printed leading term, coefficient by coefficient in $1/Q$. "
+        + "; ".join(texts)
+        + f". The two damping models part at relative order $m^{{{gap}}} = 1/Q^{{{gap // p_}}}$ "
+        f"in the threshold ($1/Q_{{\\min}} = \\lambda(m)\\, m^{{{p_}}}$; exact: damped "
+        "frequencies $\\sqrt{\\omega_i^2 - \\gamma^2}$ and their $r$, $\\beta$, $w$)."
     )
     return Row(
         label,
@@ -472,15 +468,17 @@ def _sec6_n3() -> Row:
         sp.Eq(T_lo / Tav, sp.Add(d["lower"]["Tav"], sp.Order(m**4)), evaluate=False),
     )
     how = (
-        "Threshold of the third interval (tangency, paper model): m_min = pi/(2Q) at leading order "
-        f"({'agrees' if ok1 else 'differs'}); in general m_min = n pi/(6Q) + O(1/Q^3) for every "
-        f"odd n. Edges: with "
-        "s = sqrt(1 - m_min^2/m^2) (so m s = sqrt(m^2 - m_min^2)), the derived T/T_av = 3/2 -+ "
-        "(3/(2 pi)) m s + O(m^2), which is (19) with m -> sqrt(m^2 - m_min^2) "
-        f"({'agrees' if ok2 else 'differs: ' + '; '.join(texts)}) through order m, coefficient by "
-        "coefficient in m at fixed m_min/m. The next order is a friction shift of the centre, "
+        "Threshold of the third interval (tangency, paper model): $m_{\\min} = \\pi/(2Q)$ at "
+        f"leading order ({'agrees' if ok1 else 'differs'}); in general "
+        "$m_{\\min} = n\\pi/(6Q) + O(1/Q^3)$ for every odd $n$. Edges: with "
+        "$s = \\sqrt{1 - m_{\\min}^2/m^2}$ (so $ms = \\sqrt{m^2 - m_{\\min}^2}$), the derived "
+        "$T/T_{av} = 3/2 \\mp (3/(2\\pi))\\, ms + O(m^2)$, which is (19) with "
+        "$m \\to \\sqrt{m^2 - m_{\\min}^2}$ "
+        f"({'agrees' if ok2 else 'differs: ' + '; '.join(texts)}) through order $m$, coefficient "
+        "by coefficient in $m$ at fixed $m_{\\min}/m$. The next order is a friction shift of the "
+        "centre, "
         f"${sp.latex(next_term(sp.expand((d['lower']['Tav'] + d['upper']['Tav']) / 2), m, 1))}$ "
-        "(s^2 - 1 = -m_min^2/m^2), which (19) does not have."
+        "($s^2 - 1 = -m_{\\min}^2/m^2$), which (19) does not have."
     )
     return Row(
         "§6-n3",
@@ -509,7 +507,7 @@ def _near_compare(n: int, printed_Tav: sp.Expr, order: int):
         if not ok:
             ok_all = False
             texts.append(
-                f"{name} edge: coefficient of m^{k} printed ${sp.latex(a)}$, derived "
+                f"{name} edge: coefficient of $m^{{{k}}}$ printed ${sp.latex(a)}$, derived "
                 f"${sp.latex(b)}$"
             )
     return ok_all, texts, verdicts
@@ -539,33 +537,27 @@ def _eq40() -> Row:
         sp.Eq(T_lo / Tav, sp.Add(d["lower"]["Tav"], sp.Order(m**4)), evaluate=False),
     )
     if ok:
-        how = "Agrees with the derived near-threshold edges through order m."
+        how = "Agrees with the derived near-threshold edges through order $m$."
         status = "agrees"
     else:
         status = "differs"
         how = (
-            "Misprint (a lost factor 3): " + "; ".join(texts) + " (with m_min = pi/(6Q), s = "
-            "sqrt(1 - m_min^2/m^2), compared coefficient by coefficient in m at fixed m_min/m). "
-            "The correct form is T_-+ = (T_av/2)(1 -+ (3/pi) sqrt(m^2 - m_min^2)), i.e. Delta "
-            "T/T_av = "
-            f"-+ (3/(2 pi)) sqrt(m^2 - m_min^2) ({'agrees' if ok_c else 'differs'}), which is what "
-            f"Section 6 states "
-            "((18) with m -> sqrt(m^2 - m_min^2)). The printed form fails the text's own check: at "
-            f"m_min = 0 it gives (1/2)(1 -+ m/pi) T_av, not (18) "
-            f"({'it agrees with (18)' if ok18 else 'it differs from (18)'}; "
-            "coefficient "
-            f"of m printed ${sp.latex(a18)}$, (18) ${sp.latex(b18)}$). In the derivation before "
-            f"(40) the "
-            "last "
-            "radicand term q(p-1)^2/p ~ (pi/(2Q))^2 equals 9 m_min^2, not m_min^2, so the radicand "
-            "is "
-            "9(m^2 - m_min^2). The text also sends the reader to the radicand of (32) where (39) "
-            "is "
-            "meant. Beyond the printed order the friction shifts the centre: (T_+ + T_-)/(2 T_av) "
-            "- 1/2 "
-            f"= ${sp.latex(next_term(paper_c, m, 1))}$ (paper model) = -1/(8 Q^2) at leading "
-            f"order, "
-            f"${sp.latex(next_term(exact_c, m, 1))}$ (exact model) = -1/(16 Q^2)."
+            "Misprint (a lost factor 3): " + "; ".join(texts) + " (with $m_{\\min} = \\pi/(6Q)$, "
+            "$s = \\sqrt{1 - m_{\\min}^2/m^2}$, compared coefficient by coefficient in $m$ at fixed "
+            "$m_{\\min}/m$). The correct form is "
+            "$T_\\mp = (T_{av}/2)(1 \\mp (3/\\pi)\\sqrt{m^2 - m_{\\min}^2})$, i.e. "
+            "$\\Delta T/T_{av} = \\mp (3/(2\\pi))\\sqrt{m^2 - m_{\\min}^2}$ "
+            f"({'agrees' if ok_c else 'differs'}), which is what Section 6 states "
+            "((18) with $m \\to \\sqrt{m^2 - m_{\\min}^2}$). The printed form fails the text's own "
+            "check: at $m_{\\min} = 0$ it gives $(1/2)(1 \\mp m/\\pi)\\,T_{av}$, not (18) "
+            f"({'it agrees with (18)' if ok18 else 'it differs from (18)'}; coefficient of $m$ "
+            f"printed ${sp.latex(a18)}$, (18) ${sp.latex(b18)}$). In the derivation before (40) "
+            "the last radicand term $q(p-1)^2/p \\approx (\\pi/(2Q))^2$ equals $9m_{\\min}^2$, not "
+            "$m_{\\min}^2$, so the radicand is $9(m^2 - m_{\\min}^2)$. The text also sends the "
+            "reader to the radicand of (32) where (39) is meant. Beyond the printed order the "
+            "friction shifts the centre: $(T_+ + T_-)/(2T_{av}) - 1/2 = "
+            f"{sp.latex(next_term(paper_c, m, 1))}$ (paper model) $= -1/(8Q^2)$ at leading "
+            f"order, ${sp.latex(next_term(exact_c, m, 1))}$ (exact model) $= -1/(16Q^2)$."
         )
     return Row(
         "40",
@@ -594,14 +586,14 @@ def _eq45() -> Row:
         sp.Eq(T_hi / Tav, sp.Add(d["upper"]["Tav"], sp.Order(m**5)), evaluate=False),
     )
     how = (
-        "Near-threshold edges of the second interval in the distinguished scaling 1/Q ~ m^2 "
-        "(m_min = sqrt(2/(3Q)), s = sqrt(1 - m_min^4/m^4), m^2 s = sqrt(m^4 - m_min^4)): the "
-        "derived "
-        "T/T_av = 1 -+ (3/4) m^2 s + O(m^4) "
+        "Near-threshold edges of the second interval in the distinguished scaling "
+        "$1/Q \\sim m^2$ ($m_{\\min} = \\sqrt{2/(3Q)}$, $s = \\sqrt{1 - m_{\\min}^4/m^4}$, "
+        "$m^2 s = \\sqrt{m^4 - m_{\\min}^4}$): the derived "
+        "$T/T_{av} = 1 \\mp (3/4)\\, m^2 s + O(m^4)$ "
         + ("agrees with the printed form" if ok else "differs: " + "; ".join(texts))
-        + f" through m^3, coefficient by coefficient in m at fixed m_min/m ({_route(verdicts)}). "
-        "In general T/T_av = n/2 -+ (3n/8) sqrt(m^4 - m_min^4) with the same m_min for every even "
-        "n. "
+        + " through $m^3$, coefficient by coefficient in $m$ at fixed $m_{\\min}/m$ "
+        f"({_route(verdicts)}). In general $T/T_{{av}} = n/2 \\mp (3n/8)\\sqrt{{m^4 - m_{{\\min}}^4}}$ "
+        "with the same $m_{\\min}$ for every even $n$. "
         f"Next order (paper model): lower ${sp.latex(next_term(d['lower']['Tav'], m, 3))}$; "
         f"exact model: lower ${sp.latex(next_term(e['lower']['Tav'], m, 3))}$."
     )
@@ -624,7 +616,7 @@ def _sec5() -> Row:
     named = ((2, 1), (3, 1), (3, 2))
     found = {f"{b}:{a}": list(c.at_ratio(b, a)) for b, a in named}
     ok = c.proven and all(found.values())
-    listing = "; ".join(f"n = {x.order}: T1:T2 = {x.ratio}, m = {x.m}" for x in c.items)
+    listing = "; ".join(f"$n = {x.order}$: $T_1:T_2 = {x.ratio}$, $m = {x.m}$" for x in c.items)
     others = [x for x in c.items if not any(x.b * a == x.a * b for b, a in named)]
     printed = sp.latex(sp.Symbol(r"T_1 : T_2 \in \{2:1,\ 3:1,\ 3:2\}"))
     derived = sp.latex(
@@ -652,7 +644,7 @@ def _sec5() -> Row:
         f"cycles). For $n \\le 6$ the theorem gives {len(c)} closings: {listing}. Not named in the "
         "text: "
         + ", ".join(f"{x.ratio} ($n = {x.order}$, $m = {x.m} = {float(x.m):.3f}$)" for x in others)
-        + "; they lie at depths near 0.9, where Fig. 2 may not reach. No closings for n = 1, 2 "
-        "(the text's 'n > 2' agrees)."
+        + "; they lie at depths near 0.9, where Fig. 2 may not reach. No closings for "
+        "$n = 1, 2$ (the text's '$n > 2$' agrees)."
     )
     return Row("§5", "agrees" if ok else "differs", printed, derived, how, "Closings of intervals")

@@ -187,12 +187,12 @@ def printed() -> dict[str, tuple[sp.Equality, ...]]:
 #: refers to as printed, what it is said to be the same as).
 CLAIMS: dict[str, tuple[str, str, str]] = {
     "39-ref": (
-        "After eq. (39): 'at zero friction p = 1, and (39) coincides with (14)'.",
+        "After eq. (39): 'at zero friction $p = 1$, and (39) coincides with (14)'.",
         "39",
         "14",
     ),
     "44-ref": (
-        "After eq. (44): 'at zero friction p = 1, and (44) coincides with (26)'.",
+        "After eq. (44): 'at zero friction $p = 1$, and (44) coincides with (26)'.",
         "44",
         "26",
     ),
@@ -204,7 +204,7 @@ CLAIMS: dict[str, tuple[str, str, str]] = {
     "15-n3": (
         "Section 3.2: for the left edge of the third interval 'we get the same equations (10)-(11) "
         "and the same equation (15) ... this holds for all odd-order intervals', solved near "
-        "T = n T_av/2.",
+        "$T = nT_{av}/2$.",
         "15",
         "lower edge, odd n",
     ),

@@ -651,10 +651,10 @@ PHRASES: dict[str, str] = {
     ),
     "normal form with friction": "нормальная форма с трением",
     # the catalogue's explanations that carry no computed numbers
-    "The limit m -> 0 of the exact tuning condition (6), T = n T_av/2 with T_av -> T_0; decided "
-    "symbolically.": (
-        "Предел m -> 0 точного условия настройки (6), T = n T_av/2 при T_av -> T_0; решено "
-        "символьно."
+    "The limit $m \\to 0$ of the exact tuning condition (6), $T = nT_{av}/2$ with "
+    "$T_{av} \\to T_0$; decided symbolically.": (
+        "Предел $m \\to 0$ точного условия настройки (6), $T = nT_{av}/2$ при $T_{av} \\to T_0$; "
+        "решено символьно."
     ),
     "Derived from $J\\ddot\\varphi = $ torque with $J = Ml^2$, the torque of gravity "
     "$-Mgl\\sin\\varphi$ and of the drag $-cl^2\\dot\\varphi$ on the bob: $2\\gamma = c/M$ does "
@@ -672,16 +672,16 @@ PHRASES: dict[str, str] = {
         "рациональное тождество после раскрытия сокращений). Момент импульса $J\\dot\\varphi$ "
         "при $J = Ml^2$ сохраняется."
     ),
-    "After eq. (39): 'at zero friction p = 1, and (39) coincides with (14)'. At p = 1 the "
+    "After eq. (39): 'at zero friction $p = 1$, and (39) coincides with (14)'. At $p = 1$ the "
     "(squared) equation (39) is a non-vanishing multiple of (15); the reference should be (15), "
     "not (14).": (
-        "После уравнения (39): «при нулевом трении p = 1, и (39) совпадает с (14)». При p = 1 "
+        "После уравнения (39): «при нулевом трении $p = 1$, и (39) совпадает с (14)». При $p = 1$ "
         "(возведённое в квадрат) уравнение (39) --- необращающееся в нуль кратное (15); ссылка "
         "должна быть на (15), а не на (14)."
     ),
-    "After eq. (44): 'at zero friction p = 1, and (44) coincides with (26)'. At p = 1 the "
+    "After eq. (44): 'at zero friction $p = 1$, and (44) coincides with (26)'. At $p = 1$ the "
     "(squared) equation (44) is a non-vanishing multiple of (26); the reference is right.": (
-        "После уравнения (44): «при нулевом трении p = 1, и (44) совпадает с (26)». При p = 1 "
+        "После уравнения (44): «при нулевом трении $p = 1$, и (44) совпадает с (26)». При $p = 1$ "
         "(возведённое в квадрат) уравнение (44) --- необращающееся в нуль кратное (26); ссылка "
         "верна."
     ),
@@ -865,24 +865,24 @@ def _check_ru(s: str) -> str:
 
 _EDGE_TAILS = [
     (
-        " The lower edge is the root of the eq.-(13) factor ($\\varepsilon = +1$) for n = 1.",
-        " Нижняя граница при n = 1 --- корень множителя уравнения (13) ($\\varepsilon = +1$).",
+        " The lower edge is the root of the eq.-(13) factor ($\\varepsilon = +1$) for $n = 1$.",
+        " Нижняя граница при $n = 1$ --- корень множителя уравнения (13) ($\\varepsilon = +1$).",
     ),
     (
-        " For n = 3 the eq.-(13) factor ($\\varepsilon = +1$, the shape of eqs. 8-9) gives the "
-        "upper edge and the factor of opposite sign (eqs. 16-17) the lower one: for odd n the "
-        "eq.-(13) factor is the lower edge when n = 1, 5, 9, ... and the upper edge when "
-        "n = 3, 7, 11, ... (<cn>).",
-        " При n = 3 множитель уравнения (13) ($\\varepsilon = +1$, форма уравнений 8-9) даёт "
+        " For $n = 3$ the eq.-(13) factor ($\\varepsilon = +1$, the shape of eqs. 8-9) gives the "
+        "upper edge and the factor of opposite sign (eqs. 16-17) the lower one: for odd $n$ the "
+        "eq.-(13) factor is the lower edge when $n = 1, 5, 9, \\dots$ and the upper edge when "
+        "$n = 3, 7, 11, \\dots$ (<cn>).",
+        " При $n = 3$ множитель уравнения (13) ($\\varepsilon = +1$, форма уравнений 8-9) даёт "
         "верхнюю границу, а множитель противоположного знака (уравнения 16-17) --- нижнюю: при "
-        "нечётном n множитель уравнения (13) даёт нижнюю границу при n = 1, 5, 9, ... и верхнюю "
-        "при n = 3, 7, 11, ... (<cn>).",
+        "нечётном $n$ множитель уравнения (13) даёт нижнюю границу при $n = 1, 5, 9, \\dots$ и "
+        "верхнюю при $n = 3, 7, 11, \\dots$ (<cn>).",
     ),
     (
         " The explicit forms <f1>, <f2> and the width <w> agree through <o> (there is no <o2> "
-        "term: even orders are even in m).",
+        "term: even orders are even in $m$).",
         " Явные формулы <f1>, <f2> и ширина <w> верны до <o> включительно (члена <o2> нет: "
-        "ряды чётных порядков чётны по m).",
+        "ряды чётных порядков чётны по $m$).",
     ),
 ]
 
@@ -907,7 +907,7 @@ _CATALOGUE = [
         "and a full one of $T_2$ per cycle, $M = -I$, so every motion repeats after two cycles). "
         "For $n \\le <nmax>$ the theorem gives <k> closings: <list>. Not named in the text: "
         "<unnamed>; they lie at depths near 0.9, where Fig. 2 may not reach. No closings for "
-        "n = 1, 2 (the text's 'n > 2' agrees).",
+        "$n = 1, 2$ (the text's '$n > 2$' agrees).",
         "Теорема о смыканиях (выведена: оба множителя границ обращаются в нуль одновременно тогда "
         "и только тогда, когда $\\omega_1 T/2 = a\\pi$ и $\\omega_2 T/2 = b\\pi$, где "
         "$1 \\le a < b$, $a + b = n$; тогда $T_1:T_2 = b:a$, $m = (b^2-a^2)/(b^2+a^2)$, "
@@ -917,77 +917,78 @@ _CATALOGUE = [
         "периодом $T_1$ и полное колебание с периодом $T_2$, $M = -I$, так что любое движение "
         "повторяется через два цикла). При $n \\le <nmax>$ теорема даёт смыкания (всего <k>): "
         "<list>. Не названы в тексте: <unnamed>; они лежат при глубинах модуляции около 0,9, "
-        "куда рис. 2 может не доходить. При n = 1, 2 смыканий нет (это согласуется с условием "
-        "«n > 2» в тексте).",
+        "куда рис. 2 может не доходить. При $n = 1, 2$ смыканий нет (это согласуется с условием "
+        "«$n > 2$» в тексте).",
         {"named": lambda v: v.replace(" at ", " при ")},
     ),
     (
-        "Threshold of the third interval (tangency, paper model): m_min = <lead> at leading order "
-        "(<v1>); in general m_min = <gen> for every odd n. Edges: with s = sqrt(1 - m_min^2/m^2) "
-        "(so m s = sqrt(m^2 - m_min^2)), the derived T/T_av = <edges>, which is (19) with "
-        "m -> sqrt(m^2 - m_min^2) (<v2>) through order m, coefficient by coefficient in m at "
-        "fixed m_min/m. The next order is a friction shift of the centre, <shift> "
-        "(s^2 - 1 = -m_min^2/m^2), which (19) does not have.",
-        "Порог третьего интервала (касание, модель статьи): m_min = <lead> в главном порядке "
-        "(<v1>); в общем случае m_min = <gen> для любого нечётного n. Границы: при "
-        "s = sqrt(1 - m_min^2/m^2) (так что m s = sqrt(m^2 - m_min^2)) выведенное "
-        "T/T_av = <edges>, т. е. (19) с заменой m -> sqrt(m^2 - m_min^2) (<v2>), до порядка m "
-        "включительно, коэффициент за коэффициентом по m при фиксированном m_min/m. Следующий "
-        "порядок --- сдвиг центра из-за трения, <shift> (s^2 - 1 = -m_min^2/m^2), которого в (19) "
-        "нет.",
+        "Threshold of the third interval (tangency, paper model): <lead> at leading order "
+        "(<v1>); in general <gen> for every odd $n$. Edges: with "
+        "$s = \\sqrt{1 - m_{\\min}^2/m^2}$ (so $ms = \\sqrt{m^2 - m_{\\min}^2}$), the derived "
+        "<edges>, which is (19) with $m \\to \\sqrt{m^2 - m_{\\min}^2}$ (<v2>) through order $m$, "
+        "coefficient by coefficient in $m$ at fixed $m_{\\min}/m$. The next order is a friction "
+        "shift of the centre, <shift> ($s^2 - 1 = -m_{\\min}^2/m^2$), which (19) does not have.",
+        "Порог третьего интервала (касание, модель статьи): <lead> в главном порядке "
+        "(<v1>); в общем случае <gen> для любого нечётного $n$. Границы: при "
+        "$s = \\sqrt{1 - m_{\\min}^2/m^2}$ (так что $ms = \\sqrt{m^2 - m_{\\min}^2}$) выведенное "
+        "<edges>, т. е. (19) с заменой $m \\to \\sqrt{m^2 - m_{\\min}^2}$ (<v2>), до порядка $m$ "
+        "включительно, коэффициент за коэффициентом по $m$ при фиксированном $m_{\\min}/m$. "
+        "Следующий порядок --- сдвиг центра из-за трения, <shift> "
+        "($s^2 - 1 = -m_{\\min}^2/m^2$), которого в (19) нет.",
     ),
     (
-        "The exact form omega_av = (omega_0/2)(1/sqrt(1+m) + 1/sqrt(1-m)) follows from the model "
-        "(<check>); its series (and that of T_av/T_0 = 1/w) agree with the printed ones through "
-        "<o> (symbolically), the printed order being <po>. Next terms: omega_av/omega_0 <a>, "
-        "T_av/T_0 <b>.",
-        "Точная формула omega_av = (omega_0/2)(1/sqrt(1+m) + 1/sqrt(1-m)) следует из модели "
-        "(<check>); её ряд (и ряд T_av/T_0 = 1/w) совпадает с напечатанным до <o> включительно "
-        "(символьно), тогда как напечатан порядок <po>. Следующие члены: omega_av/omega_0 <a>, "
-        "T_av/T_0 <b>.",
+        "The exact form $\\omega_{av} = (\\omega_0/2)(1/\\sqrt{1+m} + 1/\\sqrt{1-m})$ follows from "
+        "the model (<check>); its series (and that of $T_{av}/T_0 = 1/w$) agree with the printed "
+        "ones through <o> (symbolically), the printed order being <po>. Next terms: "
+        "$\\omega_{av}/\\omega_0$: <a>, $T_{av}/T_0$: <b>.",
+        "Точная формула $\\omega_{av} = (\\omega_0/2)(1/\\sqrt{1+m} + 1/\\sqrt{1-m})$ следует из "
+        "модели (<check>); её ряд (и ряд $T_{av}/T_0 = 1/w$) совпадает с напечатанным до <o> "
+        "включительно (символьно), тогда как напечатан порядок <po>. Следующие члены: "
+        "$\\omega_{av}/\\omega_0$: <a>, $T_{av}/T_0$: <b>.",
         {"check": _check_ru},
     ),
     (
         "Section 3.2: for the left edge of the third interval 'we get the same equations (10)-(11) "
         "and the same equation (15) ... this holds for all odd-order intervals', solved near "
-        "T = n T_av/2. Derived: for n = 3 the shape (8)-(9) of eqs. (10)-(11) gives <eq>, whose "
-        "small-m root has Delta T > 0: the upper (right) edge. Eq. (15) with "
-        "T_av/2 -> 3 T_av/2 is the equation of the other shape (16)-(17), and it is that one that "
-        "gives the left edge. In general the shape of (8)-(9) gives the lower edge for "
-        "n = 1, 5, 9, ... and the upper edge for n = 3, 7, 11, ... at small m, and the two shapes "
-        "swap edges at every closing of the interval. The printed (15) with n T_av/2 does give the "
-        "left edge of every odd interval at small m; the statement that it comes from (10)-(11) "
-        "holds only for n = 1, 5, 9, ...",
+        "$T = nT_{av}/2$. Derived: for $n = 3$ the shape (8)-(9) of eqs. (10)-(11) gives <eq>, "
+        "whose small-$m$ root has $\\Delta T > 0$: the upper (right) edge. Eq. (15) with "
+        "$T_{av}/2 \\to 3T_{av}/2$ is the equation of the other shape (16)-(17), and it is that "
+        "one that gives the left edge. In general the shape of (8)-(9) gives the lower edge for "
+        "$n = 1, 5, 9, \\dots$ and the upper edge for $n = 3, 7, 11, \\dots$ at small $m$, and the "
+        "two shapes swap edges at every closing of the interval. The printed (15) with "
+        "$nT_{av}/2$ does give the left edge of every odd interval at small $m$; the statement "
+        "that it comes from (10)-(11) holds only for $n = 1, 5, 9, \\dots$",
         "Раздел 3.2: для левой границы третьего интервала «получаются те же уравнения (10)-(11) и "
         "то же уравнение (15) ... это справедливо для всех интервалов нечётного порядка», "
-        "решаемое вблизи T = n T_av/2. Вывод: при n = 3 форма (8)-(9) уравнений (10)-(11) даёт "
-        "<eq>; корень этого уравнения при малых m имеет Delta T > 0, т. е. это верхняя (правая) "
-        "граница. Уравнение (15) с заменой T_av/2 -> 3 T_av/2 --- уравнение другой формы, "
-        "(16)-(17), и левую границу даёт именно оно. В общем случае при малых m форма (8)-(9) "
-        "даёт нижнюю границу при n = 1, 5, 9, ... и верхнюю при n = 3, 7, 11, ..., а при каждом "
-        "смыкании интервала две формы меняются границами. Напечатанное (15) с n T_av/2 "
-        "действительно даёт левую границу любого нечётного интервала при малых m; утверждение же, "
-        "что оно получается из (10)-(11), верно лишь при n = 1, 5, 9, ...",
+        "решаемое вблизи $T = nT_{av}/2$. Вывод: при $n = 3$ форма (8)-(9) уравнений (10)-(11) "
+        "даёт <eq>; корень этого уравнения при малых $m$ имеет $\\Delta T > 0$, т. е. это верхняя "
+        "(правая) граница. Уравнение (15) с заменой $T_{av}/2 \\to 3T_{av}/2$ --- уравнение "
+        "другой формы, (16)-(17), и левую границу даёт именно оно. В общем случае при малых $m$ "
+        "форма (8)-(9) даёт нижнюю границу при $n = 1, 5, 9, \\dots$ и верхнюю при "
+        "$n = 3, 7, 11, \\dots$, а при каждом смыкании интервала две формы меняются границами. "
+        "Напечатанное (15) с $nT_{av}/2$ действительно даёт левую границу любого нечётного "
+        "интервала при малых $m$; утверждение же, что оно получается из (10)-(11), верно лишь при "
+        "$n = 1, 5, 9, \\dots$",
     ),
     (
         "Both edges agree with the derived series through <o>, the printed order, in units of "
-        "T_av and of T_0 (symbolically, coefficient by coefficient). The derived series go on: "
-        "T_-/T_av next term <a>, T_-/T_0 next term <b> (any order: paramres series --order <n> "
-        "--terms K).<tail>",
+        "$T_{av}$ and of $T_0$ (symbolically, coefficient by coefficient). The derived series go "
+        "on: $T_-/T_{av}$ next term <a>, $T_-/T_0$ next term <b> (any order: paramres series "
+        "--order <n> --terms K).<tail>",
         "Обе границы совпадают с выведенными рядами до <o> включительно (это напечатанный порядок) "
-        "в единицах T_av и T_0 (символьно, коэффициент за коэффициентом). Выведенные ряды "
-        "продолжаются: следующий член T_-/T_av равен <a>, T_-/T_0 --- <b> (любой порядок: "
+        "в единицах $T_{av}$ и $T_0$ (символьно, коэффициент за коэффициентом). Выведенные ряды "
+        "продолжаются: следующий член $T_-/T_{av}$ равен <a>, $T_-/T_0$ --- <b> (любой порядок: "
         "paramres series --order <n> --terms K).<tail>",
         {"tail": _edge_tail},
     ),
     (
         "The centre of the third interval lies <s> below <c> and its width is <w>, the same as the "
         "first interval's, both through the printed order (symbolically). In general the centre "
-        "shift is <g> for every order (it is the shift of n T_av/2) and the leading width <gw> for "
+        "shift is <g> for every order (it is the shift of $nT_{av}/2$) and the leading width <gw> for "
         "every odd order. Next terms: centre <a>, width <b> (first interval: <c1>).",
         "Центр третьего интервала лежит на <s> ниже <c>, а его ширина равна <w>, как и у первого "
         "интервала; то и другое --- до напечатанного порядка включительно (символьно). В общем "
-        "случае сдвиг центра равен <g> для любого порядка (это сдвиг n T_av/2), а главный член "
+        "случае сдвиг центра равен <g> для любого порядка (это сдвиг $nT_{av}/2$), а главный член "
         "ширины --- <gw> для любого нечётного порядка. Следующие члены: центр <a>, ширина <b> "
         "(первый интервал: <c1>).",
     ),
@@ -1002,94 +1003,98 @@ _CATALOGUE = [
     (
         "The printed segments are the engine's 'paper' damping model; decided symbolically. As "
         "the text says, the printed velocity is not the derivative of the angle: it drops <t> "
-        "(valid for gamma << omega). The 'exact' model keeps it.",
+        "(valid for $\\gamma \\ll \\omega$). The 'exact' model keeps it.",
         "Напечатанные отрезки совпадают с моделью трения статьи (модель «paper» программы); "
         "установлено символьно. Как и сказано в тексте, напечатанная скорость не есть производная "
-        "угла: в ней опущен член <t> (что допустимо при gamma << omega). Точная модель («exact») "
+        "угла: в ней опущен член <t> (что допустимо при $\\gamma \\ll \\omega$). Точная модель («exact») "
         "этот член сохраняет.",
     ),
     (
-        "Read at exact tuning (T = <t>), as the text does, the printed condition is exactly the "
-        "engine's radicand R(theta = 0) = 0 (its threshold series agrees with that of R(0) = 0 "
-        "through <o1>). But the threshold is where the interval shrinks to a point: a double "
-        "root, N = 0 and $dN/d\\theta$ = 0 together (the radicand and (q+1)^2 f(x)^2 touch), and "
-        "the double root does not sit at exact tuning: <th>. So the threshold read off the "
-        "printed condition is right through relative order <o2> and wrong at <o3> (<q>): with "
-        "1/Q_min = $\\lambda(m)$ <mp>, the <o4> coefficient of $\\lambda$ is <c1> from the "
-        "printed condition but <c2> at the tangency (relative difference <rd>); the leading "
+        "Read at exact tuning (<t>), as the text does, the printed condition is exactly the "
+        "engine's radicand $R(\\theta = 0) = 0$ (its threshold series agrees with that of "
+        "$R(0) = 0$ through <o1>). But the threshold is where the interval shrinks to a point: a "
+        "double root, $N = 0$ and $dN/d\\theta = 0$ together (the radicand and $(q+1)^2 f(x)^2$ "
+        "touch), and the double root does not sit at exact tuning: <th>. So the threshold read "
+        "off the printed condition is right through relative order <o2> and wrong at <o3> (<q>): "
+        "with $1/Q_{\\min} = \\lambda(m)\\, <mp>$, the <o4> coefficient of $\\lambda$ is <c1> from "
+        "the printed condition but <c2> at the tangency (relative difference <rd>); the leading "
         "term, eq. <e>, is right. The correct condition is the tangency (paper model).",
-        "Если, как в тексте, взять напечатанное условие при точной настройке (T = <t>), оно в "
-        "точности совпадает с условием R(theta = 0) = 0 для подкоренного выражения программы "
-        "(его ряд для порога совпадает с рядом для R(0) = 0 до <o1> включительно). Но порог --- "
-        "это точка, в которую стягивается интервал: двукратный корень, N = 0 и "
-        "$dN/d\\theta$ = 0 одновременно (подкоренное выражение и (q+1)^2 f(x)^2 касаются), и "
+        "Если, как в тексте, взять напечатанное условие при точной настройке (<t>), оно в "
+        "точности совпадает с условием $R(\\theta = 0) = 0$ для подкоренного выражения программы "
+        "(его ряд для порога совпадает с рядом для $R(0) = 0$ до <o1> включительно). Но порог --- "
+        "это точка, в которую стягивается интервал: двукратный корень, $N = 0$ и "
+        "$dN/d\\theta = 0$ одновременно (подкоренное выражение и $(q+1)^2 f(x)^2$ касаются), и "
         "этот двукратный корень лежит не при точной настройке: <th>. Поэтому порог, найденный из "
         "напечатанного условия, верен до относительного порядка <o2> включительно и неверен в "
-        "порядке <o3> (<q>): при 1/Q_min = $\\lambda(m)$ <mp> коэффициент при <o4> в $\\lambda$ "
+        "порядке <o3> (<q>): при $1/Q_{\\min} = \\lambda(m)\\, <mp>$ коэффициент при <o4> в $\\lambda$ "
         "равен <c1> по напечатанному условию, но <c2> по условию касания (относительная разность "
         "<rd>); главный член, ур. <e>, верен. Верное условие --- касание (модель статьи).",
     ),
     (
-        "Threshold = tangency of the normal form (N = 0, $dN/d\\theta$ = 0), solved in the "
-        "distinguished scaling 1/Q ~ <p> and compared with the printed leading term, coefficient "
-        "by coefficient in 1/Q. paper model: leading term <v1>; next term of <x1>: <a>; exact "
-        "model: leading term <v2>; next term of <x2>: <b>. The two damping models part at "
-        "relative order <o> in the threshold (1/Q_min = $\\lambda(m)$ <mp>; exact: damped "
-        "frequencies sqrt(omega_i^2 - gamma^2) and their r, beta, w).",
-        "Порог --- касание нормальной формы (N = 0, $dN/d\\theta$ = 0); он найден в выделенном "
-        "масштабе 1/Q ~ <p> и сравнён с напечатанным главным членом, коэффициент за коэффициентом "
-        "по 1/Q. Модель статьи: главный член <v1>; следующий член <x1>: <a>; точная модель: "
+        "The threshold is the tangency of the normal form ($N = 0$, $dN/d\\theta = 0$), solved "
+        "in the distinguished scaling <p> and compared with the printed leading term, "
+        "coefficient by coefficient in $1/Q$. paper model: leading term <v1>; next term of <x1>: "
+        "<a>; exact model: leading term <v2>; next term of <x2>: <b>. The two damping models "
+        "part at relative order <o> in the threshold (<mp>; exact: damped frequencies "
+        "$\\sqrt{\\omega_i^2 - \\gamma^2}$ and their $r$, $\\beta$, $w$).",
+        "Порог --- касание нормальной формы ($N = 0$, $dN/d\\theta = 0$); он найден в выделенном "
+        "масштабе <p> и сравнён с напечатанным главным членом, коэффициент за коэффициентом "
+        "по $1/Q$. Модель статьи: главный член <v1>; следующий член <x1>: <a>; точная модель: "
         "главный член <v2>; следующий член <x2>: <b>. Две модели трения дают разные пороги "
-        "начиная с относительного порядка <o> (1/Q_min = $\\lambda(m)$ <mp>; в точной модели --- "
-        "частоты затухающих колебаний sqrt(omega_i^2 - gamma^2) и соответствующие им r, beta, w).",
+        "начиная с относительного порядка <o> (<mp>; в точной модели --- частоты затухающих "
+        "колебаний $\\sqrt{\\omega_i^2 - \\gamma^2}$ и соответствующие им $r$, $\\beta$, $w$).",
     ),
     (
         "Misprint (a lost factor 3): lower edge: coefficient of <k1> printed <a>, derived <b>; "
-        "upper edge: coefficient of <k2> printed <c>, derived <d> (with m_min = pi/(6Q), "
-        "s = sqrt(1 - m_min^2/m^2), compared coefficient by coefficient in m at fixed m_min/m). "
-        "The correct form is <cf>, i.e. <ie> (<v>), which is what Section 6 states ((18) with "
-        "m -> sqrt(m^2 - m_min^2)). The printed form fails the text's own check: at m_min = 0 it "
-        "gives <g>, not (18) (it differs from (18); coefficient of m printed <p1>, (18) <p2>). In "
-        "the derivation before (40) the last radicand term q(p-1)^2/p ~ (pi/(2Q))^2 equals "
-        "9 m_min^2, not m_min^2, so the radicand is 9(m^2 - m_min^2). The text also sends the "
-        "reader to the radicand of (32) where (39) is meant. Beyond the printed order the "
-        "friction shifts the centre: (T_+ + T_-)/(2 T_av) - 1/2 = <s1> (paper model) = <l1> at "
-        "leading order, <s2> (exact model) = <l2>.",
+        "upper edge: coefficient of <k2> printed <c>, derived <d> (with $m_{\\min} = \\pi/(6Q)$, "
+        "$s = \\sqrt{1 - m_{\\min}^2/m^2}$, compared coefficient by coefficient in $m$ at fixed "
+        "$m_{\\min}/m$). The correct form is <cf>, i.e. <ie> (<v>), which is what Section 6 "
+        "states ((18) with $m \\to \\sqrt{m^2 - m_{\\min}^2}$). The printed form fails the text's "
+        "own check: at $m_{\\min} = 0$ it gives <g>, not (18) (it differs from (18); coefficient "
+        "of $m$ printed <p1>, (18) <p2>). In the derivation before (40) the last radicand term "
+        "$q(p-1)^2/p \\approx (\\pi/(2Q))^2$ equals $9m_{\\min}^2$, not $m_{\\min}^2$, so the "
+        "radicand is $9(m^2 - m_{\\min}^2)$. The text also sends the reader to the radicand of "
+        "(32) where (39) is meant. Beyond the printed order the friction shifts the centre: "
+        "$(T_+ + T_-)/(2T_{av}) - 1/2 = <s1>$ (paper model) <l1> at leading order, <s2> (exact "
+        "model) <l2>.",
         "Опечатка (потерян множитель 3): нижняя граница: коэффициент при <k1> напечатан <a>, "
         "выведен <b>; верхняя граница: коэффициент при <k2> напечатан <c>, выведен <d> (при "
-        "m_min = pi/(6Q), s = sqrt(1 - m_min^2/m^2); сравнение коэффициент за коэффициентом по m "
-        "при фиксированном m_min/m). Верная форма: <cf>, т. е. <ie> (<v>); это и утверждается в "
-        "разделе 6 ((18) с заменой m -> sqrt(m^2 - m_min^2)). Напечатанная форма не проходит "
-        "проверку, предложенную самим текстом: при m_min = 0 она даёт <g>, а не (18) (отличается "
-        "от (18); коэффициент при m напечатан <p1>, в (18) --- <p2>). В выводе перед (40) "
-        "последний член подкоренного выражения q(p-1)^2/p ~ (pi/(2Q))^2 равен 9 m_min^2, а не "
-        "m_min^2, так что подкоренное выражение равно 9(m^2 - m_min^2). Кроме того, текст "
-        "отсылает читателя к подкоренному выражению в (32), тогда как имеется в виду (39). За "
-        "пределами напечатанного порядка трение сдвигает центр: "
-        "(T_+ + T_-)/(2 T_av) - 1/2 = <s1> (модель статьи) = <l1> в главном порядке, <s2> "
-        "(точная модель) = <l2>.",
+        "$m_{\\min} = \\pi/(6Q)$, $s = \\sqrt{1 - m_{\\min}^2/m^2}$; сравнение коэффициент за "
+        "коэффициентом по $m$ при фиксированном $m_{\\min}/m$). Верная форма: <cf>, т. е. <ie> "
+        "(<v>); это и утверждается в разделе 6 ((18) с заменой "
+        "$m \\to \\sqrt{m^2 - m_{\\min}^2}$). Напечатанная форма не проходит проверку, "
+        "предложенную самим текстом: при $m_{\\min} = 0$ она даёт <g>, а не (18) (отличается "
+        "от (18); коэффициент при $m$ напечатан <p1>, в (18) --- <p2>). В выводе перед (40) "
+        "последний член подкоренного выражения $q(p-1)^2/p \\approx (\\pi/(2Q))^2$ равен "
+        "$9m_{\\min}^2$, а не $m_{\\min}^2$, так что подкоренное выражение равно "
+        "$9(m^2 - m_{\\min}^2)$. Кроме того, текст отсылает читателя к подкоренному выражению "
+        "в (32), тогда как имеется в виду (39). За пределами напечатанного порядка трение "
+        "сдвигает центр: $(T_+ + T_-)/(2T_{av}) - 1/2 = <s1>$ (модель статьи) <l1> в главном "
+        "порядке, <s2> (точная модель) <l2>.",
     ),
     (
         "Before eq. (40): 'simplify the radicand in the right-hand side of (32)'. Equation (32) "
         "has no radicand; the printed equations with one are <l>. The simplification described "
-        "(q ~ 1 + 3m, cosine ~ 1) is of the radicand of (39), whose small-m solution is (40).",
+        "($q \\approx 1 + 3m$, cosine $\\approx 1$) is of the radicand of (39), whose small-$m$ "
+        "solution is (40).",
         "Перед уравнением (40): «можно упростить подкоренное выражение в правой части (32)». В "
         "уравнении (32) подкоренного выражения нет; из напечатанных уравнений оно есть в <l>. "
-        "Описанное упрощение (q ~ 1 + 3m, косинус ~ 1) относится к подкоренному выражению "
-        "в (39), решение которого при малых m и есть (40).",
+        "Описанное упрощение ($q \\approx 1 + 3m$, косинус $\\approx 1$) относится к подкоренному выражению "
+        "в (39), решение которого при малых $m$ и есть (40).",
     ),
     (
-        "Near-threshold edges of the second interval in the distinguished scaling 1/Q ~ m^2 "
-        "(m_min = sqrt(2/(3Q)), s = sqrt(1 - m_min^4/m^4), m^2 s = sqrt(m^4 - m_min^4)): the "
-        "derived T/T_av = <e> agrees with the printed form through <o>, coefficient by "
-        "coefficient in m at fixed m_min/m (symbolically). In general T/T_av = <g> with the same "
-        "m_min for every even n. Next order (paper model): lower <a>; exact model: lower <b>.",
-        "Границы второго интервала вблизи порога в выделенном масштабе 1/Q ~ m^2 "
-        "(m_min = sqrt(2/(3Q)), s = sqrt(1 - m_min^4/m^4), m^2 s = sqrt(m^4 - m_min^4)): "
-        "выведенное T/T_av = <e> совпадает с напечатанной формой до <o> включительно, "
-        "коэффициент за коэффициентом по m при фиксированном m_min/m (символьно). В общем случае "
-        "T/T_av = <g> с тем же m_min для любого чётного n. Следующий порядок (модель статьи): "
-        "нижняя граница <a>; точная модель: нижняя граница <b>.",
+        "Near-threshold edges of the second interval in the distinguished scaling "
+        "$1/Q \\sim m^2$ ($m_{\\min} = \\sqrt{2/(3Q)}$, $s = \\sqrt{1 - m_{\\min}^4/m^4}$, "
+        "$m^2 s = \\sqrt{m^4 - m_{\\min}^4}$): the derived <e> agrees with the printed form "
+        "through <o>, coefficient by coefficient in $m$ at fixed $m_{\\min}/m$ (symbolically). In "
+        "general <g> with the same $m_{\\min}$ for every even $n$. Next order (paper model): "
+        "lower <a>; exact model: lower <b>.",
+        "Границы второго интервала вблизи порога в выделенном масштабе $1/Q \\sim m^2$ "
+        "($m_{\\min} = \\sqrt{2/(3Q)}$, $s = \\sqrt{1 - m_{\\min}^4/m^4}$, "
+        "$m^2 s = \\sqrt{m^4 - m_{\\min}^4}$): выведенное <e> совпадает с напечатанной формой до "
+        "<o> включительно, коэффициент за коэффициентом по $m$ при фиксированном $m_{\\min}/m$ "
+        "(символьно). В общем случае <g> с тем же $m_{\\min}$ для любого чётного $n$. Следующий "
+        "порядок (модель статьи): нижняя граница <a>; точная модель: нижняя граница <b>.",
     ),
 ]
 

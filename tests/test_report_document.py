@@ -327,3 +327,67 @@ def test_bad_language_is_refused(tmp_path, capsys):
     assert exc.value.code == 2
     assert "invalid choice" in capsys.readouterr().err
     assert not (tmp_path / "r").exists()
+
+
+#: mathematics set as plain text in a verdict: an operator typeset on its own between text tokens
+#: (``m $\to$ 0``), a formula cut at a slash, a power or another formula (``$T_{av}$/2``,
+#: ``$m_{min}$$^{2}$``), and outside the formulas a relation (``T = n``, ``1/Q ~``) or a one-letter
+#: variable (``in m at``)
+PLAIN_MATHS_AROUND = {
+    "operator set alone": r"\$\s*(\\to|\\mp|\\pm|\\sim|\\le|\\ge|\\ll|<|>|=)\s*\$",
+    "formula cut at a slash, a power or another formula": r"\$/|/\$|\$\$|\$\^",
+}
+PLAIN_MATHS_OUTSIDE = {
+    "relation in the text": r"(?<![<>])(=|~|<|>)(?![<>])",
+    # a one-letter word other than ``a`` and ``I``; ``--terms K`` is a command's placeholder
+    "one-letter variable in the text": r"(?<![\w\\{}.'-])(?<!terms )[B-HJ-Zb-z](?![\w'}]|\.\w)",
+}
+_MATH = re.compile(r"\\\[.*?\\\]|\$[^$]*\$", re.S)
+
+
+def plain_text_maths(verdict: str) -> list[str]:
+    """The places where ``verdict`` (LaTeX source) sets mathematics as text."""
+    hits = [what for what, p in PLAIN_MATHS_AROUND.items() if re.search(p, verdict)]
+    text = _MATH.sub(" ", verdict)
+    for what, p in PLAIN_MATHS_OUTSIDE.items():
+        if m := re.search(p, text):
+            hits.append(f"{what}: ...{text[max(0, m.start() - 40) : m.end() + 40]}...")
+    return hits
+
+
+def test_plain_text_maths_is_recognised():
+    # verdicts as an earlier report set them (every formula of the prose must be real
+    # mathematics), and the same verdicts typeset
+    old = [
+        r"The limit m $\to$ 0 of the exact tuning condition (6), T = n $T_{av}$/2 with $T_{av}$ "
+        r"$\to$ $T_{0}$; decided symbolically.",
+        r"Threshold = tangency of the normal form (N = 0, $dN/d\theta$ = 0), solved in the "
+        r"distinguished scaling 1/Q $\sim$ $m^{1}$",
+        r"(with $m_{min}$ = $\pi$/(6Q), s = $\sqrt{1 - m_{min}^{2}/m^{2}}$, compared coefficient "
+        r"by coefficient in m at fixed $m_{min}$/m)",
+        r"a friction shift of the centre ($s^{2}$ - 1 = -$m_{min}$$^{2}$/$m^{2}$)",
+        r"(there is no $m^{3}$ term: even orders are even in m).",
+    ]
+    new = [
+        r"The limit $m \to 0$ of the exact tuning condition (6), $T = nT_{av}/2$ with "
+        r"$T_{av} \to T_0$; decided symbolically.",
+        r"The threshold is the tangency of the normal form ($N = 0$, $dN/d\theta = 0$), solved in "
+        r"the distinguished scaling $1/Q \sim m^{1}$",
+        r"(with $m_{\min} = \pi/(6Q)$, $s = \sqrt{1 - m_{\min}^2/m^2}$, compared coefficient by "
+        r"coefficient in $m$ at fixed $m_{\min}/m$), i.e. \[x = 1\] (any order: paramres series "
+        r"-{}-{}order 1 -{}-{}terms K); a case",
+    ]
+    assert all(plain_text_maths(v) for v in old)
+    assert not [h for v in new for h in plain_text_maths(v)]
+
+
+@pytest.mark.parametrize("lang", ["en", "ru"])
+def test_verdicts_set_their_formulas_as_mathematics(reports, lang):
+    head = {"en": "Verdict:", "ru": "Вывод:"}[lang]
+    tex = _tex(reports, lang)
+    verdicts = re.findall(
+        r"\\emph\{" + head + r"\}(.*?)(?:\n\s*\n|\\paragraph)", tex, flags=re.S
+    )
+    assert len(verdicts) >= 30, len(verdicts)  # 37 in today's report
+    bad = {v[:60]: h for v in verdicts if (h := plain_text_maths(v))}
+    assert not bad, bad
