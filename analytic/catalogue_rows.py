@@ -153,8 +153,7 @@ def _eq1() -> Row:
         _latex(pr),
         _latex(derived),
         "The limit $m \\to 0$ of the exact tuning condition (6), $T = nT_{av}/2$ with "
-        "$T_{av} \\to T_0$; "
-        + ("decided symbolically." if ok else "the limits differ."),
+        "$T_{av} \\to T_0$; " + ("decided symbolically." if ok else "the limits differ."),
         "Naive resonance condition",
     )
 

@@ -139,7 +139,8 @@ def _eq7() -> Row:
     )
     how = (
         "The exact form $\\omega_{av} = (\\omega_0/2)(1/\\sqrt{1+m} + 1/\\sqrt{1-m})$ follows from "
-        f"the model ({v0.describe()}); its series (and that of $T_{{av}}/T_0 = 1/w$) agree with the "
+        f"the model ({v0.describe()}); its series (and that of $T_{{av}}/T_0 = 1/w$) agree with "
+        "the "
         f"printed ones through $m^3$ ({_route(vs1 + vs2)}), the printed order being $m^2$. Next "
         f"terms: $\\omega_{{av}}/\\omega_0$: ${sp.latex(next_term(w, m, 3))}$, $T_{{av}}/T_0$: "
         f"${sp.latex(next_term(invw, m, 3))}$."
@@ -543,7 +544,8 @@ def _eq40() -> Row:
         status = "differs"
         how = (
             "Misprint (a lost factor 3): " + "; ".join(texts) + " (with $m_{\\min} = \\pi/(6Q)$, "
-            "$s = \\sqrt{1 - m_{\\min}^2/m^2}$, compared coefficient by coefficient in $m$ at fixed "
+            "$s = \\sqrt{1 - m_{\\min}^2/m^2}$, compared coefficient by coefficient in $m$ at "
+            "fixed "
             "$m_{\\min}/m$). The correct form is "
             "$T_\\mp = (T_{av}/2)(1 \\mp (3/\\pi)\\sqrt{m^2 - m_{\\min}^2})$, i.e. "
             "$\\Delta T/T_{av} = \\mp (3/(2\\pi))\\sqrt{m^2 - m_{\\min}^2}$ "
@@ -592,7 +594,8 @@ def _eq45() -> Row:
         "$T/T_{av} = 1 \\mp (3/4)\\, m^2 s + O(m^4)$ "
         + ("agrees with the printed form" if ok else "differs: " + "; ".join(texts))
         + " through $m^3$, coefficient by coefficient in $m$ at fixed $m_{\\min}/m$ "
-        f"({_route(verdicts)}). In general $T/T_{{av}} = n/2 \\mp (3n/8)\\sqrt{{m^4 - m_{{\\min}}^4}}$ "
+        f"({_route(verdicts)}). In general "
+        "$T/T_{av} = n/2 \\mp (3n/8)\\sqrt{m^4 - m_{\\min}^4}$ "
         "with the same $m_{\\min}$ for every even $n$. "
         f"Next order (paper model): lower ${sp.latex(next_term(d['lower']['Tav'], m, 3))}$; "
         f"exact model: lower ${sp.latex(next_term(e['lower']['Tav'], m, 3))}$."

@@ -141,7 +141,8 @@ PHRASES: dict[str, str] = {
     # paragraphs of the model section
     "Two damping models are carried through everything: paper, the appendix's approximation "
     "(used by the paper's eqs. 32-45 and its Fig. 8), and exact, the true damped oscillator "
-    "with frequency Omega_i = sqrt(omega_i^2 - gamma^2) and its over- and critically damped "
+    "with frequency $\\Omega_i = \\sqrt{\\omega_i^2 - \\gamma^2}$ and its over- and critically "
+    "damped "
     "forms. The gap between them is one of the results.": (
         r"Всюду рассматриваются две модели трения: модель статьи (приближение приложения, "
         r"использованное в ур. 32--45 и на рис. 8) и точная --- настоящий затухающий осциллятор "
@@ -731,7 +732,7 @@ PHRASES.update(
 
 PATTERNS: list[tuple[str, object]] = [
     (
-        r"The third-order island at Q = (\d+) \(Figure",
+        r"The third-order island at \$Q = (\d+)\$ \(Figure",
         r"Остров третьего порядка при $Q = \1$ (рис.",
     ),
     (
@@ -760,7 +761,9 @@ PATTERNS: list[tuple[str, object]] = [
         r"theorem also gives (.*), which lie at depths above those the paper discusses\.",
         lambda m: (
             "Сравнение со статьёй: "
-            + m[1].replace(" closes orders ", " смыкает порядки ").replace(" at m = ", " при m = ")
+            + m[1]
+            .replace(" closes orders ", " смыкает порядки ")
+            .replace(" at $m = ", " при $m = ")
             + ". Среди первых шести интервалов (рис. 2 статьи) теорема даёт ещё "
             + m[2]
             + "; они лежат при глубинах модуляции больших, чем обсуждаемые в статье."
@@ -984,7 +987,8 @@ _CATALOGUE = [
     (
         "The centre of the third interval lies <s> below <c> and its width is <w>, the same as the "
         "first interval's, both through the printed order (symbolically). In general the centre "
-        "shift is <g> for every order (it is the shift of $nT_{av}/2$) and the leading width <gw> for "
+        "shift is <g> for every order (it is the shift of $nT_{av}/2$) and the leading width <gw> "
+        "for "
         "every odd order. Next terms: centre <a>, width <b> (first interval: <c1>).",
         "Центр третьего интервала лежит на <s> ниже <c>, а его ширина равна <w>, как и у первого "
         "интервала; то и другое --- до напечатанного порядка включительно (символьно). В общем "
@@ -1006,7 +1010,8 @@ _CATALOGUE = [
         "(valid for $\\gamma \\ll \\omega$). The 'exact' model keeps it.",
         "Напечатанные отрезки совпадают с моделью трения статьи (модель «paper» программы); "
         "установлено символьно. Как и сказано в тексте, напечатанная скорость не есть производная "
-        "угла: в ней опущен член <t> (что допустимо при $\\gamma \\ll \\omega$). Точная модель («exact») "
+        "угла: в ней опущен член <t> (что допустимо при $\\gamma \\ll \\omega$). Точная модель "
+        "(«exact») "
         "этот член сохраняет.",
     ),
     (
@@ -1026,7 +1031,8 @@ _CATALOGUE = [
         "$dN/d\\theta = 0$ одновременно (подкоренное выражение и $(q+1)^2 f(x)^2$ касаются), и "
         "этот двукратный корень лежит не при точной настройке: <th>. Поэтому порог, найденный из "
         "напечатанного условия, верен до относительного порядка <o2> включительно и неверен в "
-        "порядке <o3> (<q>): при $1/Q_{\\min} = \\lambda(m)\\, <mp>$ коэффициент при <o4> в $\\lambda$ "
+        "порядке <o3> (<q>): при $1/Q_{\\min} = \\lambda(m)\\, <mp>$ коэффициент при <o4> "
+        "в $\\lambda$ "
         "равен <c1> по напечатанному условию, но <c2> по условию касания (относительная разность "
         "<rd>); главный член, ур. <e>, верен. Верное условие --- касание (модель статьи).",
     ),
@@ -1079,7 +1085,8 @@ _CATALOGUE = [
         "solution is (40).",
         "Перед уравнением (40): «можно упростить подкоренное выражение в правой части (32)». В "
         "уравнении (32) подкоренного выражения нет; из напечатанных уравнений оно есть в <l>. "
-        "Описанное упрощение ($q \\approx 1 + 3m$, косинус $\\approx 1$) относится к подкоренному выражению "
+        "Описанное упрощение ($q \\approx 1 + 3m$, косинус $\\approx 1$) относится "
+        "к подкоренному выражению "
         "в (39), решение которого при малых $m$ и есть (40).",
     ),
     (

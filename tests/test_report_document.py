@@ -385,9 +385,7 @@ def test_plain_text_maths_is_recognised():
 def test_verdicts_set_their_formulas_as_mathematics(reports, lang):
     head = {"en": "Verdict:", "ru": "Вывод:"}[lang]
     tex = _tex(reports, lang)
-    verdicts = re.findall(
-        r"\\emph\{" + head + r"\}(.*?)(?:\n\s*\n|\\paragraph)", tex, flags=re.S
-    )
+    verdicts = re.findall(r"\\emph\{" + head + r"\}(.*?)(?:\n\s*\n|\\paragraph)", tex, flags=re.S)
     assert len(verdicts) >= 30, len(verdicts)  # 37 in today's report
     bad = {v[:60]: h for v in verdicts if (h := plain_text_maths(v))}
     assert not bad, bad

@@ -12,7 +12,7 @@ import sympy as sp
 
 from .. import figures
 from ..i18n import say
-from ..latex import Latex, figure, inline, paragraph, raw, ref, table, text
+from ..latex import Latex, figure, inline, mixed, paragraph, raw, ref, table, text
 from . import Context, Part
 from .closings import digit_groups
 
@@ -140,9 +140,9 @@ def build(ctx: Context) -> Part:
             f"with the certified lower edges ({REFERENCE_DIGITS} proven digits). The error falls "
             f"off "
             "as the first neglected power: the fitted slopes at the smallest depths are",
-            text(
+            mixed(
                 "; ".join(
-                    f"n = {n}: " + ", ".join(f"{slopes[(n, k)]:.2f}" for k in SERIES_TERMS)
+                    f"$n = {n}$: " + ", ".join(f"{slopes[(n, k)]:.2f}" for k in SERIES_TERMS)
                     for n in ERROR_ORDERS
                 )
             ),

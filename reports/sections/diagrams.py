@@ -173,7 +173,7 @@ def build(ctx: Context) -> Part:
             rows.append([text(damping), raw(f"${lo}$"), raw("$1$" if hi == "1" else f"${hi}$")])
     blocks.append(
         paragraph(
-            prose(f"The third-order island at Q = {ISLAND_Q} (Figure "),
+            prose(f"The third-order island at $Q = {ISLAND_Q}$ (Figure "),
             raw(r"\ref{fig:island})."),
             prose(
                 "The paper says the region vanishes above about 48% depth and returns above about "
