@@ -514,6 +514,18 @@ def _near_compare(n: int, printed_Tav: sp.Expr, order: int):
     return ok_all, texts, verdicts
 
 
+def _centre_shift(centre: sp.Expr, damping: str) -> sp.Expr:
+    """The first interval's centre shift beyond order ``m`` (``centre``: the mean of the scaled
+    edges, in ``m`` and ``s = sqrt(1 - m_min^2/m^2)``) at the leading threshold ``m_min`` of the
+    damping model (the ``1/Q`` term of its threshold series): a function of ``Q`` alone."""
+    term = next_term(centre, m, 1)
+    (s_,) = term.free_symbols - {m}
+    inv = sp.Symbol("epsilon", positive=True)
+    lead = sp.expand(threshold_series(1, 3, damping=damping).m_min.subs(Q, 1 / inv)).coeff(inv, 1)
+    shift = term.subs(s_, sp.sqrt(1 - m_min**2 / m**2)).subs(m_min, lead / Q)
+    return sp.simplify(shift)
+
+
 @row("40")
 def _eq40() -> Row:
     printed_Tav = sp.Rational(1, 2) * (1 + MP * sp.sqrt(m**2 - m_min**2) / pi)
@@ -558,8 +570,10 @@ def _eq40() -> Row:
             "$m_{\\min}^2$, so the radicand is $9(m^2 - m_{\\min}^2)$. The text also sends the "
             "reader to the radicand of (32) where (39) is meant. Beyond the printed order the "
             "friction shifts the centre: $(T_+ + T_-)/(2T_{av}) - 1/2 = "
-            f"{sp.latex(next_term(paper_c, m, 1))}$ (paper model) $= -1/(8Q^2)$ at leading "
-            f"order, ${sp.latex(next_term(exact_c, m, 1))}$ (exact model) $= -1/(16Q^2)$."
+            f"{sp.latex(next_term(paper_c, m, 1))}$ (paper model) "
+            f"$= {sp.latex(_centre_shift(paper_c, 'paper'))}$ at leading "
+            f"order, ${sp.latex(next_term(exact_c, m, 1))}$ (exact model) "
+            f"$= {sp.latex(_centre_shift(exact_c, 'exact'))}$."
         )
     return Row(
         "40",
