@@ -15,7 +15,7 @@ from mpmath.libmp import to_str
 
 from analytic.system import PAPER, System
 
-from .rounding import _pow10, printed_bound
+from .rounding import _pow10, largest_bound, printed_bound
 
 __all__ = ["Boundary", "proven_text", "fraction_text"]
 
@@ -92,16 +92,19 @@ class Boundary:
     @_once
     def _printed(self) -> tuple:
         """The four printed numbers (lower, upper and the two offsets), formatted once, each as
-        ``(text, (D, k) or None)`` (:func:`_proven`)."""
+        ``(text, (D, k) or None)`` (:func:`_proven`; ``(None, None)`` for a number that does not
+        exist)."""
         values = (self.lower, self.upper, self.delta_lower, self.delta_upper)
         radii = (None,) * 4 if self.radii is None else self.radii
+        digits = self.digits
         return tuple(
-            ("-", None) if x is None else _proven(x, radii[k], self.digits)
-            for k, x in enumerate(values)
+            (None, None) if x is None else _proven(x, r, digits)
+            for x, r in zip(values, radii, strict=True)
         )
 
     @_once
     def _texts(self) -> tuple:
+        """The four printed texts (``None`` for a number that does not exist)."""
         return tuple(p[0] for p in self._printed)
 
     def error_bound(self) -> str | None:
@@ -116,6 +119,17 @@ class Boundary:
         values = (self.lower, self.upper, self.delta_lower, self.delta_upper)
         printed = self._printed
         radii = (self.radius,) * 4 if self.radii is None else self.radii
+        raw = []  # (D, k, x, radius) of each printed number, all mpmath numbers: in integers
+        for (_, dk), x, r in zip(printed, values, radii, strict=True):
+            if x is None or r is None:
+                continue
+            xv = getattr(x, "_mpf_", None)
+            rv = getattr(r, "_mpf_", None)
+            if dk is None or xv is None or rv is None:
+                break
+            raw.append((dk[0], dk[1], xv, rv))
+        else:
+            return largest_bound(raw)
         return printed_bound(
             (None if x is None else (printed[k][1] or printed[k][0]), x, radii[k])
             for k, x in enumerate(values)
@@ -125,11 +139,7 @@ class Boundary:
         """A JSON-ready dict; numbers as decimal strings with ``digits`` significant digits;
         ``error_bound`` bounds ``|printed - exact|`` for each of them (rounding included),
         ``radius`` is the internal enclosure's (smaller: before rounding)."""
-        texts = self._texts
-        values = (self.lower, self.upper, self.delta_lower, self.delta_upper)
-        lower, upper, delta_lower, delta_upper = (
-            None if x is None else texts[k] for k, x in enumerate(values)
-        )
+        lower, upper, delta_lower, delta_upper = self._texts
         return {
             "order": self.order,
             **self.system.as_json(),
@@ -145,7 +155,7 @@ class Boundary:
             "delta_lower": delta_lower,
             "delta_upper": delta_upper,
             "radius": None if self.radius is None else _radius_text(self.radius),
-            "error_bound": self.error_bound(),
+            "error_bound": self._error_bound,
             "certified": self.certified,
             "notes": list(self.notes),
         }
@@ -212,6 +222,9 @@ def _proven(x, rad, digits: int) -> tuple[str, tuple[int, int] | None]:
     if xv is not None and rv is not None and xv[1] and rv[1]:
         # the common case, two finite nonzero mpmath numbers: the same estimate and the same
         # text as below, without mpmath's dispatch and comparisons
+        if (xv[2] + xv[3] - rv[2] - rv[3] - 2) * _LOG10_2 > digits + 1e-9:
+            # |x| / (2 rad) > 2**(that exponent) >= 10**digits: every digit asked for is usable
+            return _nstr(xv, digits)
         est = (xv[2] - rv[2] - 1 + math.log2(xv[1]) - math.log2(rv[1])) * _LOG10_2
         usable = math.floor(est)
         if abs(est - round(est)) < 1e-6:
@@ -243,48 +256,73 @@ def _nstr(s: tuple, dps: int, strip: bool = False) -> tuple[str, tuple[int, int]
     the very steps of ``mpmath.libmp.to_str`` (digits truncated at ``dps + 3``, then rounded half
     up; ``strip``: ``strip_zeros=True``), for the case at hand only; with ``(D, k)``, the printed
     value ``D 10**k`` exactly (``None`` for huge exponents, where mpmath's own path writes the
-    text)."""
+    text).  In integers: the rounded digits are ``n // 10**q`` (plus one when the first digit cut
+    is 5 or more) -- no text read back into a number."""
     sign, man, exp, bc = s
-    if abs(exp + bc) > 3500:  # huge exponents: mpmath's own path
-        return to_str(s, dps, strip_zeros=strip), None
-    bitprec = int((dps + 3) * _LOG2_10) + 10
-    fixprec = max(bitprec - exp - bc, 0)
-    fixdps = int(fixprec / _LOG2_10 + 0.5)
-    offset = exp + fixprec
-    digits = str(((man << offset) if offset >= 0 else (man >> -offset)) * _pow10(fixdps) >> fixprec)
-    exponent = len(digits) - fixdps - 1
-    if len(digits) > dps and digits[dps] in "56789":
-        digits = digits[:dps]
-        i = dps - 1
-        while i >= 0 and digits[i] == "9":
-            i -= 1
-        if i >= 0:
-            digits = digits[:i] + str(int(digits[i]) + 1) + "0" * (dps - i - 1)
-        else:
-            digits = "1" + "0" * (dps - 1)
-            exponent += 1
+    top = exp + bc
+    scale = _SCALES.get((dps, top))
+    if scale is None:
+        if top > 3500 or top < -3500:  # huge exponents: mpmath's own path
+            return to_str(s, dps, strip_zeros=strip), None
+        scale = _scale(dps, top)
+    bitprec, fixprec, fixdps, p10 = scale
+    if fixprec:
+        shift = bitprec - bc  # = exp + fixprec
+        n = ((man << shift) if shift >= 0 else (man >> -shift)) * p10 >> fixprec
     else:
-        digits = digits[:dps]
-    value = (-int(digits) if sign else int(digits), exponent + 1 - len(digits))
+        n = (man << exp) if exp >= 0 else (man >> -exp)
+    digits = str(n)
+    size = len(digits)
+    exponent = size - fixdps - 1
+    if size > dps:
+        cut = _pow10(size - dps)
+        if digits[dps] >= "5":  # round half up (mpmath's rule on its truncated digits)
+            D = n // cut + 1
+            digits = str(D)
+            if len(digits) > dps:  # a run of nines carried into the next power of ten
+                digits = digits[:dps]
+                D //= 10
+                exponent += 1
+        else:
+            D = n // cut
+            digits = digits[:dps]
+    else:
+        D = n
+    value = (-D if sign else D, exponent + 1 - len(digits))
     if min(-(dps // 3), -5) < exponent < dps:  # fixed point near unit magnitude
         if exponent < 0:
-            digits = "0" * (-exponent) + digits
-            split = 1
+            text = "0." + "0" * (-exponent - 1) + digits
         else:
-            split = exponent + 1
-            if split > dps:
-                digits += "0" * (split - dps)
+            split = exponent + 1  # <= dps: no zeros to pad
+            text = digits[:split] + "." + digits[split:]
         exponent = 0
     else:
-        split = 1
-    text = ("-" if sign else "") + digits[:split] + "." + digits[split:]
+        text = digits[:1] + "." + digits[1:]
     if strip:
         text = text.rstrip("0")
         if text[-1] == ".":
             text += "0"
+    if sign:
+        text = "-" + text
     if exponent == 0:
         return text, value
     return (f"{text}e+{exponent}" if exponent > 0 else f"{text}e{exponent}"), value
+
+
+#: ``(bitprec, fixprec, fixdps, 10**fixdps)`` of :func:`_nstr` by ``(dps, exponent + bitcount)``
+_SCALES: dict[tuple[int, int], tuple[int, int, int, int]] = {}
+
+
+def _scale(dps: int, top: int) -> tuple[int, int, int, int]:
+    """The fixed-point scale of ``mpmath.libmp.to_digits_exp(s, dps + 3)`` for a number
+    ``|s| < 2**top``, kept for the few pairs a table meets."""
+    bitprec = int((dps + 3) * _LOG2_10) + 10
+    fixprec = max(bitprec - top, 0)
+    fixdps = int(fixprec / _LOG2_10 + 0.5)
+    scale = (bitprec, fixprec, fixdps, _pow10(fixdps))
+    if len(_SCALES) < 4096 and fixdps < 2000:
+        _SCALES[(dps, top)] = scale
+    return scale
 
 
 def _usable_exactly(x, rad) -> int:

@@ -20,7 +20,7 @@ from fractions import Fraction
 
 import mpmath
 
-__all__ = ["printed_error", "printed_bound", "bound_text", "exact"]
+__all__ = ["printed_error", "printed_bound", "largest_bound", "bound_text", "exact"]
 
 
 def exact(x) -> Fraction:
@@ -51,14 +51,41 @@ def printed_bound(items) -> str | None:
     for text, x, radius in items:
         if text is None or radius is None or x is None:
             continue
-        parts = _error_parts(text, x, radius)
-        if parts is None:
+        xv = getattr(x, "_mpf_", None)
+        rv = getattr(radius, "_mpf_", None)
+        if xv is None or rv is None:  # not mpmath numbers
             p = Fraction(text[0]) * Fraction(10) ** text[1] if isinstance(text, tuple) else text
             f = abs(Fraction(p) - exact(x)) + exact(radius)
             parts = (f.numerator, f.denominator)
+        else:
+            D, k = text if type(text) is tuple else _decimal(text)
+            parts = _parts(D, k, xv, rv)
         if best is None or parts[0] * best[1] > best[0] * parts[1]:
             best = parts
     return None if best is None else _bound_text(best[0], best[1], 2)
+
+
+def largest_bound(items) -> str | None:
+    """:func:`printed_bound` of raw items ``(D, k, xv, rv)``: the printed value ``D 10**k`` of a
+    number whose raw mpf is ``xv``, with the raw mpf ``rv`` of its radius (``None`` for no
+    items).  All errors on one scale ``2**-a 10**-b``, so that the largest is that of integers."""
+    b = a = 0
+    for _, k, xv, rv in items:
+        if k < b:
+            b = k
+        if xv[2] < a:
+            a = xv[2]
+        if rv[2] < a:
+            a = rv[2]
+    scale10 = _POW10.get(-b) or _pow10(-b)
+    best = -1
+    for D, k, (xs, xm, xe, _), (_, rm, re, _) in items:
+        A = (D if k == b else D * (_POW10.get(k - b) or _pow10(k - b))) << -a
+        B = (xm * scale10) << (xe - a)
+        num = (abs(A + B) if xs else abs(A - B)) + ((rm * scale10) << (re - a))
+        if num > best:
+            best = num
+    return None if best < 0 else _bound_text(best, scale10 << -a, 2)
 
 
 def _error_parts(text, x, radius) -> tuple[int, int] | None:
@@ -68,18 +95,27 @@ def _error_parts(text, x, radius) -> tuple[int, int] | None:
     rv = getattr(radius, "_mpf_", None)
     if xv is None or rv is None:  # not mpmath numbers
         return None
-    # in integers on one common scale 2^-a 10^-b
     D, k = text if type(text) is tuple else _decimal(text)
+    return _parts(D, k, xv, rv)
+
+
+def _parts(D: int, k: int, xv: tuple, rv: tuple) -> tuple[int, int]:
+    """``(num, den)`` with ``num / den = |D 10**k - x| + r`` exactly (not reduced; ``den > 0``),
+    for the raw mpf ``xv`` of ``x`` and ``rv`` of ``r``: in integers on one common scale
+    ``2**-a 10**-b``."""
     xs, xm, xe, _ = xv
     _, rm, re, _ = rv
-    X = -xm if xs else xm
     e2 = min(xe, re, 0)
-    k10 = min(k, 0)
-    scale10 = _pow10(-k10)
-    A = D * _pow10(k - k10) << (-e2)
-    B = (X << (xe - e2)) * scale10
-    C = (rm << (re - e2)) * scale10
-    return abs(A - B) + C, scale10 << (-e2)
+    if k < 0:
+        scale10 = _POW10.get(-k) or _pow10(-k)
+        A = D << -e2
+    else:
+        scale10 = 1
+        A = D * (_POW10.get(k) or _pow10(k)) << -e2
+    B = (xm * scale10) << (xe - e2)
+    if xs:
+        B = -B
+    return abs(A - B) + ((rm * scale10) << (re - e2)), scale10 << -e2
 
 
 def _decimal(text: str) -> tuple[int, int]:
@@ -102,22 +138,18 @@ def _bound_text(num: int, den: int, digits: int) -> str:
     """:func:`bound_text` of ``num / den`` (``num >= 0``, ``den > 0``, not necessarily reduced)."""
     if num == 0:
         return "0"
-
-    def at_least(e: int) -> bool:  # num / den >= 10**e
-        return num >= den * _pow10(e) if e >= 0 else num * _pow10(-e) >= den
-
     # the exponent e with 10**e <= bound < 10**(e+1): estimated from the bit lengths, then fixed
     e = math.floor((num.bit_length() - den.bit_length()) * _LOG10_2)
-    while not at_least(e):
+    while not (num >= den * _pow10(e) if e >= 0 else num * _pow10(-e) >= den):
         e -= 1
-    while at_least(e + 1):
+    while num >= den * _pow10(e + 1) if e >= -1 else num * _pow10(-e - 1) >= den:
         e += 1
     s = digits - 1 - e
     if s >= 0:
         mant = -((-num * _pow10(s)) // den)  # ceiling
     else:
         mant = -((-num) // (den * _pow10(-s)))
-    if mant >= 10**digits:  # rounded up to the next power of ten
+    if mant >= _pow10(digits):  # rounded up to the next power of ten
         mant //= 10
         e += 1
     head = str(mant)
