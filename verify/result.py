@@ -15,7 +15,7 @@ from mpmath.libmp import to_str
 
 from analytic.system import PAPER, System
 
-from .rounding import _pow10, largest_bound, printed_bound
+from .rounding import _POW10, _pow10, largest_bound, printed_bound
 
 __all__ = ["Boundary", "proven_text", "fraction_text"]
 
@@ -86,26 +86,40 @@ class Boundary:
         if x is None:
             return "-"
         if k is not None:
-            return self._texts[k]
+            return self._printed[0][k]
         return proven_text(x, None, self.digits)
 
     @_once
     def _printed(self) -> tuple:
-        """The four printed numbers (lower, upper and the two offsets), formatted once, each as
-        ``(text, (D, k) or None)`` (:func:`_proven`; ``(None, None)`` for a number that does not
-        exist)."""
+        """The four printed numbers (lower, upper and the two offsets), formatted once:
+        ``(texts, raw)``, the texts (``None`` for a number that does not exist) and the raw items
+        ``(D, k, x, radius)`` of their error bound (:func:`verify.rounding.largest_bound`: the
+        printed value ``D 10**k``, raw mpf numbers), or ``None`` for ``raw`` where the texts come
+        from :func:`_proven`'s general path."""
         values = (self.lower, self.upper, self.delta_lower, self.delta_upper)
         radii = (None,) * 4 if self.radii is None else self.radii
         digits = self.digits
-        return tuple(
-            (None, None) if x is None else _proven(x, r, digits)
-            for x, r in zip(values, radii, strict=True)
-        )
-
-    @_once
-    def _texts(self) -> tuple:
-        """The four printed texts (``None`` for a number that does not exist)."""
-        return tuple(p[0] for p in self._printed)
+        texts = []
+        raw = []
+        enough = digits + 1e-9
+        for x, r in zip(values, radii, strict=True):
+            if x is None:
+                texts.append(None)
+                continue
+            xv = getattr(x, "_mpf_", None)
+            rv = getattr(r, "_mpf_", None)
+            if xv is None or rv is None or not (xv[1] and rv[1]):
+                text, dk = _proven(x, r, digits)
+            elif (xv[2] + xv[3] - rv[2] - rv[3] - 2) * _LOG10_2 > enough:
+                text, dk = _nstr(xv, digits)  # every digit usable (:func:`_proven`)
+            else:
+                text, dk = _proven(x, r, digits)
+            texts.append(text)
+            if dk is None or rv is None:
+                raw = None
+            elif raw is not None:
+                raw.append((dk[0], dk[1], xv, rv))
+        return tuple(texts), raw
 
     def error_bound(self) -> str | None:
         """A bound of ``|printed - exact|`` over the four printed numbers (rounding of the print
@@ -116,30 +130,18 @@ class Boundary:
     def _error_bound(self) -> str | None:
         if not (self.certified and self.exists and self.radius is not None):
             return None
-        values = (self.lower, self.upper, self.delta_lower, self.delta_upper)
-        printed = self._printed
-        radii = (self.radius,) * 4 if self.radii is None else self.radii
-        raw = []  # (D, k, x, radius) of each printed number, all mpmath numbers: in integers
-        for (_, dk), x, r in zip(printed, values, radii, strict=True):
-            if x is None or r is None:
-                continue
-            xv = getattr(x, "_mpf_", None)
-            rv = getattr(r, "_mpf_", None)
-            if dk is None or xv is None or rv is None:
-                break
-            raw.append((dk[0], dk[1], xv, rv))
-        else:
+        texts, raw = self._printed
+        if raw is not None and self.radii is not None:  # in integers, on one scale
             return largest_bound(raw)
-        return printed_bound(
-            (None if x is None else (printed[k][1] or printed[k][0]), x, radii[k])
-            for k, x in enumerate(values)
-        )
+        values = (self.lower, self.upper, self.delta_lower, self.delta_upper)
+        radii = (self.radius,) * 4 if self.radii is None else self.radii
+        return printed_bound(zip(texts, values, radii, strict=True))
 
     def as_json(self) -> dict:
         """A JSON-ready dict; numbers as decimal strings with ``digits`` significant digits;
         ``error_bound`` bounds ``|printed - exact|`` for each of them (rounding included),
         ``radius`` is the internal enclosure's (smaller: before rounding)."""
-        lower, upper, delta_lower, delta_upper = self._texts
+        lower, upper, delta_lower, delta_upper = self._printed[0]
         return {
             "order": self.order,
             **self.system.as_json(),
@@ -259,13 +261,10 @@ def _nstr(s: tuple, dps: int, strip: bool = False) -> tuple[str, tuple[int, int]
     text).  In integers: the rounded digits are ``n // 10**q`` (plus one when the first digit cut
     is 5 or more) -- no text read back into a number."""
     sign, man, exp, bc = s
-    top = exp + bc
-    scale = _SCALES.get((dps, top))
-    if scale is None:
-        if top > 3500 or top < -3500:  # huge exponents: mpmath's own path
-            return to_str(s, dps, strip_zeros=strip), None
-        scale = _scale(dps, top)
-    bitprec, fixprec, fixdps, p10 = scale
+    scale = _SCALES.get((dps, exp + bc)) or _scale(dps, exp + bc)
+    if scale is None:  # huge exponents: mpmath's own path
+        return to_str(s, dps, strip_zeros=strip), None
+    bitprec, fixprec, fixdps, p10, low = scale
     if fixprec:
         shift = bitprec - bc  # = exp + fixprec
         n = ((man << shift) if shift >= 0 else (man >> -shift)) * p10 >> fixprec
@@ -275,29 +274,31 @@ def _nstr(s: tuple, dps: int, strip: bool = False) -> tuple[str, tuple[int, int]
     size = len(digits)
     exponent = size - fixdps - 1
     if size > dps:
-        cut = _pow10(size - dps)
-        if digits[dps] >= "5":  # round half up (mpmath's rule on its truncated digits)
+        cut = _POW10.get(size - dps) or _pow10(size - dps)
+        if digits[dps] < "5":
+            D = n // cut
+            digits = digits[:dps]
+        else:  # round half up (mpmath's rule, on its truncated digits)
             D = n // cut + 1
             digits = str(D)
             if len(digits) > dps:  # a run of nines carried into the next power of ten
                 digits = digits[:dps]
                 D //= 10
                 exponent += 1
-        else:
-            D = n // cut
-            digits = digits[:dps]
+        k = exponent + 1 - dps
     else:
         D = n
-    value = (-D if sign else D, exponent + 1 - len(digits))
-    if min(-(dps // 3), -5) < exponent < dps:  # fixed point near unit magnitude
+        k = exponent + 1 - size
+    if sign:
+        D = -D
+    if low < exponent < dps:  # fixed point near unit magnitude (no zeros to pad: exponent < dps)
         if exponent < 0:
-            text = "0." + "0" * (-exponent - 1) + digits
-        else:
-            split = exponent + 1  # <= dps: no zeros to pad
-            text = digits[:split] + "." + digits[split:]
+            digits = ("0" * -exponent) + digits
+            exponent = 0
+        text = f"{digits[: exponent + 1]}.{digits[exponent + 1 :]}"
         exponent = 0
     else:
-        text = digits[:1] + "." + digits[1:]
+        text = f"{digits[:1]}.{digits[1:]}"
     if strip:
         text = text.rstrip("0")
         if text[-1] == ".":
@@ -305,21 +306,25 @@ def _nstr(s: tuple, dps: int, strip: bool = False) -> tuple[str, tuple[int, int]
     if sign:
         text = "-" + text
     if exponent == 0:
-        return text, value
-    return (f"{text}e+{exponent}" if exponent > 0 else f"{text}e{exponent}"), value
+        return text, (D, k)
+    return (f"{text}e+{exponent}" if exponent > 0 else f"{text}e{exponent}"), (D, k)
 
 
-#: ``(bitprec, fixprec, fixdps, 10**fixdps)`` of :func:`_nstr` by ``(dps, exponent + bitcount)``
-_SCALES: dict[tuple[int, int], tuple[int, int, int, int]] = {}
+#: ``(bitprec, fixprec, fixdps, 10**fixdps, min_fixed)`` of :func:`_nstr` by
+#: ``(dps, exponent + bitcount)``
+_SCALES: dict[tuple[int, int], tuple[int, int, int, int, int]] = {}
 
 
-def _scale(dps: int, top: int) -> tuple[int, int, int, int]:
-    """The fixed-point scale of ``mpmath.libmp.to_digits_exp(s, dps + 3)`` for a number
-    ``|s| < 2**top``, kept for the few pairs a table meets."""
+def _scale(dps: int, top: int) -> tuple[int, int, int, int, int] | None:
+    """The fixed-point scale of ``mpmath.libmp.to_digits_exp(s, dps + 3)`` for a number with
+    ``2**(top-1) <= |s| < 2**top`` and ``to_str``'s least exponent printed in fixed point, kept
+    for the few pairs a table meets (``None`` for huge exponents, beyond ``2**3500``)."""
+    if top > 3500 or top < -3500:
+        return None
     bitprec = int((dps + 3) * _LOG2_10) + 10
     fixprec = max(bitprec - top, 0)
     fixdps = int(fixprec / _LOG2_10 + 0.5)
-    scale = (bitprec, fixprec, fixdps, _pow10(fixdps))
+    scale = (bitprec, fixprec, fixdps, _pow10(fixdps), min(-(dps // 3), -5))
     if len(_SCALES) < 4096 and fixdps < 2000:
         _SCALES[(dps, top)] = scale
     return scale
