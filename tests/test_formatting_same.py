@@ -180,3 +180,173 @@ def test_radius_text_as_before():
         assert _radius_text(x) == mpmath.nstr(x, 3)
     assert _radius_text(mpmath.mpf(0)) == mpmath.nstr(mpmath.mpf(0), 3)
     assert _radius_text(mpmath.mpf("0.5")) == "0.5"
+
+
+# -- whole rows: the table's cells and the text view, against the reference, cell by cell --------
+
+KEYS = ("lower", "upper", "delta_lower", "delta_upper")
+
+
+def assert_row_as_before(b) -> None:
+    """``b`` formatted afresh (as ``paramres table`` writes a row, and as ``str``) against the
+    reference: the four decimals, the bound of the print and the radius, byte for byte."""
+    fresh = dataclasses.replace(b)  # nothing formatted yet
+    j = fresh.as_json()
+    values = (b.lower, b.upper, b.delta_lower, b.delta_upper)
+    radii = (None,) * 4 if b.radii is None else b.radii
+    texts = [
+        None if x is None else reference_text(x, r, b.digits)
+        for x, r in zip(values, radii, strict=True)
+    ]
+    assert [j[k] for k in KEYS] == texts, (b.lower, b.radii)
+    if b.certified and b.exists and b.radius is not None:
+        bradii = (b.radius,) * 4 if b.radii is None else b.radii
+        errors = [
+            reference_error(t, x, r)
+            for t, x, r in zip(texts, values, bradii, strict=True)
+            if x is not None and r is not None
+        ]
+        bound = reference_bound(max(errors))
+    else:
+        bound = None
+    assert j["error_bound"] == bound
+    assert j["radius"] == (None if b.radius is None else mpmath.nstr(b.radius, 3))
+    text = str(dataclasses.replace(b))
+    for t in texts:
+        assert t is None or f"= {t}" in text
+    assert bound is None or f"|printed - exact| < {bound}]" in text
+
+
+CONFIGS = [
+    # (system, duty, Q): the paper's pendulum, the torsion pendulum, duty 1/3, with friction
+    ("pendulum", "1/2", None),
+    ("pendulum", "1/2", "7"),
+    ("torsion", "1/2", None),
+    ("torsion", "1/2", "12"),
+    ("pendulum", "1/3", None),
+    ("torsion", "1/3", "9"),
+]
+
+
+@pytest.mark.parametrize("digits", [15, 50, 100, 1000])
+def test_table_rows_as_before(digits):
+    """Random edges (order 1-4, random depth) of every configuration: each row written as the
+    reference writes it."""
+    rng = random.Random(digits)
+    rows = 0
+    for system, duty, Q in CONFIGS:
+        for _ in range(3 if digits == 1000 else 5):
+            order = rng.randint(1, 4)
+            m = Fraction(rng.randint(20 if Q else 1, 90), 100)
+            b = boundary(order, m, Q=Q, digits=digits, system=system, duty=duty)
+            assert_row_as_before(b)
+            rows += b.exists and b.certified
+    assert rows >= 15  # most rows exist and are certified: the fast path is what is compared
+
+
+def _rounded(q: Fraction, bits: int, up: bool) -> mpmath.mpf:
+    """``q`` rounded to ``bits`` bits, up or down (an exact binary number beside ``q``)."""
+    from mpmath.libmp import from_rational, round_ceiling, round_floor
+
+    v = mpmath.mpf(0)
+    v._mpf_ = from_rational(q.numerator, q.denominator, bits, round_ceiling if up else round_floor)
+    return v
+
+
+def _row(x, digits, rad_bits=40, deltas=None, radii=None):
+    """A certified row whose lower edge is ``x`` (the rest beside it)."""
+    from verify.result import Boundary
+
+    bits = int(digits * 3.33)
+    upper = mpmath.fadd(x, mpmath.ldexp(1, -(bits + 8)), exact=True)  # a tiny width
+    one = mpmath.mpf(1)
+    dl, du = (
+        deltas
+        if deltas is not None
+        else (
+            mpmath.fsub(x, one, exact=True),
+            mpmath.fsub(upper, one, exact=True),
+        )
+    )
+    if radii is None:
+        r = _rounded(Fraction(1, 2 ** (bits + rad_bits)), 30, True)
+        radii = (r, r, r, r)
+    return Boundary(
+        order=3,
+        m=Fraction(1, 2),
+        Q=None,
+        damping="exact",
+        digits=digits,
+        method="certified",
+        exists=True,
+        lower=x,
+        upper=upper,
+        delta_lower=dl,
+        delta_upper=du,
+        radius=max(radii),
+        certified=True,
+        regime="test",
+        radii=radii,
+    )
+
+
+@pytest.mark.parametrize("digits", [15, 50, 100, 1000])
+def test_hard_rows_as_before(digits):
+    """Hard cases, each formatted as the reference does: an edge beside a tie of the last digit
+    (``...4999|5000...``: a hair below, a hair above, at several binary precisions), runs of nines
+    (the rounding carries into the next power of ten), tiny widths and offsets, a radius whose
+    value/radius ratio is next to the power of ten that decides the number of digits, a zero
+    offset (an exact closing), and no radius at all."""
+    rng = random.Random(1000 + digits)
+    bits = int(digits * 3.33)
+    cases = []
+    for _ in range(12):
+        N = rng.randrange(10 ** (digits - 1), 10**digits)
+        tie = Fraction(10 * N + 5, 10**digits)  # 1.xxx...x5: a tie after the last digit
+        for extra in (2, 12, 40, 400):
+            for up in (False, True):
+                cases.append(_rounded(tie / 10 ** rng.randint(0, 1), bits + extra, up))
+        nines = 1 - Fraction(rng.randint(1, 9), 10 ** (digits + rng.randint(0, 2)))
+        for extra in (3, 40):
+            for up in (False, True):
+                cases.append(_rounded(nines, bits + extra, up))
+                cases.append(_rounded(10 * nines, bits + extra, up))
+    for x in cases:
+        assert_row_as_before(_row(x, digits))
+        # negative offsets beside a tie, and tiny offsets (a narrow interval)
+        tiny = mpmath.ldexp(x, -(bits // 2))
+        assert_row_as_before(_row(x, digits, deltas=(mpmath.ldexp(-x, -6), tiny)))
+    x = cases[0]
+    # a radius next to the one that decides the number of digits: |x| / (2 r) = 10**p (1 +- eps)
+    for p in (1, digits // 2, digits - 1, digits, digits + 1):
+        for eps in (-(2**-40), -(2**-70), 0, 2**-70, 2**-40):
+            with mpmath.workdps(digits + 40):
+                r = abs(x) / (2 * mpmath.mpf(10) ** p) * (1 + eps)
+            r = _mpf(*_man_exp(r))
+            assert_row_as_before(_row(x, digits, radii=(r, r, r / 3, r / 3)))
+    # an exact closing: a zero offset whose enclosure is wider than one digit
+    r = _rounded(Fraction(1, 2**bits), 30, True)
+    assert_row_as_before(_row(x, digits, deltas=(mpmath.mpf(0), mpmath.mpf(0)), radii=(r,) * 4))
+    # no radii: every digit asked for, and the one radius for the bound
+    b = dataclasses.replace(_row(x, digits), radii=None)
+    assert_row_as_before(b)
+    assert_row_as_before(dataclasses.replace(b, radius=None, certified=False))
+
+
+def test_largest_bound_as_before():
+    """:func:`verify.rounding.largest_bound` (the rows' raw items, on one scale) against the
+    largest error in Fraction arithmetic."""
+    from verify.result import _proven
+    from verify.rounding import largest_bound
+
+    cases = list(_cases(8, 1200))
+    for i in range(0, len(cases), 4):
+        raw, ref = [], []
+        for x, r, d in cases[i : i + 4]:
+            text, dk = _proven(x, r, d)
+            if dk is None:  # huge exponents: mpmath's own text, the general path
+                continue
+            raw.append((dk[0], dk[1], x._mpf_, r._mpf_))
+            ref.append(reference_error(text, x, r))
+        assert largest_bound(raw) == (reference_bound(max(ref)) if ref else None)
+    assert largest_bound([]) is None
