@@ -346,7 +346,7 @@ def test_largest_bound_as_before():
             text, dk = _proven(x, r, d)
             if dk is None:  # huge exponents: mpmath's own text, the general path
                 continue
-            raw.append((dk[0], dk[1], x._mpf_, r._mpf_))
+            raw.append((dk, x._mpf_, r._mpf_))
             ref.append(reference_error(text, x, r))
         assert largest_bound(raw) == (reference_bound(max(ref)) if ref else None)
     assert largest_bound([]) is None

@@ -93,7 +93,7 @@ class Boundary:
     def _printed(self) -> tuple:
         """The four printed numbers (lower, upper and the two offsets), formatted once:
         ``(texts, raw)``, the texts (``None`` for a number that does not exist) and the raw items
-        ``(D, k, x, radius)`` of their error bound (:func:`verify.rounding.largest_bound`: the
+        ``((D, k), x, radius)`` of their error bound (:func:`verify.rounding.largest_bound`: the
         printed value ``D 10**k``, raw mpf numbers), or ``None`` for ``raw`` where the texts come
         from :func:`_proven`'s general path."""
         values = (self.lower, self.upper, self.delta_lower, self.delta_upper)
@@ -118,7 +118,7 @@ class Boundary:
             if dk is None or rv is None:
                 raw = None
             elif raw is not None:
-                raw.append((dk[0], dk[1], xv, rv))
+                raw.append((dk, xv, rv))
         return tuple(texts), raw
 
     def error_bound(self) -> str | None:

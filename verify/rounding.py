@@ -66,11 +66,11 @@ def printed_bound(items) -> str | None:
 
 
 def largest_bound(items) -> str | None:
-    """:func:`printed_bound` of raw items ``(D, k, xv, rv)``: the printed value ``D 10**k`` of a
-    number whose raw mpf is ``xv``, with the raw mpf ``rv`` of its radius (``None`` for no
+    """:func:`printed_bound` of raw items ``((D, k), xv, rv)``: the printed value ``D 10**k`` of
+    a number whose raw mpf is ``xv``, with the raw mpf ``rv`` of its radius (``None`` for no
     items).  All errors on one scale ``2**-a 10**-b``, so that the largest is that of integers."""
     b = a = 0
-    for _, k, xv, rv in items:
+    for (_, k), xv, rv in items:
         if k < b:
             b = k
         if xv[2] < a:
@@ -79,7 +79,7 @@ def largest_bound(items) -> str | None:
             a = rv[2]
     scale10 = _POW10.get(-b) or _pow10(-b)
     best = -1
-    for D, k, (xs, xm, xe, _), (_, rm, re, _) in items:
+    for (D, k), (xs, xm, xe, _), (_, rm, re, _) in items:
         A = (D if k == b else D * (_POW10.get(k - b) or _pow10(k - b))) << -a
         B = (xm * scale10) << (xe - a)
         num = (abs(A + B) if xs else abs(A - B)) + ((rm * scale10) << (re - a))
