@@ -39,8 +39,10 @@ from __future__ import annotations
 
 import decimal
 import math
+import threading
 from dataclasses import fields
 from fractions import Fraction
+from functools import lru_cache
 
 import mpmath
 import numpy as np
@@ -81,6 +83,12 @@ __all__ = [
 
 _HALF_PI = math.pi / 2
 _NP = backend("numpy")
+
+
+def _paper_system():
+    from analytic.system import PAPER
+
+    return PAPER
 
 
 def _parity(n: int) -> str:
@@ -333,6 +341,283 @@ def _cubic(xb, rows, x):
     for i in range(1, 4):
         out += (w[i] / den[i][j]) * np.take(rows, j + i, axis=1)
     return out
+
+
+# ---------------------------------------------------------------------------------------------
+# the frictionless grid: start tables per order, one vectorised pass over all orders
+
+#: the start tables hold the roots at this many depths, uniform in ``rho = sqrt(1 - m)``
+START_NODES = 1024
+
+
+@lru_cache(maxsize=512)
+def _start_table(system, n: int) -> np.ndarray:
+    """The roots ``theta`` of both edge equations of order ``n`` (rows ``eps = +1, -1``) at the
+    depths ``m = 1 - rho^2``, ``rho = (k + 1/2)/K`` (``K =`` :data:`START_NODES`): shape ``(2,
+    K)``, read-only.  Starting values only (:func:`_frictionless_theta` iterates every point to
+    convergence from them), so a table is a function of ``system`` and ``n`` alone: it cannot
+    change a result.  ``rho`` makes the roots smooth up to ``m = 1``, where the parameters go
+    like ``sqrt(1 - m)``."""
+    rho = (np.arange(START_NODES) + 0.5) / START_NODES
+    om = rho * rho
+    P = normal_params(1 - om, None, "exact", _NP, system, om=om)
+    eps = np.array([1.0, -1.0])[:, None]
+    r, beta = np.asarray(P.r, float)[None], np.asarray(P.beta, float)[None]
+    tab = np.array(undamped_roots(n, r, beta, eps), float)
+    tab.flags.writeable = False
+    return tab
+
+
+class _Plan:
+    """What :func:`_frictionless_theta` needs of ``orders`` besides the depths: the rows (one per
+    order and sign ``eps``, the odd orders first), ``c = n pi/2`` and the coefficients per unit
+    ``r`` of :func:`verify.derived.edge_equation_linear` per row, and the stacked start tables."""
+
+    def __init__(self, system, orders: tuple):
+        _lin, coef = edge_equation_linear()
+        no = len(orders)
+        rows = [(e, i) for e in range(2) for i in range(no)]  # output row e * no + i
+        rows.sort(key=lambda ei: orders[ei[1]] % 2 == 0)  # odd orders first (stable)
+        self.perm = np.array([e * no + i for e, i in rows])
+        self.odd = sum(1 for _e, i in rows if orders[i] % 2)
+        n = np.array([orders[i] for _e, i in rows])
+        eps = np.array([1.0 - 2.0 * e for e, _i in rows])
+        self.n = n
+        self.c = (n * _HALF_PI)[:, None]
+        odd = (n % 2).astype(float)
+        coefs = coef.compiled("numpy", (0, 1))
+        a, b = (np.asarray(v, float) * np.ones(n.shape) for v in coefs(_sgn(n), eps, odd, 1.0))
+        a2, b2 = (np.asarray(v, float) * np.ones(n.shape) for v in coefs(_sgn(n), eps, odd, 2.0))
+        # the structure the kernel relies on (derivation guard): linear in r, cos(y) alone in the
+        # odd rows, sin(y) alone in the even ones
+        k = self.odd
+        if not (
+            np.array_equal(a2, 2 * a)
+            and np.array_equal(b2, 2 * b)
+            and not b[:k].any()
+            and not a[k:].any()
+            and np.all(np.abs(a[:k]) == 1)
+            and np.all(np.abs(b[k:]) == 1)
+        ):  # pragma: no cover - derivation guard
+            raise AssertionError("edge equation coefficients not of the form the grid assumes")
+        self.a, self.b = a[:, None], b[:, None]
+        # per unit r: the coefficient of f(y) (cos y in odd rows, sin y in even ones) in F, and
+        # that of the other function of y in F'/beta
+        self.kf, self.kg = (a + b)[:, None], (b - a)[:, None]
+        _check_kernel(self)
+        self.order = np.array([i for _e, i in rows])
+        self.sign = np.array([e for e, _i in rows])
+        self.table = np.stack([_start_table(system, orders[i])[e] for e, i in rows])
+
+
+def _check_kernel(plan) -> None:
+    """Derivation guard: ``F, F', F''`` as :func:`_frictionless_block` computes them (``sin
+    theta + kf r f(y)``, ``cos theta + kg r beta g(y)``, ``-(sin theta + beta^2 kf r f(y))``)
+    equal :func:`verify.derived.edge_equation_trig` at random points of every row."""
+    trig = edge_equation_trig().compiled("numpy", (0, 1, 2))
+    rng = np.random.default_rng(0)
+    R, k = plan.kf.shape[0], plan.odd
+    t, y, beta, r = (rng.uniform(0.1, 1.4, (R, 3)) for _ in range(4))
+    st, ct, sy, cy = np.sin(t), np.cos(t), np.sin(y), np.cos(y)
+    f = np.concatenate([cy[:k], sy[k:]])
+    g = np.concatenate([sy[:k], cy[k:]])
+    want = trig(st, ct, sy, cy, beta, plan.a * r, plan.b * r)
+    ours = (st + plan.kf * r * f, ct + plan.kg * r * beta * g, -(st + beta**2 * plan.kf * r * f))
+    for w, o in zip(want, ours, strict=True):
+        if not np.allclose(w, o, rtol=1e-13, atol=1e-13):  # pragma: no cover - derivation guard
+            raise AssertionError("the grid's edge equation differs from the derived one")
+
+
+@lru_cache(maxsize=64)
+def _plan(system, orders: tuple) -> _Plan:
+    return _Plan(system, orders)
+
+
+class _Workspace(threading.local):
+    """The work arrays of :func:`_frictionless_theta`, kept between calls (one set per thread):
+    a fresh array costs a page fault per 4 KiB on every call, about as much as the arithmetic on
+    it.  At most :data:`_WORK_EDGES` edges each (or 64 depths of every row)."""
+
+    def __init__(self):
+        self.floats: list = []
+        self.flags = np.empty(0, bool)
+
+    def arrays(self, count: int, shape: tuple):
+        size = shape[0] * shape[1]
+        if len(self.floats) < count or self.floats[0].size < size:
+            size_all = max(size, self.floats[0].size if self.floats else 0)
+            self.floats = [np.empty(size_all) for _ in range(max(count, len(self.floats)))]
+            self.flags = np.empty(size_all, bool)
+        views = [b[:size].reshape(shape) for b in self.floats[:count]]
+        return views, self.flags[:size].reshape(shape)
+
+
+_WORK = _Workspace()
+
+#: :func:`_frictionless_theta` works on blocks of depths of at most this many edges
+_WORK_EDGES = 1 << 14
+
+
+def _start_values(table, rho, out, tmp) -> None:
+    """``out`` (``(rows, len(rho))``) = the rows of ``table`` (values at the nodes of
+    :func:`_start_table`) interpolated at ``rho`` by the cubic through the four nearest nodes."""
+    K = table.shape[1]
+    u = rho * K - 0.5  # the position in units of the node spacing
+    j = np.floor(u)
+    np.clip(j - 1, 0, K - 4, out=j)
+    v = u - j
+    v1, v2, v3 = v - 1, v - 2, v - 3
+    v01, v23 = v * v1, v2 * v3
+    j = j.astype(np.intp)
+    # the Lagrange weights of the nodes j .. j+3 (uniform spacing)
+    np.take(table, j, axis=1, out=out, mode="clip")  # (j is in range: no checks)
+    out *= v1 * v23 * (-1 / 6)
+    for i, w in ((1, v * v23 * 0.5), (2, v01 * v3 * -0.5), (3, v01 * v2 * (1 / 6))):
+        np.take(table, j + i, axis=1, out=tmp, mode="clip")
+        tmp *= w
+        out += tmp
+
+
+def _frictionless_theta(orders, P, rho, system, theta) -> None:
+    """Both undamped edge roots of every order at every depth: ``theta[i, 0]`` the root of the
+    edge equation ``eps = +1`` of ``orders[i]``, ``theta[i, 1]`` that of ``eps = -1`` (``theta``:
+    ``(len(orders), 2, N)``, filled here), for the parameters ``P`` (arrays of ``N`` depths),
+    ``rho = sqrt(1 - m)``.  The same equations and convergence test as :func:`undamped_roots`,
+    all orders in one pass, in blocks of :data:`_WORK_EDGES` edges in kept work arrays.
+
+    Started from the cached tables of :func:`_start_table` (right to about 1e-8 for the orders
+    of a plot, so that one Halley step finishes most points).  That first step, on every point,
+    computes to full accuracy only the sines that enter the equation itself (``sin theta`` and
+    ``f(y)``: ``cos y`` in the rows of odd orders, ``sin y`` in the even ones); ``cos theta`` and
+    the other function of ``y``, which enter only the derivative, come from the Pythagorean
+    identity, and the convergence test adds what their error costs the step.  The points that
+    have not converged go on with every sine computed, compacted, and to the safeguarded
+    iteration (:func:`_safeguarded`) if they still have not."""
+    plan = _plan(system, tuple(orders))
+    R, N = plan.perm.size, rho.size
+    width = max(64, _WORK_EDGES // R)
+    beta_all = np.ascontiguousarray(P.beta, float)
+    r_all = np.ascontiguousarray(P.r, float)
+    for j0 in range(0, N, width):
+        j1 = min(N, j0 + width)
+        block = _frictionless_block(plan, rho[j0:j1], beta_all[j0:j1], r_all[j0:j1])
+        theta[plan.order, plan.sign, j0:j1] = block
+
+
+def _frictionless_block(plan, rho, beta, r):
+    """:func:`_frictionless_theta` on one block of depths: ``theta`` of the rows of ``plan`` (a
+    work array, valid until the next call)."""
+    R, N, k = plan.perm.size, rho.size, plan.odd
+    (th, start, kf, kg, bc, st, y, fy, gy, ct, tmp, q), stop = _WORK.arrays(12, (R, N))
+    _start_values(plan.table, rho, th, tmp)
+    np.clip(th, -1.57, 1.57, out=th)  # inside the window
+    np.copyto(start, th)
+    np.multiply(plan.kf, r, out=kf)  # the coefficient of f(y) in F
+    np.multiply(plan.kg, r * beta, out=kg)  # the coefficient of the other function in F'
+    np.multiply(plan.c, beta, out=bc)
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+        np.sin(th, out=st)
+        np.multiply(th, beta, out=y)
+        y += bc
+        np.cos(y[:k], out=fy[:k])
+        np.sin(y[k:], out=fy[k:])
+        # cos theta >= 0 in the window; the other function of y with the sign of its quadrant:
+        # sin y >= 0 where floor(y/pi) is even, cos y >= 0 where floor(y/pi + 1/2) is (y >= 0)
+        np.subtract(1.0, st, out=ct)
+        np.add(1.0, st, out=tmp)
+        ct *= tmp
+        np.sqrt(ct, out=ct)
+        np.multiply(y, 1 / math.pi, out=q)
+        q[k:] += 0.5
+        np.floor(q, out=q)
+        np.multiply(q, 0.5, out=tmp)
+        np.floor(tmp, out=tmp)
+        tmp *= 2.0
+        q -= tmp
+        np.subtract(0.5, q, out=q)  # > 0 where the function is >= 0
+        np.subtract(1.0, fy, out=gy)
+        np.add(1.0, fy, out=tmp)
+        gy *= tmp
+        np.sqrt(gy, out=gy)
+        np.copysign(gy, q, out=gy)
+        # F, F', F'' (the form of verify.derived.edge_equation_trig, checked by _Plan)
+        np.multiply(kf, fy, out=kf)  # A cos y + B sin y
+        np.multiply(kg, gy, out=kg)  # beta (B cos y - A sin y)
+        np.add(st, kf, out=fy)  # F
+        kg += ct  # F'
+        kf *= beta * beta
+        kf += st  # -F''
+        # Halley: step = (F/F') / (1 - (F/F') F''/(2 F'))
+        fy /= kg  # F/F'
+        kf /= kg
+        kf *= -0.5  # h = F''/(2 F')
+        np.multiply(fy, kf, out=tmp)
+        np.subtract(1.0, tmp, out=tmp)
+        fy /= tmp  # the step
+        np.subtract(th, fy, out=y)  # the new iterate
+        # Halley's error K step^3 (as in undamped_roots), and what the identity costs: each
+        # partner is right to 1.1e-16/|partner|, so F' to 2.2e-16/min(cos theta, |partner|)
+        # (r, beta <= 1), the step to that over |F'|, relative: below 2e-18 where it passes
+        np.abs(fy, out=fy)  # |step|
+        np.abs(kg, out=kg)  # |F'|
+        np.abs(gy, out=gy)
+        np.minimum(gy, ct, out=gy)
+        gy *= kg
+        np.multiply(fy, 128.0, out=tmp)
+        np.less_equal(tmp, gy, out=stop)
+        np.multiply(kg, 3.0, out=tmp)
+        np.reciprocal(tmp, out=tmp)
+        kf *= kf
+        tmp += kf  # K
+        np.multiply(fy, fy, out=gy)
+        gy *= fy
+        gy *= tmp
+        stop &= gy <= 7e-18
+        np.abs(y, out=tmp)
+        out = tmp >= _HALF_PI
+        if out.any():  # a step out of the window goes half way to the window's end
+            y[out] = 0.5 * (th[out] + np.copysign(_HALF_PI, y[out]))
+            stop &= ~out
+    flat = y.ravel()
+    idx = np.flatnonzero(~stop)
+    if idx.size:
+        _finish(plan, flat, idx, start.ravel()[idx], N, beta, r)
+    return y
+
+
+def _finish(plan, flat, idx, start, N: int, beta, r) -> None:
+    """The points ``idx`` of a block (``flat``: its iterates, rows of ``plan`` times ``N``
+    depths) that the first step did not finish: Halley steps with every sine computed, the
+    points dropped as they converge, and the safeguarded iteration from ``start`` for those that
+    do not within :data:`_FAST_STEPS` steps."""
+    trig = edge_equation_trig().compiled("numpy", (0, 1, 2))
+    row, col = np.divmod(idx, N)
+    bb, rr = beta[col], r[col]
+    A, B = plan.a[row, 0] * rr, plan.b[row, 0] * rr
+    cc = plan.c[row, 0]
+    bc = cc * bb
+    pos = np.arange(idx.size)
+    t = flat[idx]
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+        for _ in range(_FAST_STEPS - 1):
+            b = bb[pos]
+            y = bc[pos] + b * t
+            f, d1, d2 = trig(np.sin(t), np.cos(t), np.sin(y), np.cos(y), b, A[pos], B[pos])
+            step = f / d1
+            h = 0.5 * d2 / d1
+            step /= 1.0 - step * h
+            tn = t - step
+            a = np.abs(step)
+            ok = (1.0 / (3.0 * np.abs(d1)) + h * h) * (a * a * a) <= 7e-18
+            out = np.abs(tn) >= _HALF_PI
+            if out.any():
+                tn = np.where(out, 0.5 * (t + np.copysign(_HALF_PI, tn)), tn)
+                ok &= ~out
+            flat[idx[pos]] = tn
+            pos, t = pos[~ok], tn[~ok]
+            if not pos.size:
+                return
+    flat[idx[pos]] = _safeguarded(start[pos], cc[pos], bb[pos], A[pos], B[pos])
 
 
 def _bisect_newton_compact(
@@ -617,7 +902,9 @@ def boundary_grid(orders, m, *, Q=None, damping="exact", system="pendulum", duty
         for cols in _blocks(np.nonzero(served)[0], chunk):
             P = normal_params(dep.m[cols], Qf, damping, _NP, sysv, om=dep.om[cols])
             part = np.full((len(orders), 2, cols.size), np.nan)
-            doubt[:, cols] = _fill_normal(part, orders, dep.m[cols], P, damped=Qx is not None)
+            doubt[:, cols] = _fill_normal(
+                part, orders, dep.m[cols], P, damped=Qx is not None, system=sysv, om=dep.om[cols]
+            )
             out[:, :, cols] = part
         doubt[:, ~served] = True
     for i, j in zip(*np.nonzero(doubt), strict=True):
@@ -721,7 +1008,7 @@ def _double_grid(orders, dep: _Depths, cols, Qx, damping):
     if Qx is None or damping == "paper":
         Qf = None if Qx is None else float(Qx)
         P = normal_params(ms, Qf, damping, _NP, om=om)
-        doubt[:] = _fill_normal(out, orders, ms, P, damped=Qx is not None)
+        doubt[:] = _fill_normal(out, orders, ms, P, damped=Qx is not None, om=om)
         return out, doubt
     Qexact = Fraction(Qx) if not isinstance(Qx, Fraction) else Qx
     h1, h2 = _halves(dep, cols, Qexact)
@@ -863,9 +1150,11 @@ def _polish_near_one(theta, n, P, form):
     return theta
 
 
-def _fill_normal(out, orders, ms, P, damped: bool) -> np.ndarray:
+def _fill_normal(out, orders, ms, P, damped: bool, *, system=None, om=None) -> np.ndarray:
     """Fill ``out`` (orders x 2 x depths) from the normal form; returns the mask (orders x
-    depths) of entries whose error is not bounded by :data:`ERROR_BOUND` (to be escalated)."""
+    depths) of entries whose error is not bounded by :data:`ERROR_BOUND` (to be escalated).
+    ``system`` (default the paper's) and ``om = 1 - m``: for the start tables of the frictionless
+    grid (:func:`_frictionless_theta`, grids of at least :data:`_TABLE_MIN` depths)."""
     orders_arr = np.array(orders)
     doubt = np.zeros((len(orders), ms.size), bool)
     P = NormalParams(
@@ -873,7 +1162,12 @@ def _fill_normal(out, orders, ms, P, damped: bool) -> np.ndarray:
     )
     if not damped:
         n = orders_arr[:, None]
-        t1, t2 = normal_edges(n, P)
+        if om is not None and ms.size >= _TABLE_MIN:
+            theta = np.empty((len(orders), 2, ms.size))
+            _frictionless_theta(orders, P, np.sqrt(om), system or _paper_system(), theta)
+            t1, t2 = theta[:, 0], theta[:, 1]
+        else:
+            t1, t2 = normal_edges(n, P)
         near = near_one_forms()
         t1 = _polish_near_one(t1, orders_arr, P, near[0])
         t2 = _polish_near_one(t2, orders_arr, P, near[1])
