@@ -16,7 +16,10 @@ Method (all orders and depths at once):
 
 * no friction: safeguarded Halley iteration on ``theta`` for each edge equation, bracket
   ``(-pi/2, pi/2)`` (window theorem: one simple root each), started at the fixed point of
-  ``theta = asin(-k r f(beta c))``;
+  ``theta = asin(-k r f(beta c))``; a grid of at least 256 depths starts every edge from a
+  cached table of roots per order (1024 depths uniform in ``sqrt(1 - m)``, the cubic through
+  the four nearest), and takes the first Halley step of every order at once in work arrays kept
+  between calls (:func:`_frictionless_theta`), so that it allocates almost nothing per call;
 * friction, normal form: the undamped-form roots (same ``r``, ``beta``) bracket the interval
   (``D <= D0`` and ``D0 < 0`` outside them); the maximiser of ``D`` is the root of ``D'`` (Newton
   safeguarded by bisection, from the secant start, where ``D'`` changes sign); where ``D`` is
@@ -350,22 +353,37 @@ def _cubic(xb, rows, x):
 START_NODES = 1024
 
 
-@lru_cache(maxsize=512)
-def _start_table(system, n: int) -> np.ndarray:
-    """The roots ``theta`` of both edge equations of order ``n`` (rows ``eps = +1, -1``) at the
-    depths ``m = 1 - rho^2``, ``rho = (k + 1/2)/K`` (``K =`` :data:`START_NODES`): shape ``(2,
-    K)``, read-only.  Starting values only (:func:`_frictionless_theta` iterates every point to
-    convergence from them), so a table is a function of ``system`` and ``n`` alone: it cannot
-    change a result.  ``rho`` makes the roots smooth up to ``m = 1``, where the parameters go
-    like ``sqrt(1 - m)``."""
-    rho = (np.arange(START_NODES) + 0.5) / START_NODES
-    om = rho * rho
-    P = normal_params(1 - om, None, "exact", _NP, system, om=om)
-    eps = np.array([1.0, -1.0])[:, None]
-    r, beta = np.asarray(P.r, float)[None], np.asarray(P.beta, float)[None]
-    tab = np.array(undamped_roots(n, r, beta, eps), float)
-    tab.flags.writeable = False
-    return tab
+#: the start tables computed so far, ``(system, n) -> (2, K)`` (read-only; cleared when it holds
+#: :data:`_TABLES_MAX`)
+_TABLES: dict = {}
+_TABLES_MAX = 512
+
+
+def _start_tables(system, orders) -> list:
+    """For each order ``n`` of ``orders``: the roots ``theta`` of both edge equations (rows ``eps
+    = +1, -1``) at the depths ``m = 1 - rho^2``, ``rho = (k + 1/2)/K`` (``K =``
+    :data:`START_NODES`), shape ``(2, K)``, read-only.  Starting values only
+    (:func:`_frictionless_theta` iterates every point to convergence from them), so a table is a
+    function of ``system`` and ``n`` alone, computed once (the orders not yet seen in one
+    vectorised solve, to 1e-12): it cannot change a result.  ``rho`` makes the roots smooth up
+    to ``m = 1``, where the parameters go like ``sqrt(1 - m)``."""
+    found = {n: _TABLES.get((system, n)) for n in set(orders)}
+    missing = sorted(n for n, tab in found.items() if tab is None)
+    if missing:
+        rho = (np.arange(START_NODES) + 0.5) / START_NODES
+        om = rho * rho
+        P = normal_params(1 - om, None, "exact", _NP, system, om=om)
+        r, beta = (np.asarray(v, float).reshape(1, 1, -1) for v in (P.r, P.beta))
+        n = np.array(missing).reshape(1, -1, 1)
+        eps = np.array([1.0, -1.0]).reshape(2, 1, 1)
+        roots = undamped_roots(n, r, beta, eps, rough=1e-12)
+        if len(_TABLES) + len(missing) > _TABLES_MAX:
+            _TABLES.clear()
+        for k, order in enumerate(missing):
+            tab = np.array(roots[:, k], float)
+            tab.flags.writeable = False
+            found[order] = _TABLES[(system, order)] = tab
+    return [found[n] for n in orders]
 
 
 class _Plan:
@@ -376,13 +394,12 @@ class _Plan:
     def __init__(self, system, orders: tuple):
         _lin, coef = edge_equation_linear()
         no = len(orders)
-        rows = [(e, i) for e in range(2) for i in range(no)]  # output row e * no + i
+        rows = [(e, i) for e in range(2) for i in range(no)]  # (sign eps = 1 - 2 e, order i)
         rows.sort(key=lambda ei: orders[ei[1]] % 2 == 0)  # odd orders first (stable)
-        self.perm = np.array([e * no + i for e, i in rows])
+        self.rows = len(rows)
         self.odd = sum(1 for _e, i in rows if orders[i] % 2)
         n = np.array([orders[i] for _e, i in rows])
         eps = np.array([1.0 - 2.0 * e for e, _i in rows])
-        self.n = n
         self.c = (n * _HALF_PI)[:, None]
         odd = (n % 2).astype(float)
         coefs = coef.compiled("numpy", (0, 1))
@@ -407,17 +424,20 @@ class _Plan:
         _check_kernel(self)
         self.order = np.array([i for _e, i in rows])
         self.sign = np.array([e for e, _i in rows])
-        self.table = np.stack([_start_table(system, orders[i])[e] for e, i in rows])
+        tables = _start_tables(system, orders)
+        self.table = np.stack([tables[i][e] for e, i in rows])
 
 
 def _check_kernel(plan) -> None:
     """Derivation guard: ``F, F', F''`` as :func:`_frictionless_block` computes them (``sin
     theta + kf r f(y)``, ``cos theta + kg r beta g(y)``, ``-(sin theta + beta^2 kf r f(y))``)
-    equal :func:`verify.derived.edge_equation_trig` at random points of every row."""
+    equal :func:`verify.derived.edge_equation_trig` at a few points of every row."""
     trig = edge_equation_trig().compiled("numpy", (0, 1, 2))
-    rng = np.random.default_rng(0)
     R, k = plan.kf.shape[0], plan.odd
-    t, y, beta, r = (rng.uniform(0.1, 1.4, (R, 3)) for _ in range(4))
+    grid = np.linspace(0.1, 1.4, 12).reshape(4, 1, 3)
+    t, y, beta, r = (
+        np.broadcast_to(grid[i][:, np.roll(np.arange(3), i)], (R, 3)) for i in range(4)
+    )
     st, ct, sy, cy = np.sin(t), np.cos(t), np.sin(y), np.cos(y)
     f = np.concatenate([cy[:k], sy[k:]])
     g = np.concatenate([sy[:k], cy[k:]])
@@ -428,7 +448,7 @@ def _check_kernel(plan) -> None:
             raise AssertionError("the grid's edge equation differs from the derived one")
 
 
-@lru_cache(maxsize=64)
+@lru_cache(maxsize=16)
 def _plan(system, orders: tuple) -> _Plan:
     return _Plan(system, orders)
 
@@ -460,7 +480,7 @@ _WORK_EDGES = 1 << 14
 
 def _start_values(table, rho, out, tmp) -> None:
     """``out`` (``(rows, len(rho))``) = the rows of ``table`` (values at the nodes of
-    :func:`_start_table`) interpolated at ``rho`` by the cubic through the four nearest nodes."""
+    :func:`_start_tables`) interpolated at ``rho`` by the cubic through the four nearest nodes."""
     K = table.shape[1]
     u = rho * K - 0.5  # the position in units of the node spacing
     j = np.floor(u)
@@ -485,7 +505,7 @@ def _frictionless_theta(orders, P, rho, system, theta) -> None:
     ``rho = sqrt(1 - m)``.  The same equations and convergence test as :func:`undamped_roots`,
     all orders in one pass, in blocks of :data:`_WORK_EDGES` edges in kept work arrays.
 
-    Started from the cached tables of :func:`_start_table` (right to about 1e-8 for the orders
+    Started from the cached tables of :func:`_start_tables` (right to about 1e-8 for the orders
     of a plot, so that one Halley step finishes most points).  That first step, on every point,
     computes to full accuracy only the sines that enter the equation itself (``sin theta`` and
     ``f(y)``: ``cos y`` in the rows of odd orders, ``sin y`` in the even ones); ``cos theta`` and
@@ -494,8 +514,8 @@ def _frictionless_theta(orders, P, rho, system, theta) -> None:
     have not converged go on with every sine computed, compacted, and to the safeguarded
     iteration (:func:`_safeguarded`) if they still have not."""
     plan = _plan(system, tuple(orders))
-    R, N = plan.perm.size, rho.size
-    width = max(64, _WORK_EDGES // R)
+    width = max(64, _WORK_EDGES // plan.rows)
+    N = rho.size
     beta_all = np.ascontiguousarray(P.beta, float)
     r_all = np.ascontiguousarray(P.r, float)
     for j0 in range(0, N, width):
@@ -507,8 +527,8 @@ def _frictionless_theta(orders, P, rho, system, theta) -> None:
 def _frictionless_block(plan, rho, beta, r):
     """:func:`_frictionless_theta` on one block of depths: ``theta`` of the rows of ``plan`` (a
     work array, valid until the next call)."""
-    R, N, k = plan.perm.size, rho.size, plan.odd
-    (th, start, kf, kg, bc, st, y, fy, gy, ct, tmp, q), stop = _WORK.arrays(12, (R, N))
+    N, k = rho.size, plan.odd
+    (th, start, kf, kg, bc, st, y, fy, gy, ct, tmp, q), stop = _WORK.arrays(12, (plan.rows, N))
     _start_values(plan.table, rho, th, tmp)
     np.clip(th, -1.57, 1.57, out=th)  # inside the window
     np.copyto(start, th)
@@ -555,9 +575,10 @@ def _frictionless_block(plan, rho, beta, r):
         np.subtract(1.0, tmp, out=tmp)
         fy /= tmp  # the step
         np.subtract(th, fy, out=y)  # the new iterate
-        # Halley's error K step^3 (as in undamped_roots), and what the identity costs: each
-        # partner is right to 1.1e-16/|partner|, so F' to 2.2e-16/min(cos theta, |partner|)
-        # (r, beta <= 1), the step to that over |F'|, relative: below 2e-18 where it passes
+        # Halley's error K step^3 (as in undamped_roots), and what the identity costs: the
+        # square of each partner is right to 2.2e-16 (that of f to half an ulp), so the partner
+        # p to 2.2e-16 (1/p + p), F' to 4.4e-16 (1/min(cos theta, |p|) + 1) (r, beta <= 1), and
+        # the step to that over |F'|, relative: below 7e-18 where 128 |step| <= min |F'|
         np.abs(fy, out=fy)  # |step|
         np.abs(kg, out=kg)  # |F'|
         np.abs(gy, out=gy)
@@ -804,6 +825,31 @@ def _one_minus_decimal(x: float) -> float:
     return (scale - int(frac)) / scale
 
 
+#: the decimal places :func:`_one_minus_decimals` tries (``10^15 < 2^53``: every integer below is a
+#: double)
+_PLACES = np.arange(1, 16, dtype=float)[:, None]
+_SCALES = 10.0**_PLACES
+
+
+def _one_minus_decimals(x) -> np.ndarray:
+    """:func:`_one_minus_decimal` of every element of ``x`` (doubles ``1/2 <= x < 1``), vectorised:
+    the shortest decimal of ``x`` with at most 15 places is ``d = 1 - E/10^L`` for the least
+    ``L`` at which ``E = rint((1 - x) 10^L)`` (``1 - x`` is exact) gives ``fl(d) = x`` (both
+    integers are exact doubles, so ``fl(d)`` and ``1 - d = E/10^L`` are each rounded once); the
+    nearest ``L``-place decimal to ``x`` is the one ``repr`` takes.  Depths whose shortest decimal
+    is longer go through :func:`_one_minus_decimal`."""
+    x = np.asarray(x, float)
+    E = np.rint((1.0 - x) * _SCALES)
+    hit = (_SCALES - E) / _SCALES == x
+    first = np.argmax(hit, axis=0)
+    cols = np.arange(x.size)
+    out = E[first, cols] / _SCALES[first, 0]
+    miss = ~hit[first, cols]
+    for j in np.nonzero(miss)[0]:
+        out[j] = _one_minus_decimal(float(x[j]))
+    return out
+
+
 class _Depths:
     """The depths of a grid: ``m`` and ``om = 1 - m`` as float64 arrays, ``om`` computed from the
     exact depth (``1 - float(m)`` loses every digit of ``1 - m`` that ``float(m)`` rounded off,
@@ -830,7 +876,7 @@ class _Depths:
             near = np.nonzero(self.om < DECIMAL_OM)[0]
             if near.size:
                 # 1 - decimal(x) exactly, rounded once (:func:`_one_minus_decimal`)
-                self.om[near] = [_one_minus_decimal(x) for x in self.m[near].tolist()]
+                self.om[near] = _one_minus_decimals(self.m[near])
         self.size = self.m.size
         self.double = (self.om >= OM_MIN) & (self.m >= M_MIN)
 
@@ -1160,14 +1206,12 @@ def _fill_normal(out, orders, ms, P, damped: bool, *, system=None, om=None) -> n
     P = NormalParams(
         *(np.asarray(getattr(P, f.name), float) * np.ones(ms.shape) for f in fields(NormalParams))
     )
+    if not damped and om is not None and ms.size >= _TABLE_MIN:
+        _fill_frictionless(out, orders_arr, P, om, system or _paper_system())
+        return doubt
     if not damped:
         n = orders_arr[:, None]
-        if om is not None and ms.size >= _TABLE_MIN:
-            theta = np.empty((len(orders), 2, ms.size))
-            _frictionless_theta(orders, P, np.sqrt(om), system or _paper_system(), theta)
-            t1, t2 = theta[:, 0], theta[:, 1]
-        else:
-            t1, t2 = normal_edges(n, P)
+        t1, t2 = normal_edges(n, P)
         near = near_one_forms()
         t1 = _polish_near_one(t1, orders_arr, P, near[0])
         t2 = _polish_near_one(t2, orders_arr, P, near[1])
@@ -1212,6 +1256,33 @@ def _fill_normal(out, orders, ms, P, damped: bool, *, system=None, om=None) -> n
                 lo_doubt[k, cols] = unsure
         doubt[rows] = top_doubt | lo_doubt | hi_doubt
     return doubt
+
+
+def _fill_frictionless(out, n, P, om, system) -> None:
+    """:func:`_fill_normal` without friction for a grid of at least :data:`_TABLE_MIN` depths:
+    the roots of every order and sign from :func:`_frictionless_theta` straight into ``out``,
+    the depths near 1 polished (:func:`_polish_near_one`), the order-1 edge with ``x -> 0``
+    solved in ``x`` (:func:`_order1_lower`), then ``T/T0`` and the lower and upper edge, in
+    place."""
+    _frictionless_theta(n.tolist(), P, np.sqrt(om), system, out)
+    if (P.bm < NEAR_ONE).any():
+        for e, form in enumerate(near_one_forms()[:2]):
+            out[:, e] = _polish_near_one(out[:, e], n, P, form)
+    xs = []
+    for i in np.nonzero(n == 1)[0]:  # the eps = +1 root is the one with x -> 0
+        x = _HALF_PI + out[i, 0]
+        cols = np.nonzero((x < ORDER1_X) | (P.bm < NEAR_ONE))[0]
+        if cols.size:
+            xs.append((i, cols, _order1_lower(P, cols, math.pi, 1, x_theta=x[cols])))
+    # T/T0 = (n/2 + theta/pi)/w, the operations of _fill_normal in place
+    out /= math.pi
+    out += (n / 2.0)[:, None, None]
+    out /= P.w
+    for i, cols, x in xs:
+        out[i, 0, cols] = x / (math.pi * P.w[cols])
+    lower = np.minimum(out[:, 0], out[:, 1])
+    np.maximum(out[:, 0], out[:, 1], out=out[:, 1])
+    out[:, 0] = lower
 
 
 def _noise(form, v, args, scale):
