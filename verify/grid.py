@@ -349,8 +349,10 @@ def _cubic(xb, rows, x):
 # ---------------------------------------------------------------------------------------------
 # the frictionless grid: start tables per order, one vectorised pass over all orders
 
-#: the start tables hold the roots at this many depths, uniform in ``rho = sqrt(1 - m)``
-START_NODES = 1024
+#: the start tables hold the roots at this many depths, uniform in ``rho = sqrt(1 - m)`` (for
+#: orders up to about 10 the cubic through them is then right to ~1e-8 or better, away from the
+#: order-1 edge with ``x -> 0``)
+START_NODES = 2048
 
 
 #: the start tables computed so far, ``(system, n) -> (2, K)`` (read-only; cleared when it holds
@@ -424,6 +426,8 @@ class _Plan:
         _check_kernel(self)
         self.order = np.array([i for _e, i in rows])
         self.sign = np.array([e for e, _i in rows])
+        # the rows of the order-1 edge that goes to x = pi/2 + theta -> 0 (solved in x after)
+        self.x_rows = [k for k, (e, i) in enumerate(rows) if orders[i] == 1 and e == 0]
         tables = _start_tables(system, orders)
         self.table = np.stack([tables[i][e] for e, i in rows])
 
@@ -594,6 +598,8 @@ def _frictionless_block(plan, rho, beta, r):
         gy *= fy
         gy *= tmp
         stop &= gy <= 7e-18
+        for row in plan.x_rows:  # done where _fill_frictionless solves it again in x from here
+            stop[row] |= y[row] < 0.5 * ORDER1_X - _HALF_PI
         np.abs(y, out=tmp)
         out = tmp >= _HALF_PI
         if out.any():  # a step out of the window goes half way to the window's end
@@ -1261,13 +1267,13 @@ def _fill_normal(out, orders, ms, P, damped: bool, *, system=None, om=None) -> n
 def _fill_frictionless(out, n, P, om, system) -> None:
     """:func:`_fill_normal` without friction for a grid of at least :data:`_TABLE_MIN` depths:
     the roots of every order and sign from :func:`_frictionless_theta` straight into ``out``,
-    the depths near 1 polished (:func:`_polish_near_one`), the order-1 edge with ``x -> 0``
+    the depths near 1 polished (:func:`_polish_roots`), the order-1 edge with ``x -> 0``
     solved in ``x`` (:func:`_order1_lower`), then ``T/T0`` and the lower and upper edge, in
     place."""
     _frictionless_theta(n.tolist(), P, np.sqrt(om), system, out)
-    if (P.bm < NEAR_ONE).any():
-        for e, form in enumerate(near_one_forms()[:2]):
-            out[:, e] = _polish_near_one(out[:, e], n, P, form)
+    near = np.nonzero(P.bm < NEAR_ONE)[0]
+    if near.size:
+        _polish_roots(out, n, P, near)
     xs = []
     for i in np.nonzero(n == 1)[0]:  # the eps = +1 root is the one with x -> 0
         x = _HALF_PI + out[i, 0]
@@ -1283,6 +1289,23 @@ def _fill_frictionless(out, n, P, om, system) -> None:
     lower = np.minimum(out[:, 0], out[:, 1])
     np.maximum(out[:, 0], out[:, 1], out=out[:, 1])
     out[:, 0] = lower
+
+
+def _polish_roots(theta, n, P, cols) -> None:
+    """:func:`_polish_near_one` for both signs of :func:`_fill_frictionless` (``theta``: orders x
+    signs x depths), the same two Newton steps on the forms for ``m -> 1``, on the depths
+    ``cols`` alone and in place."""
+    r = P.r[cols]
+    args = ((n * _HALF_PI)[:, None], r, P.u[cols] / (1 + r), P.bm[cols])
+    with np.errstate(invalid="ignore", divide="ignore"):
+        for e, form in enumerate(near_one_forms()[:2]):
+            fn = form.compiled("numpy", (0, 1))
+            t = theta[:, e, cols]
+            for _ in range(2):
+                f, d = fn(t, *args)
+                step = np.asarray(f, float) / np.asarray(d, float)
+                t = t - np.where(np.isfinite(step), step, 0.0)
+            theta[:, e, cols] = t
 
 
 def _noise(form, v, args, scale):
