@@ -16,7 +16,10 @@ Method (all orders and depths at once):
 
 * no friction: safeguarded Halley iteration on ``theta`` for each edge equation, bracket
   ``(-pi/2, pi/2)`` (window theorem: one simple root each), started at the fixed point of
-  ``theta = asin(-k r f(beta c))``;
+  ``theta = asin(-k r f(beta c))``; a grid of at least 256 depths starts every edge from a
+  cached table of roots per order (1024 depths uniform in ``sqrt(1 - m)``, the cubic through
+  the four nearest), and takes the first Halley step of every order at once in work arrays kept
+  between calls (:func:`_frictionless_theta`), so that it allocates almost nothing per call;
 * friction, normal form: the undamped-form roots (same ``r``, ``beta``) bracket the interval
   (``D <= D0`` and ``D0 < 0`` outside them); the maximiser of ``D`` is the root of ``D'`` (Newton
   safeguarded by bisection, from the secant start, where ``D'`` changes sign); where ``D`` is
@@ -39,8 +42,10 @@ from __future__ import annotations
 
 import decimal
 import math
+import threading
 from dataclasses import fields
 from fractions import Fraction
+from functools import lru_cache
 
 import mpmath
 import numpy as np
@@ -81,6 +86,12 @@ __all__ = [
 
 _HALF_PI = math.pi / 2
 _NP = backend("numpy")
+
+
+def _paper_system():
+    from analytic.system import PAPER
+
+    return PAPER
 
 
 def _parity(n: int) -> str:
@@ -335,6 +346,307 @@ def _cubic(xb, rows, x):
     return out
 
 
+# ---------------------------------------------------------------------------------------------
+# the frictionless grid: start tables per order, one vectorised pass over all orders
+
+#: the start tables hold the roots at this many depths, uniform in ``rho = sqrt(1 - m)`` (for
+#: orders up to about 10 the cubic through them is then right to ~1e-8 or better, away from the
+#: order-1 edge with ``x -> 0``)
+START_NODES = 2048
+
+
+#: the start tables computed so far, ``(system, n) -> (2, K)`` (read-only; cleared when it holds
+#: :data:`_TABLES_MAX`)
+_TABLES: dict = {}
+_TABLES_MAX = 512
+
+
+def _start_tables(system, orders) -> list:
+    """For each order ``n`` of ``orders``: the roots ``theta`` of both edge equations (rows ``eps
+    = +1, -1``) at the depths ``m = 1 - rho^2``, ``rho = (k + 1/2)/K`` (``K =``
+    :data:`START_NODES`), shape ``(2, K)``, read-only.  Starting values only
+    (:func:`_frictionless_theta` iterates every point to convergence from them), so a table is a
+    function of ``system`` and ``n`` alone, computed once (the orders not yet seen in one
+    vectorised solve, to 1e-12): it cannot change a result.  ``rho`` makes the roots smooth up
+    to ``m = 1``, where the parameters go like ``sqrt(1 - m)``."""
+    found = {n: _TABLES.get((system, n)) for n in set(orders)}
+    missing = sorted(n for n, tab in found.items() if tab is None)
+    if missing:
+        rho = (np.arange(START_NODES) + 0.5) / START_NODES
+        om = rho * rho
+        P = normal_params(1 - om, None, "exact", _NP, system, om=om)
+        r, beta = (np.asarray(v, float).reshape(1, 1, -1) for v in (P.r, P.beta))
+        n = np.array(missing).reshape(1, -1, 1)
+        eps = np.array([1.0, -1.0]).reshape(2, 1, 1)
+        roots = undamped_roots(n, r, beta, eps, rough=1e-12)
+        if len(_TABLES) + len(missing) > _TABLES_MAX:
+            _TABLES.clear()
+        for k, order in enumerate(missing):
+            tab = np.array(roots[:, k], float)
+            tab.flags.writeable = False
+            found[order] = _TABLES[(system, order)] = tab
+    return [found[n] for n in orders]
+
+
+class _Plan:
+    """What :func:`_frictionless_theta` needs of ``orders`` besides the depths: the rows (one per
+    order and sign ``eps``, the odd orders first), ``c = n pi/2`` and the coefficients per unit
+    ``r`` of :func:`verify.derived.edge_equation_linear` per row, and the stacked start tables."""
+
+    def __init__(self, system, orders: tuple):
+        _lin, coef = edge_equation_linear()
+        no = len(orders)
+        rows = [(e, i) for e in range(2) for i in range(no)]  # (sign eps = 1 - 2 e, order i)
+        rows.sort(key=lambda ei: orders[ei[1]] % 2 == 0)  # odd orders first (stable)
+        self.rows = len(rows)
+        self.odd = sum(1 for _e, i in rows if orders[i] % 2)
+        n = np.array([orders[i] for _e, i in rows])
+        eps = np.array([1.0 - 2.0 * e for e, _i in rows])
+        self.c = (n * _HALF_PI)[:, None]
+        odd = (n % 2).astype(float)
+        coefs = coef.compiled("numpy", (0, 1))
+        a, b = (np.asarray(v, float) * np.ones(n.shape) for v in coefs(_sgn(n), eps, odd, 1.0))
+        a2, b2 = (np.asarray(v, float) * np.ones(n.shape) for v in coefs(_sgn(n), eps, odd, 2.0))
+        # the structure the kernel relies on (derivation guard): linear in r, cos(y) alone in the
+        # odd rows, sin(y) alone in the even ones
+        k = self.odd
+        if not (
+            np.array_equal(a2, 2 * a)
+            and np.array_equal(b2, 2 * b)
+            and not b[:k].any()
+            and not a[k:].any()
+            and np.all(np.abs(a[:k]) == 1)
+            and np.all(np.abs(b[k:]) == 1)
+        ):  # pragma: no cover - derivation guard
+            raise AssertionError("edge equation coefficients not of the form the grid assumes")
+        self.a, self.b = a[:, None], b[:, None]
+        # per unit r: the coefficient of f(y) (cos y in odd rows, sin y in even ones) in F, and
+        # that of the other function of y in F'/beta
+        self.kf, self.kg = (a + b)[:, None], (b - a)[:, None]
+        _check_kernel(self)
+        self.order = np.array([i for _e, i in rows])
+        self.sign = np.array([e for e, _i in rows])
+        # the rows of the order-1 edge that goes to x = pi/2 + theta -> 0 (solved in x after)
+        self.x_rows = [k for k, (e, i) in enumerate(rows) if orders[i] == 1 and e == 0]
+        tables = _start_tables(system, orders)
+        self.table = np.stack([tables[i][e] for e, i in rows])
+
+
+def _check_kernel(plan) -> None:
+    """Derivation guard: ``F, F', F''`` as :func:`_frictionless_block` computes them (``sin
+    theta + kf r f(y)``, ``cos theta + kg r beta g(y)``, ``-(sin theta + beta^2 kf r f(y))``)
+    equal :func:`verify.derived.edge_equation_trig` at a few points of every row."""
+    trig = edge_equation_trig().compiled("numpy", (0, 1, 2))
+    R, k = plan.kf.shape[0], plan.odd
+    grid = np.linspace(0.1, 1.4, 12).reshape(4, 1, 3)
+    t, y, beta, r = (
+        np.broadcast_to(grid[i][:, np.roll(np.arange(3), i)], (R, 3)) for i in range(4)
+    )
+    st, ct, sy, cy = np.sin(t), np.cos(t), np.sin(y), np.cos(y)
+    f = np.concatenate([cy[:k], sy[k:]])
+    g = np.concatenate([sy[:k], cy[k:]])
+    want = trig(st, ct, sy, cy, beta, plan.a * r, plan.b * r)
+    ours = (st + plan.kf * r * f, ct + plan.kg * r * beta * g, -(st + beta**2 * plan.kf * r * f))
+    for w, o in zip(want, ours, strict=True):
+        if not np.allclose(w, o, rtol=1e-13, atol=1e-13):  # pragma: no cover - derivation guard
+            raise AssertionError("the grid's edge equation differs from the derived one")
+
+
+@lru_cache(maxsize=16)
+def _plan(system, orders: tuple) -> _Plan:
+    return _Plan(system, orders)
+
+
+class _Workspace(threading.local):
+    """The work arrays of :func:`_frictionless_theta`, kept between calls (one set per thread):
+    a fresh array costs a page fault per 4 KiB on every call, about as much as the arithmetic on
+    it.  At most :data:`_WORK_EDGES` edges each (or 64 depths of every row)."""
+
+    def __init__(self):
+        self.floats: list = []
+        self.flags = np.empty(0, bool)
+
+    def arrays(self, count: int, shape: tuple):
+        size = shape[0] * shape[1]
+        if len(self.floats) < count or self.floats[0].size < size:
+            size_all = max(size, self.floats[0].size if self.floats else 0)
+            self.floats = [np.empty(size_all) for _ in range(max(count, len(self.floats)))]
+            self.flags = np.empty(size_all, bool)
+        views = [b[:size].reshape(shape) for b in self.floats[:count]]
+        return views, self.flags[:size].reshape(shape)
+
+
+_WORK = _Workspace()
+
+#: :func:`_frictionless_theta` works on blocks of depths of at most this many edges
+_WORK_EDGES = 1 << 14
+
+
+def _start_values(table, rho, out, tmp) -> None:
+    """``out`` (``(rows, len(rho))``) = the rows of ``table`` (values at the nodes of
+    :func:`_start_tables`) interpolated at ``rho`` by the cubic through the four nearest nodes."""
+    K = table.shape[1]
+    u = rho * K - 0.5  # the position in units of the node spacing
+    j = np.floor(u)
+    np.clip(j - 1, 0, K - 4, out=j)
+    v = u - j
+    v1, v2, v3 = v - 1, v - 2, v - 3
+    v01, v23 = v * v1, v2 * v3
+    j = j.astype(np.intp)
+    # the Lagrange weights of the nodes j .. j+3 (uniform spacing)
+    np.take(table, j, axis=1, out=out, mode="clip")  # (j is in range: no checks)
+    out *= v1 * v23 * (-1 / 6)
+    for i, w in ((1, v * v23 * 0.5), (2, v01 * v3 * -0.5), (3, v01 * v2 * (1 / 6))):
+        np.take(table, j + i, axis=1, out=tmp, mode="clip")
+        tmp *= w
+        out += tmp
+
+
+def _frictionless_theta(orders, P, rho, system, theta) -> None:
+    """Both undamped edge roots of every order at every depth: ``theta[i, 0]`` the root of the
+    edge equation ``eps = +1`` of ``orders[i]``, ``theta[i, 1]`` that of ``eps = -1`` (``theta``:
+    ``(len(orders), 2, N)``, filled here), for the parameters ``P`` (arrays of ``N`` depths),
+    ``rho = sqrt(1 - m)``.  The same equations and convergence test as :func:`undamped_roots`,
+    all orders in one pass, in blocks of :data:`_WORK_EDGES` edges in kept work arrays.
+
+    Started from the cached tables of :func:`_start_tables` (right to about 1e-8 for the orders
+    of a plot, so that one Halley step finishes most points).  That first step, on every point,
+    computes to full accuracy only the sines that enter the equation itself (``sin theta`` and
+    ``f(y)``: ``cos y`` in the rows of odd orders, ``sin y`` in the even ones); ``cos theta`` and
+    the other function of ``y``, which enter only the derivative, come from the Pythagorean
+    identity, and the convergence test adds what their error costs the step.  The points that
+    have not converged go on with every sine computed, compacted, and to the safeguarded
+    iteration (:func:`_safeguarded`) if they still have not."""
+    plan = _plan(system, tuple(orders))
+    width = max(64, _WORK_EDGES // plan.rows)
+    N = rho.size
+    beta_all = np.ascontiguousarray(P.beta, float)
+    r_all = np.ascontiguousarray(P.r, float)
+    for j0 in range(0, N, width):
+        j1 = min(N, j0 + width)
+        block = _frictionless_block(plan, rho[j0:j1], beta_all[j0:j1], r_all[j0:j1])
+        theta[plan.order, plan.sign, j0:j1] = block
+
+
+def _frictionless_block(plan, rho, beta, r):
+    """:func:`_frictionless_theta` on one block of depths: ``theta`` of the rows of ``plan`` (a
+    work array, valid until the next call)."""
+    N, k = rho.size, plan.odd
+    (th, start, kf, kg, bc, st, y, fy, gy, ct, tmp, q), stop = _WORK.arrays(12, (plan.rows, N))
+    _start_values(plan.table, rho, th, tmp)
+    np.clip(th, -1.57, 1.57, out=th)  # inside the window
+    np.copyto(start, th)
+    np.multiply(plan.kf, r, out=kf)  # the coefficient of f(y) in F
+    np.multiply(plan.kg, r * beta, out=kg)  # the coefficient of the other function in F'
+    np.multiply(plan.c, beta, out=bc)
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+        np.sin(th, out=st)
+        np.multiply(th, beta, out=y)
+        y += bc
+        np.cos(y[:k], out=fy[:k])
+        np.sin(y[k:], out=fy[k:])
+        # cos theta >= 0 in the window; the other function of y with the sign of its quadrant:
+        # sin y >= 0 where floor(y/pi) is even, cos y >= 0 where floor(y/pi + 1/2) is (y >= 0)
+        np.subtract(1.0, st, out=ct)
+        np.add(1.0, st, out=tmp)
+        ct *= tmp
+        np.sqrt(ct, out=ct)
+        np.multiply(y, 1 / math.pi, out=q)
+        q[k:] += 0.5
+        np.floor(q, out=q)
+        np.multiply(q, 0.5, out=tmp)
+        np.floor(tmp, out=tmp)
+        tmp *= 2.0
+        q -= tmp
+        np.subtract(0.5, q, out=q)  # > 0 where the function is >= 0
+        np.subtract(1.0, fy, out=gy)
+        np.add(1.0, fy, out=tmp)
+        gy *= tmp
+        np.sqrt(gy, out=gy)
+        np.copysign(gy, q, out=gy)
+        # F, F', F'' (the form of verify.derived.edge_equation_trig, checked by _Plan)
+        np.multiply(kf, fy, out=kf)  # A cos y + B sin y
+        np.multiply(kg, gy, out=kg)  # beta (B cos y - A sin y)
+        np.add(st, kf, out=fy)  # F
+        kg += ct  # F'
+        kf *= beta * beta
+        kf += st  # -F''
+        # Halley: step = (F/F') / (1 - (F/F') F''/(2 F'))
+        fy /= kg  # F/F'
+        kf /= kg
+        kf *= -0.5  # h = F''/(2 F')
+        np.multiply(fy, kf, out=tmp)
+        np.subtract(1.0, tmp, out=tmp)
+        fy /= tmp  # the step
+        np.subtract(th, fy, out=y)  # the new iterate
+        # Halley's error K step^3 (as in undamped_roots), and what the identity costs: the
+        # square of each partner is right to 2.2e-16 (that of f to half an ulp), so the partner
+        # p to 2.2e-16 (1/p + p), F' to 4.4e-16 (1/min(cos theta, |p|) + 1) (r, beta <= 1), and
+        # the step to that over |F'|, relative: below 7e-18 where 128 |step| <= min |F'|
+        np.abs(fy, out=fy)  # |step|
+        np.abs(kg, out=kg)  # |F'|
+        np.abs(gy, out=gy)
+        np.minimum(gy, ct, out=gy)
+        gy *= kg
+        np.multiply(fy, 128.0, out=tmp)
+        np.less_equal(tmp, gy, out=stop)
+        np.multiply(kg, 3.0, out=tmp)
+        np.reciprocal(tmp, out=tmp)
+        kf *= kf
+        tmp += kf  # K
+        np.multiply(fy, fy, out=gy)
+        gy *= fy
+        gy *= tmp
+        stop &= gy <= 7e-18
+        for row in plan.x_rows:  # done where _fill_frictionless solves it again in x from here
+            stop[row] |= y[row] < 0.5 * ORDER1_X - _HALF_PI
+        np.abs(y, out=tmp)
+        out = tmp >= _HALF_PI
+        if out.any():  # a step out of the window goes half way to the window's end
+            y[out] = 0.5 * (th[out] + np.copysign(_HALF_PI, y[out]))
+            stop &= ~out
+    flat = y.ravel()
+    idx = np.flatnonzero(~stop)
+    if idx.size:
+        _finish(plan, flat, idx, start.ravel()[idx], N, beta, r)
+    return y
+
+
+def _finish(plan, flat, idx, start, N: int, beta, r) -> None:
+    """The points ``idx`` of a block (``flat``: its iterates, rows of ``plan`` times ``N``
+    depths) that the first step did not finish: Halley steps with every sine computed, the
+    points dropped as they converge, and the safeguarded iteration from ``start`` for those that
+    do not within :data:`_FAST_STEPS` steps."""
+    trig = edge_equation_trig().compiled("numpy", (0, 1, 2))
+    row, col = np.divmod(idx, N)
+    bb, rr = beta[col], r[col]
+    A, B = plan.a[row, 0] * rr, plan.b[row, 0] * rr
+    cc = plan.c[row, 0]
+    bc = cc * bb
+    pos = np.arange(idx.size)
+    t = flat[idx]
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+        for _ in range(_FAST_STEPS - 1):
+            b = bb[pos]
+            y = bc[pos] + b * t
+            f, d1, d2 = trig(np.sin(t), np.cos(t), np.sin(y), np.cos(y), b, A[pos], B[pos])
+            step = f / d1
+            h = 0.5 * d2 / d1
+            step /= 1.0 - step * h
+            tn = t - step
+            a = np.abs(step)
+            ok = (1.0 / (3.0 * np.abs(d1)) + h * h) * (a * a * a) <= 7e-18
+            out = np.abs(tn) >= _HALF_PI
+            if out.any():
+                tn = np.where(out, 0.5 * (t + np.copysign(_HALF_PI, tn)), tn)
+                ok &= ~out
+            flat[idx[pos]] = tn
+            pos, t = pos[~ok], tn[~ok]
+            if not pos.size:
+                return
+    flat[idx[pos]] = _safeguarded(start[pos], cc[pos], bb[pos], A[pos], B[pos])
+
+
 def _bisect_newton_compact(
     fn,
     args,
@@ -519,6 +831,31 @@ def _one_minus_decimal(x: float) -> float:
     return (scale - int(frac)) / scale
 
 
+#: the decimal places :func:`_one_minus_decimals` tries (``10^15 < 2^53``: every integer below is a
+#: double)
+_PLACES = np.arange(1, 16, dtype=float)[:, None]
+_SCALES = 10.0**_PLACES
+
+
+def _one_minus_decimals(x) -> np.ndarray:
+    """:func:`_one_minus_decimal` of every element of ``x`` (doubles ``1/2 <= x < 1``), vectorised:
+    the shortest decimal of ``x`` with at most 15 places is ``d = 1 - E/10^L`` for the least
+    ``L`` at which ``E = rint((1 - x) 10^L)`` (``1 - x`` is exact) gives ``fl(d) = x`` (both
+    integers are exact doubles, so ``fl(d)`` and ``1 - d = E/10^L`` are each rounded once); the
+    nearest ``L``-place decimal to ``x`` is the one ``repr`` takes.  Depths whose shortest decimal
+    is longer go through :func:`_one_minus_decimal`."""
+    x = np.asarray(x, float)
+    E = np.rint((1.0 - x) * _SCALES)
+    hit = (_SCALES - E) / _SCALES == x
+    first = np.argmax(hit, axis=0)
+    cols = np.arange(x.size)
+    out = E[first, cols] / _SCALES[first, 0]
+    miss = ~hit[first, cols]
+    for j in np.nonzero(miss)[0]:
+        out[j] = _one_minus_decimal(float(x[j]))
+    return out
+
+
 class _Depths:
     """The depths of a grid: ``m`` and ``om = 1 - m`` as float64 arrays, ``om`` computed from the
     exact depth (``1 - float(m)`` loses every digit of ``1 - m`` that ``float(m)`` rounded off,
@@ -545,7 +882,7 @@ class _Depths:
             near = np.nonzero(self.om < DECIMAL_OM)[0]
             if near.size:
                 # 1 - decimal(x) exactly, rounded once (:func:`_one_minus_decimal`)
-                self.om[near] = [_one_minus_decimal(x) for x in self.m[near].tolist()]
+                self.om[near] = _one_minus_decimals(self.m[near])
         self.size = self.m.size
         self.double = (self.om >= OM_MIN) & (self.m >= M_MIN)
 
@@ -617,7 +954,9 @@ def boundary_grid(orders, m, *, Q=None, damping="exact", system="pendulum", duty
         for cols in _blocks(np.nonzero(served)[0], chunk):
             P = normal_params(dep.m[cols], Qf, damping, _NP, sysv, om=dep.om[cols])
             part = np.full((len(orders), 2, cols.size), np.nan)
-            doubt[:, cols] = _fill_normal(part, orders, dep.m[cols], P, damped=Qx is not None)
+            doubt[:, cols] = _fill_normal(
+                part, orders, dep.m[cols], P, damped=Qx is not None, system=sysv, om=dep.om[cols]
+            )
             out[:, :, cols] = part
         doubt[:, ~served] = True
     for i, j in zip(*np.nonzero(doubt), strict=True):
@@ -721,7 +1060,7 @@ def _double_grid(orders, dep: _Depths, cols, Qx, damping):
     if Qx is None or damping == "paper":
         Qf = None if Qx is None else float(Qx)
         P = normal_params(ms, Qf, damping, _NP, om=om)
-        doubt[:] = _fill_normal(out, orders, ms, P, damped=Qx is not None)
+        doubt[:] = _fill_normal(out, orders, ms, P, damped=Qx is not None, om=om)
         return out, doubt
     Qexact = Fraction(Qx) if not isinstance(Qx, Fraction) else Qx
     h1, h2 = _halves(dep, cols, Qexact)
@@ -863,14 +1202,19 @@ def _polish_near_one(theta, n, P, form):
     return theta
 
 
-def _fill_normal(out, orders, ms, P, damped: bool) -> np.ndarray:
+def _fill_normal(out, orders, ms, P, damped: bool, *, system=None, om=None) -> np.ndarray:
     """Fill ``out`` (orders x 2 x depths) from the normal form; returns the mask (orders x
-    depths) of entries whose error is not bounded by :data:`ERROR_BOUND` (to be escalated)."""
+    depths) of entries whose error is not bounded by :data:`ERROR_BOUND` (to be escalated).
+    ``system`` (default the paper's) and ``om = 1 - m``: for the start tables of the frictionless
+    grid (:func:`_frictionless_theta`, grids of at least :data:`_TABLE_MIN` depths)."""
     orders_arr = np.array(orders)
     doubt = np.zeros((len(orders), ms.size), bool)
     P = NormalParams(
         *(np.asarray(getattr(P, f.name), float) * np.ones(ms.shape) for f in fields(NormalParams))
     )
+    if not damped and om is not None and ms.size >= _TABLE_MIN:
+        _fill_frictionless(out, orders_arr, P, om, system or _paper_system())
+        return doubt
     if not damped:
         n = orders_arr[:, None]
         t1, t2 = normal_edges(n, P)
@@ -918,6 +1262,60 @@ def _fill_normal(out, orders, ms, P, damped: bool) -> np.ndarray:
                 lo_doubt[k, cols] = unsure
         doubt[rows] = top_doubt | lo_doubt | hi_doubt
     return doubt
+
+
+def _fill_frictionless(out, n, P, om, system) -> None:
+    """:func:`_fill_normal` without friction for a grid of at least :data:`_TABLE_MIN` depths:
+    the roots of every order and sign from :func:`_frictionless_theta` straight into ``out``,
+    the depths near 1 polished (:func:`_polish_roots`), the order-1 edge with ``x -> 0``
+    solved in ``x`` (:func:`_order1_lower`), then ``T/T0`` and the lower and upper edge, in
+    place."""
+    _frictionless_theta(n.tolist(), P, np.sqrt(om), system, out)
+    near = np.nonzero(P.bm < NEAR_ONE)[0]
+    if near.size:
+        _polish_roots(out, n, P, near)
+    xs = []
+    for i in np.nonzero(n == 1)[0]:  # the eps = +1 root is the one with x -> 0
+        x = _HALF_PI + out[i, 0]
+        cols = np.nonzero((x < ORDER1_X) | (P.bm < NEAR_ONE))[0]
+        if cols.size:
+            xs.append((i, cols, _order1_lower(P, cols, math.pi, 1, x_theta=x[cols])))
+    # T/T0 = (n/2 + theta/pi)/w, the operations of _fill_normal in place
+    out /= math.pi
+    out += (n / 2.0)[:, None, None]
+    out /= P.w
+    for i, cols, x in xs:
+        out[i, 0, cols] = x / (math.pi * P.w[cols])
+    lower = np.minimum(out[:, 0], out[:, 1])
+    np.maximum(out[:, 0], out[:, 1], out=out[:, 1])
+    out[:, 0] = lower
+
+
+def _polish_roots(theta, n, P, cols) -> None:
+    """:func:`_polish_near_one` for both signs of :func:`_fill_frictionless` (``theta``: orders x
+    signs x depths), Newton steps on the forms for ``m -> 1`` at the depths ``cols`` alone, in
+    place.  The roots come right to ~1e-16/bm; Newton's error after a step ``s`` is ``C s^2``
+    with ``C = |F''/(2 F')|``, which grows like ``1/bm``: below 1e-20 where ``|s| <= 1e-12``
+    and ``bm >= 1e-4``, and a second step is taken at the other depths (as
+    :func:`_polish_near_one` takes everywhere)."""
+    r = P.r[cols]
+    args = ((n * _HALF_PI)[:, None], r, P.u[cols] / (1 + r), P.bm[cols])
+    small = args[3] < 1e-4
+    with np.errstate(invalid="ignore", divide="ignore"):
+        for e, form in enumerate(near_one_forms()[:2]):
+            fn = form.compiled("numpy", (0, 1))
+            t = theta[:, e, cols]
+            f, d = fn(t, *args)
+            step = np.asarray(f, float) / np.asarray(d, float)
+            step = np.where(np.isfinite(step), step, 0.0)
+            t -= step
+            again = np.nonzero(small | (np.abs(step) > 1e-12).any(axis=0))[0]
+            if again.size:
+                sub = (args[0], *(a[again] for a in args[1:]))
+                f, d = fn(t[:, again], *sub)
+                step = np.asarray(f, float) / np.asarray(d, float)
+                t[:, again] -= np.where(np.isfinite(step), step, 0.0)
+            theta[:, e, cols] = t
 
 
 def _noise(form, v, args, scale):
