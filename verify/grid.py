@@ -41,6 +41,7 @@ import decimal
 import math
 from dataclasses import fields
 from fractions import Fraction
+from functools import cache
 
 import mpmath
 import numpy as np
@@ -53,6 +54,7 @@ from .derived import (
     near_one_forms,
     order1_forms,
     term_sizes,
+    with_term_sizes,
 )
 from .float_roots import (
     DOUBT,
@@ -335,137 +337,223 @@ def _cubic(xb, rows, x):
     return out
 
 
-def _bisect_newton_compact(
-    fn,
-    args,
-    lo,
-    hi,
-    x0,
-    increasing: bool,
-    *,
-    scale=None,
-    halley=False,
-    rtol=4e-16,
-    iterations=100,
-    first=None,
-):
-    """Safeguarded Newton (``halley=True``: Halley, ``fn`` also giving ``f''``) for ``fn(x, *args)
-    -> (f, df[, d2f])`` on arrays, one root per point in ``[lo, hi]`` with a sign change
-    (``f(lo) < 0 < f(hi)`` if ``increasing`` else the reverse; ``increasing`` may be an array of
-    ``+-1``, per point): everything broadcast to one shape,
-    the bracket shrunk with every sign seen, a step that leaves it replaced by bisection, and each
-    point dropped from the iteration once it has converged, so that the few slow points do not keep
-    the whole array iterating.  A point has converged when its last step or its bracket is below
-    ``rtol`` of ``scale`` (the size that sets the relative error: ``c + theta``, where ``T`` is
-    proportional to it; ``|x|`` when ``scale`` is None), or when ``f`` is exactly 0.  ``first``:
-    ``fn(x0, *args)`` flattened, if the caller has it already."""
-    shape = np.broadcast(np.asarray(x0), np.asarray(lo), np.asarray(hi), *args).shape
-    if isinstance(increasing, bool):
-        increasing = 1.0 if increasing else -1.0
-    if scale is None:
-        scale = np.abs(np.asarray(x0, float))
-    flat = [_full(a, shape).ravel() for a in (x0, lo, hi, scale, increasing, *args)]
-    x, lo, hi, sc, sgn = flat[0].copy(), flat[1].copy(), flat[2].copy(), flat[3], flat[4]
-    args = flat[5:]
-    tol = rtol * np.maximum(np.abs(sc), 1e-300)
-    out = x.copy()
-    idx = np.arange(x.size)
-    sub, tl, sign = args, tol, sgn
-    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
-        for it in range(iterations):
-            vals = first if it == 0 and first is not None else fn(x, *sub)
-            f, df = sign * np.asarray(vals[0], float), sign * np.asarray(vals[1], float)
-            lo = np.where(f < 0, x, lo)
-            hi = np.where(f > 0, x, hi)
-            step = f / df
-            if halley:
-                step = step / (1.0 - 0.5 * step * (sign * np.asarray(vals[2], float)) / df)
-            xn = x - step
-            small = np.abs(step) <= 0.5 * tl
-            bad = ~((xn > lo) & (xn < hi) | small) | ~np.isfinite(xn)
-            xn = np.where(bad, 0.5 * (lo + hi), xn)
-            out[idx] = xn
-            stop = small | (f == 0) | (hi - lo <= tl) | ~np.isfinite(x)
-            if stop.all():
-                break
-            if stop.any():
-                keep = ~stop
-                idx, xn, lo, hi, tl = idx[keep], xn[keep], lo[keep], hi[keep], tl[keep]
-                sign = sign[keep]
-                sub = tuple(a[idx] for a in args)
-            x = xn
-    return out.reshape(shape)
-
-
 def damped_normal(n, P, edges=None):
-    """Friction, normal form: ``dict(a, b, top, lo, hi)`` of float64 ``theta`` arrays (one parity):
-    the undamped-form bracket ``[a, b]``, the maximiser ``top`` of ``D`` and the edges (NaN where
-    the interval does not exist).  ``edges``: the undamped roots ``normal_edges(n, P)`` if the
-    caller has them already."""
+    """Friction, normal form: ``dict(a, b, top, dtop, lo, hi)`` of float64 ``theta`` arrays (one
+    parity): the undamped-form bracket ``[a, b]``, the maximiser ``top`` of ``D`` with ``dtop =
+    D(top)``, and the edges (NaN where the interval does not exist).  ``edges``: the undamped
+    roots ``normal_edges(n, P)`` if the caller has them already.  (:func:`_damped_normal` also
+    gives the error estimates of the grid.)"""
+    res = _damped_normal(n, P, edges)
+    return {k: res[k] for k in ("a", "b", "top", "dtop", "lo", "hi")}
+
+
+@cache
+def _indicator_all(parity: int):
+    """``(D, D', D'', D''', sum |t_i|, sum |dt_i/dtheta|)`` of the indicator of ``parity`` in one
+    compiled numpy call (:func:`verify.derived.with_term_sizes`: six transcendental calls)."""
+    return with_term_sizes(indicator(parity).real).compiled("numpy", (0, 1, 2, 3, 4, 5))
+
+
+#: the maximiser of ``D`` is taken once its Halley step (on ``D'``) is below this (absolute, in
+#: ``theta``); its value ``D(top)`` is then the Taylor polynomial of degree 3 of ``D`` at the last
+#: iterate, which leaves an error of about ``D'''' step^4/24 <= 1e-21 D''''`` (far below the
+#: rounding of ``D``) and a maximiser off by about ``step^3``, whose ``D`` is below the maximum by
+#: some ``D'' 1e-30``
+_TOP_STEP = 1e-5
+
+#: an edge is taken once Halley's estimate of its error, ``K step^3`` with ``K = |D'''|/(6 |D'|)
+#: + (D''/(2 D'))^2``, is below this times ``max(c + theta, 1)`` (and its step below
+#: :data:`_EDGE_STEP`, where that estimate holds)
+_EDGE_RTOL = 2e-16
+_EDGE_STEP = 1e-4
+
+
+def _damped_normal(n, P, edges=None, *, split=False):
+    """:func:`damped_normal` with the grid's error estimates: also ``undecided`` (the sign of
+    ``D`` at the maximiser is within the rounding bound of ``D``) and ``lo_doubt``, ``hi_doubt``
+    (the edge's estimated relative error -- the rounding bound of ``D`` over its slope at the
+    edge, as :func:`_root_doubt` -- exceeds :data:`DOUBT`).
+
+    Every evaluation gives ``D``, its first three derivatives and the rounding bound from one
+    set of transcendental calls (:func:`_indicator_all`).  The maximiser: Halley steps on ``D'``
+    from the root of the cubic that interpolates ``D'`` and ``D''`` at the ends of the undamped
+    bracket (``D'`` decreasing through it), safeguarded by bisection (:func:`_maximiser`).  The
+    edges: Halley steps on ``D`` from the undamped roots (the first from the values there,
+    computed already), each in the bracket between its undamped root and the maximiser, stopped
+    by Halley's error estimate (:func:`_edges`).  Each iteration runs only on the points still
+    moving.
+
+    ``split=True`` (the grid): ``top`` is only a point where ``D`` exceeds twice its rounding
+    bound where the interval exists (it splits the edges' brackets and proves the existence),
+    the maximiser itself only where no such point has been met; ``dtop`` is ``D`` there."""
     n = np.asarray(n)
-    parity = _parity(int(n.flat[0]))
-    form = indicator(parity)
-    dd = form.compiled("numpy", (1, 2))
-    d012 = form.compiled("numpy", (0, 1, 2))
+    parity = int(_parity(int(n.flat[0])))
+    ev = _indicator_all(parity)
     t1, t2 = normal_edges(n, P) if edges is None else edges
     a, b = np.minimum(t1, t2), np.maximum(t1, t2)
     c = n * _HALF_PI
-    args = (c, P.r2, P.u, P.beta, P.g)
-    shape = np.broadcast(a, *args).shape
-    a, b = _full(a, shape), _full(b, shape)
-    # D, D', D'' at both ends: D' for the maximiser's bracket and start, D where the maximiser is
-    # an end, and all three for the first Halley step of each edge
-    at_a = [np.asarray(v, float) * np.ones(shape) for v in d012(a, *args)]
-    at_b = [np.asarray(v, float) * np.ones(shape) for v in d012(b, *args)]
-    d1a, d1b = at_a[1], at_b[1]
-    # maximiser: zero of D' (decreasing through it), started where the secant of D' through the
-    # ends vanishes
-    inside = (d1a > 0) & (d1b < 0)
-    top = np.where(d1a <= 0, a, b)
-    dtop = np.where(d1a <= 0, at_a[0], at_b[0])
-    scale = np.maximum(c + 0.5 * (a + b), 1.0)
-    if inside.any():  # (only there: elsewhere D' has no sign change)
-        sel = np.nonzero(inside.ravel())[0]
-        aa, bb, ya, yb, sc = (np.ravel(v)[sel] for v in (a, b, d1a, d1b, scale))
-        sub = tuple(_full(v, shape).ravel()[sel] for v in args)
-        with np.errstate(divide="ignore", invalid="ignore"):
-            x0 = aa + ya * (bb - aa) / (ya - yb)
-        x0 = np.where((x0 > aa) & (x0 < bb), x0, 0.5 * (aa + bb))
-        # to 1e-12 of c + theta: D(top) is then below its maximum by ~D'' 1e-24, far below
-        # the rounding of D (the existence decision and the edge brackets need no more)
-        tops = _bisect_newton_compact(dd, sub, aa, bb, x0, False, scale=sc, rtol=1e-12)
-        top = np.array(top, float, copy=True)
-        top.ravel()[sel] = tops
-        dtop.ravel()[sel] = np.asarray(d012(tops, *sub)[0], float)
-    exists = dtop > 0
-    lo = np.full(shape, np.nan)
-    hi = np.full(shape, np.nan)
-    if exists.any():
-        # both edges in one Halley iteration (only where the interval exists: elsewhere there
-        # is no sign change), each from its undamped root, in the bracket between it and the
-        # maximiser (D negative at the one end, positive at the other)
-        sel = np.nonzero(exists.ravel())[0]
-        cc = _full(c, shape).ravel()[sel]
-        aa, bb, tt = (np.ravel(v)[sel] for v in (a, b, top))
-        sub = tuple(np.concatenate([w, w]) for w in (_full(v, shape).ravel()[sel] for v in args))
-        k = sel.size
-        both = _bisect_newton_compact(
-            d012,
-            sub,
-            np.concatenate([aa, tt]),
-            np.concatenate([tt, bb]),
-            np.concatenate([aa, bb]),
-            np.concatenate([np.ones(k), -np.ones(k)]),
-            scale=np.maximum(np.concatenate([cc + aa, cc + bb]), 1.0),
-            halley=True,
-            first=[
-                np.concatenate([va.ravel()[sel], vb.ravel()[sel]])
-                for va, vb in zip(at_a, at_b, strict=True)
-            ],
-        )
-        lo.ravel()[sel] = both[:k]
-        hi.ravel()[sel] = both[k:]
-    return {"a": a, "b": b, "top": top, "dtop": dtop, "lo": lo, "hi": hi}
+    params = (c, P.r2, P.u, P.beta, P.g)
+    shape = np.broadcast(a, b, *params).shape
+    a, b = _full(a, shape).ravel(), _full(b, shape).ravel()
+    args = tuple(_full(v, shape).ravel() for v in params)
+    cc = args[0]
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+        at_a = ev(a, *args)
+        at_b = ev(b, *args)
+        d1a, d1b = at_a[1], at_b[1]
+        left = d1a <= 0
+        top = np.where(left, a, b)
+        dtop = np.where(left, at_a[0], at_b[0])
+        tot = np.where(left, at_a[4], at_b[4])
+        tsl = np.where(left, at_a[5], at_b[5])
+        inside = np.nonzero((d1a > 0) & (d1b < 0))[0]
+        if inside.size:
+            sub = tuple(v[inside] for v in args)
+            ends = (a[inside], b[inside], d1a[inside], d1b[inside])
+            x0 = _hermite_root(*ends, at_a[2][inside], at_b[2][inside])
+            got = _maximiser(ev, sub, *ends, x0, split=split)
+            top[inside], dtop[inside], tot[inside], tsl[inside] = got
+        noise = NOISE_ULPS * 2.0**-53 * (np.abs(tot) + np.abs(cc + top) * np.abs(tsl))
+        undecided = np.abs(dtop) <= noise
+        lo = np.full(a.size, np.nan)
+        hi = np.full(a.size, np.nan)
+        lo_doubt = np.zeros(a.size, bool)
+        hi_doubt = np.zeros(a.size, bool)
+        sel = np.nonzero(dtop > 0)[0]
+        if sel.size:
+            k = sel.size
+            sub = tuple(np.concatenate([v[sel], v[sel]]) for v in args)
+            aa, bb, tt = a[sel], b[sel], top[sel]
+            first = [np.concatenate([va[sel], vb[sel]]) for va, vb in zip(at_a, at_b, strict=True)]
+            root, unsure = _edges(
+                ev,
+                sub,
+                np.concatenate([aa, tt]),
+                np.concatenate([tt, bb]),
+                np.concatenate([aa, bb]),
+                np.concatenate([np.ones(k), -np.ones(k)]),
+                first,
+            )
+            lo[sel], hi[sel] = root[:k], root[k:]
+            lo_doubt[sel], hi_doubt[sel] = unsure[:k], unsure[k:]
+    out = {"a": a, "b": b, "top": top, "dtop": dtop, "lo": lo, "hi": hi}
+    out.update(undecided=undecided, lo_doubt=lo_doubt, hi_doubt=hi_doubt)
+    return {key: v.reshape(shape) for key, v in out.items()}
+
+
+def _hermite_root(a, b, ya, yb, sa, sb):
+    """A start for the zero of ``D'`` in ``[a, b]``: the zero of the cubic with the values ``ya >
+    0 > yb`` and slopes ``sa``, ``sb`` of ``D'`` at the ends (four Newton steps from the secant
+    root, kept in the bracket; the secant root where they fail)."""
+    h = b - a
+    p0, p1, m0, m1 = ya, yb, sa * h, sb * h
+    # the cubic in t = (x - a)/h: p0 + m0 t + c2 t^2 + c3 t^3
+    c2 = 3 * (p1 - p0) - 2 * m0 - m1
+    c3 = 2 * (p0 - p1) + m0 + m1
+    t0 = ya / (ya - yb)
+    t = t0
+    for _ in range(4):
+        f = p0 + t * (m0 + t * (c2 + t * c3))
+        df = m0 + t * (2 * c2 + 3 * t * c3)
+        t = np.minimum(np.maximum(t - f / df, 0.0), 1.0)
+    t = np.where(np.isfinite(t) & (t > 0) & (t < 1), t, t0)
+    return a + t * h
+
+
+def _maximiser(ev, args, a, b, d1a, d1b, x0, *, split=False, iterations: int = 100):
+    """The maximiser of ``D`` in ``[a, b]`` where ``D'(a) > 0 > D'(b)``, from ``x0``: ``(top,
+    D(top), sum |t_i|, sum |dt_i/dtheta|)`` (the sizes at the last iterate).  Halley steps on
+    ``D'``, a step out of the bracket replaced by bisection, each point dropped once its step is
+    below :data:`_TOP_STEP` (which says why that is enough).  ``split=True``: a point is also
+    dropped once ``D`` exceeds twice its rounding bound there (that point is returned)."""
+    x = np.where((x0 > a) & (x0 < b), x0, 0.5 * (a + b))
+    lo, hi = a.copy(), b.copy()
+    top, dtop = x.copy(), np.full(x.size, -np.inf)
+    tot, tsl = np.zeros(x.size), np.zeros(x.size)
+    idx = np.arange(x.size)
+    sub = args
+    for it in range(iterations):
+        D, D1, D2, D3, T0, T1 = ev(x, *sub)
+        lo = np.where(D1 > 0, x, lo)
+        hi = np.where(D1 < 0, x, hi)
+        s = D1 / D2
+        s = s / (1.0 - 0.5 * s * D3 / D2)
+        s = np.where(D1 == 0, 0.0, s)
+        xn = x - s
+        done = np.abs(s) <= _TOP_STEP
+        narrow = hi - lo <= 1e-12 * np.maximum(np.abs(x), 1.0)
+        if narrow.any():  # bisection has closed in on it: the step to the midpoint
+            s = np.where(narrow & ~done, x - 0.5 * (lo + hi), s)
+            done |= narrow & (np.abs(s) <= _TOP_STEP)
+        if split:
+            noise = NOISE_ULPS * 2.0**-53 * (np.abs(T0) + np.abs(sub[0] + x) * np.abs(T1))
+            high = (D > 2 * noise) & ~done
+            if high.any():
+                s = np.where(high, 0.0, s)
+                done |= high
+        last = it == iterations - 1
+        if done.any() or last:
+            j = np.nonzero(done)[0] if not last else np.arange(x.size)
+            sj = s[j]
+            top[idx[j]] = x[j] - sj
+            dtop[idx[j]] = D[j] - sj * (D1[j] - sj * (0.5 * D2[j] - sj * D3[j] / 6.0))
+            tot[idx[j]], tsl[idx[j]] = T0[j], T1[j]
+        if done.all() or last:
+            break
+        xn = np.where((xn > lo) & (xn < hi), xn, 0.5 * (lo + hi))
+        keep = ~done
+        idx, x, lo, hi = idx[keep], xn[keep], lo[keep], hi[keep]
+        sub = tuple(v[keep] for v in sub)
+    return top, dtop, tot, tsl
+
+
+def _edges(ev, args, lo, hi, x0, sign, first, *, iterations: int = 100):
+    """The zeros of ``D`` in ``[lo, hi]`` (``sign D`` negative at ``lo``, positive at ``hi``),
+    from ``x0`` with ``first = ev(x0, *args)``: ``(roots, doubt)``.  Halley steps, a step out of
+    the bracket replaced by bisection; a point stops once Halley's error estimate is below
+    :data:`_EDGE_RTOL` (or its bracket is that narrow, or ``D = 0``).  ``doubt``: the rounding
+    bound of ``D`` over its slope at the root exceeds :data:`DOUBT` relative to ``c + root`` (as
+    :func:`_root_doubt`; the slope at the last iterate corrected by ``D''`` times the step)."""
+    x = x0.copy()
+    root = x0.copy()
+    doubt = np.zeros(x.size, bool)
+    idx = np.arange(x.size)
+    sub, sg, sc = args, sign, np.maximum(args[0] + x0, 1.0)
+    for it in range(iterations):
+        D, D1, D2, D3, T0, T1 = first if it == 0 else ev(x, *sub)
+        f = sg * D
+        lo = np.where(f < 0, x, lo)
+        hi = np.where(f > 0, x, hi)
+        h = 0.5 * D2 / D1
+        s = D / D1
+        s = s / (1.0 - s * h)
+        s = np.where(D == 0, 0.0, s)
+        xn = x - s
+        a = np.abs(s)
+        err = (np.abs(D3) / (6.0 * np.abs(D1)) + h * h) * (a * a * a)
+        done = (err <= _EDGE_RTOL * sc) & (a <= _EDGE_STEP)
+        narrow = (hi - lo <= 2 * _EDGE_RTOL * sc) & ~done
+        if narrow.any():  # bisection has closed in on it: the step to the midpoint
+            s = np.where(narrow, x - 0.5 * (lo + hi), s)
+            done |= narrow
+        last = it == iterations - 1
+        if done.any() or last:
+            j = np.nonzero(done)[0] if not last else np.arange(x.size)
+            sj = s[j]
+            r = x[j] - sj
+            slope = np.abs(D1[j] - D2[j] * sj)
+            at = np.abs(sub[0][j] + r)
+            noise = NOISE_ULPS * 2.0**-53 * (np.abs(T0[j]) + at * np.abs(T1[j]))
+            root[idx[j]] = r
+            doubt[idx[j]] = ~(noise / (slope * at) <= DOUBT)
+        if done.all() or last:
+            break
+        ok = (xn > lo) & (xn < hi)
+        xn = np.where(ok, xn, 0.5 * (lo + hi))
+        keep = ~done
+        idx, x, lo, hi, sg, sc = idx[keep], xn[keep], lo[keep], hi[keep], sg[keep], sc[keep]
+        sub = tuple(v[keep] for v in sub)
+    return root, doubt
 
 
 # ---------------------------------------------------------------------------------------------
@@ -893,7 +981,7 @@ def _fill_normal(out, orders, ms, P, damped: bool) -> np.ndarray:
         if rows.size == 0:
             continue
         n = orders_arr[rows][:, None]
-        res = damped_normal(n, P, edges=(t1[rows], t2[rows]))
+        res = _damped_normal(n, P, edges=(t1[rows], t2[rows]), split=True)
         near = near_one_forms()[2]
         lo = _polish_near_one(res["lo"], orders_arr[rows], P, near)
         hi = _polish_near_one(res["hi"], orders_arr[rows], P, near)
@@ -943,26 +1031,25 @@ def _normal_doubt(n, P, res, lo, hi):
     """Masks of the entries of the normal-form friction path that must be escalated: ``(top,
     lower, upper)``: the sign of ``D`` at its maximiser within rounding (existence undecided),
     and each edge whose estimated error exceeds :data:`DOUBT` (near a threshold or a closing gap,
-    where the edges are a near-double root)."""
-    parity = _parity(int(n.flat[0]))
+    where the edges are a near-double root).  :func:`_damped_normal` gave them for the standard
+    form; the depths polished on the form for ``m -> 1`` (``1 - beta <`` :data:`NEAR_ONE`) are
+    judged here on that form."""
+    undecided, edges = res["undecided"], [res["lo_doubt"].copy(), res["hi_doubt"].copy()]
+    cols = np.nonzero(np.asarray(P.bm) < NEAR_ONE)[0]
+    if cols.size == 0:
+        return undecided, edges[0], edges[1]
     c = n * _HALF_PI
-    params = (c, P.r2, P.u, P.beta, P.g, P.bm)
-    shape = np.broadcast_shapes(*(np.shape(v) for v in (res["top"], lo, hi, *params)))
-    top, lo, hi = (_full(v, shape) for v in (res["top"], lo, hi))
-    c, r2, u, beta, g, bm = (_full(v, shape) for v in params)
-    form, nearf = indicator(parity), near_one_forms()[2]
+    params = (c, P.u[cols], P.bm[cols], P.g[cols])
+    shape = np.broadcast_shapes(lo[:, cols].shape, *(np.shape(v) for v in params))
+    args = tuple(_full(v, shape) for v in params)
+    nearf = near_one_forms()[2]
     with np.errstate(invalid="ignore", over="ignore"):
-        undecided = np.abs(res["dtop"]) <= _noise(form, top, (c, r2, u, beta, g), c + top)
-        edges = []
-        for theta in (lo, hi):
-            bad = np.zeros(theta.shape, bool)
-            for on, f, names in (
-                (bm >= NEAR_ONE, form, (c, r2, u, beta, g)),
-                (bm < NEAR_ONE, nearf, (c, u, bm, g)),
-            ):
-                sel = on & np.isfinite(theta)
-                if sel.any():
-                    t, args = theta[sel], tuple(a[sel] for a in names)
-                    bad[sel] = _root_doubt(f, t, args, args[0] + t)
-            edges.append(bad)
+        for bad, theta in zip(edges, (lo, hi), strict=True):
+            t = _full(theta[:, cols], shape)
+            sel = np.isfinite(t)
+            part = np.zeros(shape, bool)
+            if sel.any():
+                sub = tuple(a[sel] for a in args)
+                part[sel] = _root_doubt(nearf, t[sel], sub, sub[0] + t[sel])
+            bad[:, cols] = part
     return undecided, edges[0], edges[1]
