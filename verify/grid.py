@@ -424,16 +424,15 @@ def _damped_normal(n, P, edges=None, *, split=False):
             k = sel.size
             sub = tuple(np.concatenate([v[sel], v[sel]]) for v in args)
             aa, bb, tt = a[sel], b[sel], top[sel]
-            first = [np.concatenate([va[sel], vb[sel]]) for va, vb in zip(at_a, at_b, strict=True)]
-            root, unsure = _edges(
-                ev,
-                sub,
-                np.concatenate([aa, tt]),
-                np.concatenate([tt, bb]),
-                np.concatenate([aa, bb]),
-                np.concatenate([np.ones(k), -np.ones(k)]),
-                first,
+            # the first step from the values at the undamped roots (no new evaluation)
+            x1 = np.concatenate(
+                [e[sel] - _step(*(v[sel] for v in at[:4]))[0] for e, at in ((a, at_a), (b, at_b))]
             )
+            brl, brh = np.concatenate([aa, tt]), np.concatenate([tt, bb])
+            x1 = np.where((x1 > brl) & (x1 < brh), x1, 0.5 * (brl + brh))
+            sign = np.concatenate([np.ones(k), -np.ones(k)])
+            scale = np.maximum(sub[0] + np.concatenate([aa, bb]), 1.0)
+            root, unsure = _edges(ev, sub, brl, brh, x1, sign, scale)
             lo[sel], hi[sel] = root[:k], root[k:]
             lo_doubt[sel], hi_doubt[sel] = unsure[:k], unsure[k:]
     out = {"a": a, "b": b, "top": top, "dtop": dtop, "lo": lo, "hi": hi}
@@ -507,31 +506,38 @@ def _maximiser(ev, args, a, b, d1a, d1b, x0, *, split=False, iterations: int = 1
     return top, dtop, tot, tsl
 
 
-def _edges(ev, args, lo, hi, x0, sign, first, *, iterations: int = 100):
+def _step(D, D1, D2, D3):
+    """Householder's step of order 3 for a zero of ``D`` (its error after the step ~ step^4; the
+    third derivative comes with every evaluation anyway) and Halley's estimate ``K step^3`` of the
+    error a step of order 2 would leave, ``K = |D'''|/(6 |D'|) + (D''/(2 D'))^2`` (an upper
+    estimate of what this step leaves): ``(step, err)``."""
+    h = 0.5 * D2 / D1
+    q = D / D1
+    s = q * (1.0 - q * h) / (1.0 - q * (2.0 * h - q * D3 / (6.0 * D1)))
+    s = np.where(D == 0, 0.0, s)
+    a = np.abs(s)
+    return s, (np.abs(D3) / (6.0 * np.abs(D1)) + h * h) * (a * a * a)
+
+
+def _edges(ev, args, lo, hi, x, sign, scale, *, iterations: int = 100):
     """The zeros of ``D`` in ``[lo, hi]`` (``sign D`` negative at ``lo``, positive at ``hi``),
-    from ``x0`` with ``first = ev(x0, *args)``: ``(roots, doubt)``.  Halley steps, a step out of
-    the bracket replaced by bisection; a point stops once Halley's error estimate is below
-    :data:`_EDGE_RTOL` (or its bracket is that narrow, or ``D = 0``).  ``doubt``: the rounding
-    bound of ``D`` over its slope at the root exceeds :data:`DOUBT` relative to ``c + root`` (as
-    :func:`_root_doubt`; the slope at the last iterate corrected by ``D''`` times the step)."""
-    x = x0.copy()
-    root = x0.copy()
+    from ``x``: ``(roots, doubt)``.  Steps of :func:`_step`, a step out of the bracket replaced by
+    bisection; a point stops once the error estimate is below :data:`_EDGE_RTOL` times ``scale``
+    (and its step below :data:`_EDGE_STEP`), or its bracket is that narrow.  ``doubt``: the
+    rounding bound of ``D`` over its slope at the root exceeds :data:`DOUBT` relative to ``c +
+    root`` (as :func:`_root_doubt`; the slope at the last iterate corrected by ``D''`` times the
+    step)."""
+    root = x.copy()
     doubt = np.zeros(x.size, bool)
     idx = np.arange(x.size)
-    sub, sg, sc = args, sign, np.maximum(args[0] + x0, 1.0)
+    sub, sg, sc = args, sign, scale
     for it in range(iterations):
-        D, D1, D2, D3, T0, T1 = first if it == 0 else ev(x, *sub)
+        D, D1, D2, D3, T0, T1 = ev(x, *sub)
         f = sg * D
         lo = np.where(f < 0, x, lo)
         hi = np.where(f > 0, x, hi)
-        h = 0.5 * D2 / D1
-        s = D / D1
-        s = s / (1.0 - s * h)
-        s = np.where(D == 0, 0.0, s)
-        xn = x - s
-        a = np.abs(s)
-        err = (np.abs(D3) / (6.0 * np.abs(D1)) + h * h) * (a * a * a)
-        done = (err <= _EDGE_RTOL * sc) & (a <= _EDGE_STEP)
+        s, err = _step(D, D1, D2, D3)
+        done = (err <= _EDGE_RTOL * sc) & (np.abs(s) <= _EDGE_STEP)
         narrow = (hi - lo <= 2 * _EDGE_RTOL * sc) & ~done
         if narrow.any():  # bisection has closed in on it: the step to the midpoint
             s = np.where(narrow, x - 0.5 * (lo + hi), s)
@@ -548,8 +554,8 @@ def _edges(ev, args, lo, hi, x0, sign, first, *, iterations: int = 100):
             doubt[idx[j]] = ~(noise / (slope * at) <= DOUBT)
         if done.all() or last:
             break
-        ok = (xn > lo) & (xn < hi)
-        xn = np.where(ok, xn, 0.5 * (lo + hi))
+        xn = x - s
+        xn = np.where((xn > lo) & (xn < hi), xn, 0.5 * (lo + hi))
         keep = ~done
         idx, x, lo, hi, sg, sc = idx[keep], xn[keep], lo[keep], hi[keep], sg[keep], sc[keep]
         sub = tuple(v[keep] for v in sub)
@@ -565,22 +571,27 @@ def _halves_exact(m, Q: Fraction):
     return [regime_of(4 * Q * Q - 1 - x) for x in m], [regime_of(4 * Q * Q - 1 + x) for x in m]
 
 
+#: the regime names by the codes of :func:`_halves` (``-1``, ``0``, ``+1``), shifted by one
+_REGIMES = ("over", "critical", "under")
+
+
 def _halves(dep, cols, Q: Fraction):
-    """:func:`_halves_exact` for the depths ``cols`` of ``dep``, decided in floats where
-    ``4 Q^2 - 1 -+ m`` is far from 0 (its float value is within a few ulp of ``4 Q^2 + 1`` of
-    the exact one: ``4 Q^2 - 1`` and ``m`` are each rounded once) and from the exact depth
-    elsewhere."""
+    """:func:`_halves_exact` for the depths ``cols`` of ``dep`` as int8 arrays of codes (``+1``
+    under-, ``0`` critically, ``-1`` over-damped; the name is ``_REGIMES[code + 1]``), decided in
+    floats where ``4 Q^2 - 1 -+ m`` is far from 0 (its float value is within a few ulp of ``4 Q^2
+    + 1`` of the exact one: ``4 Q^2 - 1`` and ``m`` are each rounded once) and from the exact
+    depth elsewhere."""
     q = 4 * Q * Q - 1
     qf, ms = float(q), dep.m[cols]
     margin = 1e-12 * (abs(qf) + 2.0)
-    names = []
+    codes = []
     for sign in (-1, 1):
         u = qf + sign * ms
-        out = np.where(u > 0, "under", "over").astype(object)
+        out = np.where(u > 0, 1, -1).astype(np.int8)
         for j in np.nonzero(np.abs(u) <= margin)[0]:
-            out[j] = regime_of(q + sign * dep.exact(int(cols[j])))
-        names.append(list(out))
-    return names[0], names[1]
+            out[j] = _REGIMES.index(regime_of(q + sign * dep.exact(int(cols[j])))) - 1
+        codes.append(out)
+    return codes[0], codes[1]
 
 
 #: the double path serves depths with ``1 - m`` at least this (the last double below 1 has
@@ -814,7 +825,7 @@ def _double_grid(orders, dep: _Depths, cols, Qx, damping):
     Qexact = Fraction(Qx) if not isinstance(Qx, Fraction) else Qx
     h1, h2 = _halves(dep, cols, Qexact)
     u1 = (4 * float(Qexact) ** 2 - 1 - ms) / (1 + ms)
-    normal = np.array([a == "under" for a in h1]) & (u1 >= NEAR_CRITICAL**2)
+    normal = (h1 == 1) & (u1 >= NEAR_CRITICAL**2)
     if normal.any():
         idx = np.nonzero(normal)[0]
         sub = ms[idx]
@@ -825,11 +836,12 @@ def _double_grid(orders, dep: _Depths, cols, Qx, damping):
         out[:, :, idx] = part
     for j in np.nonzero(~normal)[0]:
         T = trace_params(dep.exact(int(cols[j])), Qexact, backend("math"))
+        regimes = (_REGIMES[h1[j] + 1], _REGIMES[h2[j] + 1])
         for i, n in enumerate(orders):
-            window = trace_window_ends(n, (h1[j], h2[j]), T)
+            window = trace_window_ends(n, regimes, T)
             if window is None:
                 continue
-            res = damped_trace(n, (h1[j], h2[j]), T, window)
+            res = damped_trace(n, regimes, T, window)
             scale = 2 * float(Qexact) / math.pi
             out[i, 0, j] = res["lo"] * scale
             out[i, 1, j] = res["hi"] * scale
