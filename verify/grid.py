@@ -348,10 +348,12 @@ def damped_normal(n, P, edges=None):
 
 
 @cache
-def _indicator_all(parity: int):
+def _indicator_all(parity: int, sizes: bool = True):
     """``(D, D', D'', D''', sum |t_i|, sum |dt_i/dtheta|)`` of the indicator of ``parity`` in one
-    compiled numpy call (:func:`verify.derived.with_term_sizes`: six transcendental calls)."""
-    return with_term_sizes(indicator(parity).real).compiled("numpy", (0, 1, 2, 3, 4, 5))
+    compiled numpy call (:func:`verify.derived.with_term_sizes`: six transcendental calls);
+    ``sizes=False``: the first four only."""
+    orders = (0, 1, 2, 3, 4, 5) if sizes else (0, 1, 2, 3)
+    return with_term_sizes(indicator(parity).real).compiled("numpy", orders)
 
 
 #: the maximiser of ``D`` is taken once its Halley step (on ``D'``) is below this (absolute, in
@@ -398,15 +400,19 @@ def _damped_normal(n, P, edges=None, *, split=False):
     args = tuple(_full(v, shape).ravel() for v in params)
     cc = args[0]
     with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
-        at_a = ev(a, *args)
-        at_b = ev(b, *args)
+        at_a = _indicator_all(parity, False)(a, *args)  # (the sizes only where needed)
+        at_b = _indicator_all(parity, False)(b, *args)
         d1a, d1b = at_a[1], at_b[1]
         left = d1a <= 0
         top = np.where(left, a, b)
         dtop = np.where(left, at_a[0], at_b[0])
-        tot = np.where(left, at_a[4], at_b[4])
-        tsl = np.where(left, at_a[5], at_b[5])
-        inside = np.nonzero((d1a > 0) & (d1b < 0))[0]
+        tot, tsl = np.zeros(a.size), np.zeros(a.size)
+        within = (d1a > 0) & (d1b < 0)
+        inside = np.nonzero(within)[0]
+        end = np.nonzero(~within)[0]
+        if end.size:  # the maximiser is an end: the sizes there
+            got = ev(top[end], *(v[end] for v in args))
+            tot[end], tsl[end] = got[4], got[5]
         if inside.size:
             sub = tuple(v[inside] for v in args)
             ends = (a[inside], b[inside], d1a[inside], d1b[inside])
