@@ -135,3 +135,25 @@ def test_next_to_critical_damping(Q, critical):
         ms += [critical - d, critical + d]
     bad = _bad_points([1, 2, 3], ms, Q, "exact")
     assert not bad, f"{len(bad)} bad points:\n" + "\n".join(bad)
+
+
+@pytest.mark.parametrize("parity", [1, -1])
+def test_one_call_gives_the_forms_and_their_term_sizes(parity):
+    """:func:`verify.derived.with_term_sizes` (the grid's one call per evaluation) gives the same
+    values as the indicator's own compilations and :func:`verify.derived.term_sizes` (two
+    independent lambdifications of the same sympy expressions; they differ only by rounding)."""
+    from verify.derived import indicator, term_sizes, with_term_sizes
+
+    rng = np.random.default_rng(7)
+    k = 200
+    theta = rng.uniform(-1.5, 1.5, k)
+    c = rng.integers(1, 7, k) * (np.pi / 2)
+    r2 = rng.uniform(0.0, 0.9, k)
+    args = (theta, c, r2, 1 - r2, rng.uniform(0.0, 1.0, k), rng.uniform(0.0, 0.2, k))
+    form = indicator(parity).real
+    both = with_term_sizes(form).compiled("numpy", (0, 1, 2, 3, 4, 5))(*args)
+    want = [form.compiled("numpy", j)(*args) for j in range(4)]
+    want += list(term_sizes(form).compiled("numpy", (0, 1))(*args))
+    sizes = np.abs(want[4]) + np.abs(want[5])  # every value is a sum of terms of these sizes
+    for got, ref in zip(both, want, strict=True):
+        assert np.all(np.abs(got - ref) <= 1e-14 * (sizes + np.abs(ref)))

@@ -358,7 +358,7 @@ def with_term_sizes(form: Form, count: int = 3) -> Form:
     among the values, the derivatives and the sizes (a root finder gets its step and the rounding
     bound of its root from one call).  The terms are those of :func:`term_sizes`, taken without
     expanding the arguments of the functions (so that they are the form's own), which is the same
-    sum (``tests/test_grid.py`` compares the two)."""
+    sum (``tests/test_grid_friction.py`` compares the two)."""
     key = ("with_term_sizes", count)
     out = form._cache.get(key)
     if out is None:
