@@ -399,6 +399,7 @@ def _damped_normal(n, P, edges=None, *, split=False):
     a, b = _full(a, shape).ravel(), _full(b, shape).ravel()
     args = tuple(_full(v, shape).ravel() for v in params)
     cc = args[0]
+    far = _full(np.asarray(P.bm) >= NEAR_ONE, shape).ravel() if split else None
     with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
         at_a = _indicator_all(parity, False)(a, *args)  # (the sizes only where needed)
         at_b = _indicator_all(parity, False)(b, *args)
@@ -413,6 +414,36 @@ def _damped_normal(n, P, edges=None, *, split=False):
         if end.size:  # the maximiser is an end: the sizes there
             got = ev(top[end], *(v[end] for v in args))
             tot[end], tsl[end] = got[4], got[5]
+        lo = np.full(a.size, np.nan)
+        hi = np.full(a.size, np.nan)
+        lo_doubt = np.zeros(a.size, bool)
+        hi_doubt = np.zeros(a.size, bool)
+        solved = np.zeros(a.size, bool)
+        if inside.size and split:
+            # where the cubic predicts D > 0 at its maximiser, the edges at once, in the
+            # brackets split there; kept where both converge to simple zeros with the slopes of
+            # the edges (D increasing through the lower, decreasing through the upper) on either
+            # side of the split -- D is then positive between them (one zero each side of the
+            # maximiser), and the interval exists; an edge whose error is not bounded is
+            # escalated as on the other path
+            ends = (a[inside], b[inside], d1a[inside], d1b[inside])
+            x0, guess = _hermite_root(*ends, at_a[2][inside], at_b[2][inside], at_a[0][inside])
+            # (not next to m = 1, where the standard form loses the digits that decide it)
+            guess = np.where(far[inside], guess, -1.0)
+            sel = inside[guess > 0]
+            if sel.size:
+                split_at = x0[guess > 0]
+                got = _edge_pair(ev, args, a, b, split_at, at_a, at_b, sel, iterations=8)
+                ok = got[4] & (got[0] < split_at) & (split_at < got[1])
+                ok &= got[1] - got[0] > 1e-8 * np.maximum(np.abs(cc[sel] + got[1]), 1.0)
+                sel = sel[ok]
+                lo[sel], hi[sel] = got[0][ok], got[1][ok]
+                lo_doubt[sel], hi_doubt[sel] = got[2][ok], got[3][ok]
+                top[sel] = split_at[ok]
+                dtop[sel] = np.inf  # (D > 0 between the edges: not its maximum)
+                solved[sel] = True
+                keep = ~solved[inside]
+                inside = inside[keep]
         if inside.size:
             sub = tuple(v[inside] for v in args)
             ends = (a[inside], b[inside], d1a[inside], d1b[inside])
@@ -421,35 +452,21 @@ def _damped_normal(n, P, edges=None, *, split=False):
             top[inside], dtop[inside], tot[inside], tsl[inside] = got
         noise = NOISE_ULPS * 2.0**-53 * (np.abs(tot) + np.abs(cc + top) * np.abs(tsl))
         undecided = np.abs(dtop) <= noise
-        lo = np.full(a.size, np.nan)
-        hi = np.full(a.size, np.nan)
-        lo_doubt = np.zeros(a.size, bool)
-        hi_doubt = np.zeros(a.size, bool)
-        sel = np.nonzero(dtop > 0)[0]
+        sel = np.nonzero((dtop > 0) & ~solved)[0]
         if sel.size:
-            k = sel.size
-            sub = tuple(np.concatenate([v[sel], v[sel]]) for v in args)
-            aa, bb, tt = a[sel], b[sel], top[sel]
-            # the first step from the values at the undamped roots (no new evaluation)
-            x1 = np.concatenate(
-                [e[sel] - _step(*(v[sel] for v in at[:4]))[0] for e, at in ((a, at_a), (b, at_b))]
-            )
-            brl, brh = np.concatenate([aa, tt]), np.concatenate([tt, bb])
-            x1 = np.where((x1 > brl) & (x1 < brh), x1, 0.5 * (brl + brh))
-            sign = np.concatenate([np.ones(k), -np.ones(k)])
-            scale = np.maximum(sub[0] + np.concatenate([aa, bb]), 1.0)
-            root, unsure = _edges(ev, sub, brl, brh, x1, sign, scale)
-            lo[sel], hi[sel] = root[:k], root[k:]
-            lo_doubt[sel], hi_doubt[sel] = unsure[:k], unsure[k:]
+            got = _edge_pair(ev, args, a, b, top[sel], at_a, at_b, sel)
+            lo[sel], hi[sel], lo_doubt[sel], hi_doubt[sel] = got[:4]
     out = {"a": a, "b": b, "top": top, "dtop": dtop, "lo": lo, "hi": hi}
     out.update(undecided=undecided, lo_doubt=lo_doubt, hi_doubt=hi_doubt)
     return {key: v.reshape(shape) for key, v in out.items()}
 
 
-def _hermite_root(a, b, ya, yb, sa, sb):
+def _hermite_root(a, b, ya, yb, sa, sb, da=None):
     """A start for the zero of ``D'`` in ``[a, b]``: the zero of the cubic with the values ``ya >
     0 > yb`` and slopes ``sa``, ``sb`` of ``D'`` at the ends (four Newton steps from the secant
-    root, kept in the bracket; the secant root where they fail)."""
+    root, kept in the bracket; the secant root where they fail).  With ``da = D(a)`` also the
+    value of ``D`` there that the cubic predicts (``D(a)`` plus its integral from ``a``): a guess,
+    which the caller checks."""
     h = b - a
     p0, p1, m0, m1 = ya, yb, sa * h, sb * h
     # the cubic in t = (x - a)/h: p0 + m0 t + c2 t^2 + c3 t^3
@@ -462,7 +479,9 @@ def _hermite_root(a, b, ya, yb, sa, sb):
         df = m0 + t * (2 * c2 + 3 * t * c3)
         t = np.minimum(np.maximum(t - f / df, 0.0), 1.0)
     t = np.where(np.isfinite(t) & (t > 0) & (t < 1), t, t0)
-    return a + t * h
+    if da is None:
+        return a + t * h
+    return a + t * h, da + h * t * (p0 + t * (m0 / 2 + t * (c2 / 3 + t * c3 / 4)))
 
 
 def _maximiser(ev, args, a, b, d1a, d1b, x0, *, split=False, iterations: int = 100):
@@ -482,14 +501,14 @@ def _maximiser(ev, args, a, b, d1a, d1b, x0, *, split=False, iterations: int = 1
         lo = np.where(D1 > 0, x, lo)
         hi = np.where(D1 < 0, x, hi)
         s = D1 / D2
-        s = s / (1.0 - 0.5 * s * D3 / D2)
-        s = np.where(D1 == 0, 0.0, s)
+        s = s / (1.0 - 0.5 * s * D3 / D2)  # (0 where D' = 0, NaN -> bisection where D'' = 0)
         xn = x - s
         done = np.abs(s) <= _TOP_STEP
-        narrow = hi - lo <= 1e-12 * np.maximum(np.abs(x), 1.0)
-        if narrow.any():  # bisection has closed in on it: the step to the midpoint
-            s = np.where(narrow & ~done, x - 0.5 * (lo + hi), s)
-            done |= narrow & (np.abs(s) <= _TOP_STEP)
+        if it >= 2:  # (a bracket this narrow takes more than two steps)
+            narrow = hi - lo <= 1e-12 * np.maximum(np.abs(x), 1.0)
+            if narrow.any():  # bisection has closed in on it: the step to the midpoint
+                s = np.where(narrow & ~done, x - 0.5 * (lo + hi), s)
+                done |= narrow & (np.abs(s) <= _TOP_STEP)
         if split:
             noise = NOISE_ULPS * 2.0**-53 * (np.abs(T0) + np.abs(sub[0] + x) * np.abs(T1))
             high = (D > 2 * noise) & ~done
@@ -512,6 +531,25 @@ def _maximiser(ev, args, a, b, d1a, d1b, x0, *, split=False, iterations: int = 1
     return top, dtop, tot, tsl
 
 
+def _edge_pair(ev, args, a, b, top, at_a, at_b, sel, iterations: int = 100):
+    """Both edges of the points ``sel`` in one iteration (:func:`_edges`): the lower in ``[a,
+    top]`` from ``a``, the upper in ``[top, b]`` from ``b``, the first step of each from the
+    values ``at_a``, ``at_b`` there (no new evaluation): ``(lower, upper, lower doubt, upper
+    doubt, good)``, ``good``: both converged to zeros with the edges' slopes."""
+    k = sel.size
+    sub = tuple(np.concatenate([v[sel], v[sel]]) for v in args)
+    aa, bb = a[sel], b[sel]
+    x1 = np.concatenate(
+        [e[sel] - _step(*(v[sel] for v in at[:4]))[0] for e, at in ((a, at_a), (b, at_b))]
+    )
+    brl, brh = np.concatenate([aa, top]), np.concatenate([top, bb])
+    x1 = np.where((x1 > brl) & (x1 < brh), x1, 0.5 * (brl + brh))
+    sign = np.concatenate([np.ones(k), -np.ones(k)])
+    scale = np.maximum(sub[0] + np.concatenate([aa, bb]), 1.0)
+    root, unsure, good = _edges(ev, sub, brl, brh, x1, sign, scale, iterations=iterations)
+    return root[:k], root[k:], unsure[:k], unsure[k:], good[:k] & good[k:]
+
+
 def _step(D, D1, D2, D3):
     """Householder's step of order 3 for a zero of ``D`` (its error after the step ~ step^4; the
     third derivative comes with every evaluation anyway) and Halley's estimate ``K step^3`` of the
@@ -519,8 +557,7 @@ def _step(D, D1, D2, D3):
     estimate of what this step leaves): ``(step, err)``."""
     h = 0.5 * D2 / D1
     q = D / D1
-    s = q * (1.0 - q * h) / (1.0 - q * (2.0 * h - q * D3 / (6.0 * D1)))
-    s = np.where(D == 0, 0.0, s)
+    s = q * (1.0 - q * h) / (1.0 - q * (2.0 * h - q * D3 / (6.0 * D1)))  # (NaN where D' = 0)
     a = np.abs(s)
     return s, (np.abs(D3) / (6.0 * np.abs(D1)) + h * h) * (a * a * a)
 
@@ -532,9 +569,11 @@ def _edges(ev, args, lo, hi, x, sign, scale, *, iterations: int = 100):
     (and its step below :data:`_EDGE_STEP`), or its bracket is that narrow.  ``doubt``: the
     rounding bound of ``D`` over its slope at the root exceeds :data:`DOUBT` relative to ``c +
     root`` (as :func:`_root_doubt`; the slope at the last iterate corrected by ``D''`` times the
-    step)."""
+    step).  Also ``good``: the point stopped by the error estimate (not by the bracket or the
+    count), at a zero where ``sign D`` increases."""
     root = x.copy()
     doubt = np.zeros(x.size, bool)
+    good = np.zeros(x.size, bool)
     idx = np.arange(x.size)
     sub, sg, sc = args, sign, scale
     for it in range(iterations):
@@ -544,10 +583,12 @@ def _edges(ev, args, lo, hi, x, sign, scale, *, iterations: int = 100):
         hi = np.where(f > 0, x, hi)
         s, err = _step(D, D1, D2, D3)
         done = (err <= _EDGE_RTOL * sc) & (np.abs(s) <= _EDGE_STEP)
-        narrow = (hi - lo <= 2 * _EDGE_RTOL * sc) & ~done
-        if narrow.any():  # bisection has closed in on it: the step to the midpoint
-            s = np.where(narrow, x - 0.5 * (lo + hi), s)
-            done |= narrow
+        converged = done.copy()
+        if it >= 2:  # (a bracket this narrow takes more than two steps)
+            narrow = (hi - lo <= 2 * _EDGE_RTOL * sc) & ~done
+            if narrow.any():  # bisection has closed in on it: the step to the midpoint
+                s = np.where(narrow, x - 0.5 * (lo + hi), s)
+                done |= narrow
         last = it == iterations - 1
         if done.any() or last:
             j = np.nonzero(done)[0] if not last else np.arange(x.size)
@@ -558,6 +599,7 @@ def _edges(ev, args, lo, hi, x, sign, scale, *, iterations: int = 100):
             noise = NOISE_ULPS * 2.0**-53 * (np.abs(T0[j]) + at * np.abs(T1[j]))
             root[idx[j]] = r
             doubt[idx[j]] = ~(noise / (slope * at) <= DOUBT)
+            good[idx[j]] = converged[j] & (sg[j] * (D1[j] - D2[j] * sj) > 0)
         if done.all() or last:
             break
         xn = x - s
@@ -565,7 +607,7 @@ def _edges(ev, args, lo, hi, x, sign, scale, *, iterations: int = 100):
         keep = ~done
         idx, x, lo, hi, sg, sc = idx[keep], xn[keep], lo[keep], hi[keep], sg[keep], sc[keep]
         sub = tuple(v[keep] for v in sub)
-    return root, doubt
+    return root, doubt, good
 
 
 # ---------------------------------------------------------------------------------------------
