@@ -419,6 +419,10 @@ def _damped_normal(n, P, edges=None, *, split=False):
         lo_doubt = np.zeros(a.size, bool)
         hi_doubt = np.zeros(a.size, bool)
         solved = np.zeros(a.size, bool)
+        x0 = guess = None
+        if inside.size:
+            ends = (a[inside], b[inside], d1a[inside], d1b[inside])
+            x0, guess = _hermite_root(*ends, at_a[2][inside], at_b[2][inside], at_a[0][inside])
         if inside.size and split:
             # where the cubic predicts D > 0 at its maximiser, the edges at once, in the
             # brackets split there; kept where both converge to simple zeros with the slopes of
@@ -426,8 +430,6 @@ def _damped_normal(n, P, edges=None, *, split=False):
             # side of the split -- D is then positive between them (one zero each side of the
             # maximiser), and the interval exists; an edge whose error is not bounded is
             # escalated as on the other path
-            ends = (a[inside], b[inside], d1a[inside], d1b[inside])
-            x0, guess = _hermite_root(*ends, at_a[2][inside], at_b[2][inside], at_a[0][inside])
             # (not next to m = 1, where the standard form loses the digits that decide it)
             guess = np.where(far[inside], guess, -1.0)
             sel = inside[guess > 0]
@@ -443,11 +445,10 @@ def _damped_normal(n, P, edges=None, *, split=False):
                 dtop[sel] = np.inf  # (D > 0 between the edges: not its maximum)
                 solved[sel] = True
                 keep = ~solved[inside]
-                inside = inside[keep]
+                inside, x0 = inside[keep], x0[keep]
         if inside.size:
             sub = tuple(v[inside] for v in args)
             ends = (a[inside], b[inside], d1a[inside], d1b[inside])
-            x0 = _hermite_root(*ends, at_a[2][inside], at_b[2][inside])
             got = _maximiser(ev, sub, *ends, x0, split=split)
             top[inside], dtop[inside], tot[inside], tsl[inside] = got
         noise = NOISE_ULPS * 2.0**-53 * (np.abs(tot) + np.abs(cc + top) * np.abs(tsl))
