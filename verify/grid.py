@@ -490,8 +490,12 @@ def _maximiser(ev, args, a, b, d1a, d1b, x0, *, split=False, iterations: int = 1
     D(top), sum |t_i|, sum |dt_i/dtheta|)`` (the sizes at the last iterate).  Halley steps on
     ``D'``, a step out of the bracket replaced by bisection, each point dropped once its step is
     below :data:`_TOP_STEP` (which says why that is enough).  ``split=True``: a point is also
-    dropped once ``D`` exceeds twice its rounding bound there (that point is returned)."""
+    dropped once ``D`` exceeds twice its rounding bound there (that point is returned).
+    ``split=False`` (the float stage of the proofs, :mod:`verify.existence`, which start from the
+    maximiser itself): each point is iterated until its step is below ``1e-12`` of ``max(c +
+    (a + b)/2, 1)``, and ``D`` and the sizes are evaluated at the maximiser found."""
     x = np.where((x0 > a) & (x0 < b), x0, 0.5 * (a + b))
+    tl = _TOP_STEP if split else 0.5e-12 * np.maximum(args[0] + 0.5 * (a + b), 1.0)
     lo, hi = a.copy(), b.copy()
     top, dtop = x.copy(), np.full(x.size, -np.inf)
     tot, tsl = np.zeros(x.size), np.zeros(x.size)
@@ -504,12 +508,12 @@ def _maximiser(ev, args, a, b, d1a, d1b, x0, *, split=False, iterations: int = 1
         s = D1 / D2
         s = s / (1.0 - 0.5 * s * D3 / D2)  # (0 where D' = 0, NaN -> bisection where D'' = 0)
         xn = x - s
-        done = np.abs(s) <= _TOP_STEP
+        done = np.abs(s) <= tl
         if it >= 2:  # (a bracket this narrow takes more than two steps)
             narrow = hi - lo <= 1e-12 * np.maximum(np.abs(x), 1.0)
             if narrow.any():  # bisection has closed in on it: the step to the midpoint
                 s = np.where(narrow & ~done, x - 0.5 * (lo + hi), s)
-                done |= narrow & (np.abs(s) <= _TOP_STEP)
+                done |= narrow & (np.abs(s) <= tl)
         if split:
             noise = NOISE_ULPS * 2.0**-53 * (np.abs(T0) + np.abs(sub[0] + x) * np.abs(T1))
             high = (D > 2 * noise) & ~done
@@ -528,7 +532,12 @@ def _maximiser(ev, args, a, b, d1a, d1b, x0, *, split=False, iterations: int = 1
         xn = np.where((xn > lo) & (xn < hi), xn, 0.5 * (lo + hi))
         keep = ~done
         idx, x, lo, hi = idx[keep], xn[keep], lo[keep], hi[keep]
+        if not split:
+            tl = tl[keep]
         sub = tuple(v[keep] for v in sub)
+    if not split:
+        D, _D1, _D2, _D3, tot, tsl = ev(top, *args)
+        dtop = np.asarray(D, float)
     return top, dtop, tot, tsl
 
 
