@@ -18,10 +18,14 @@ Method (all orders and depths at once):
   ``(-pi/2, pi/2)`` (window theorem: one simple root each), started at the fixed point of
   ``theta = asin(-k r f(beta c))``;
 * friction, normal form: the undamped-form roots (same ``r``, ``beta``) bracket the interval
-  (``D <= D0`` and ``D0 < 0`` outside them); the maximiser of ``D`` is the root of ``D'`` (Newton
-  safeguarded by bisection, from the secant start, where ``D'`` changes sign); where ``D`` is
-  positive there, the edges are the zeros of ``D`` left and right of it (Halley safeguarded by
-  bisection, started at the undamped roots);
+  (``D <= D0`` and ``D0 < 0`` outside them); one compiled call gives ``D``, its first three
+  derivatives and its rounding bound (:func:`verify.derived.with_term_sizes`).  From the values
+  at the undamped roots, the cubic through ``D'`` and ``D''`` there gives the maximiser of ``D``
+  and a guess of ``D`` there; where the guess is positive, both edges at once (Householder steps
+  of order 3 safeguarded by bisection, the first from the values at the undamped roots), kept
+  where they converge to zeros with the edges' slopes on either side of that split; elsewhere
+  the maximiser (Halley steps on ``D'`` where it changes sign) and, where ``D`` is positive
+  there, the edges left and right of it.  Every iteration runs only on the points still moving;
 * exact model with a critically or over-damped half: the same on the trace form in
   ``zeta = gamma T/2``, inside the window of the order (see :mod:`verify.solve`);
 * near ``m = 1`` (``1 - beta < NEAR_ONE``): Newton steps on the forms for ``m -> 1``
