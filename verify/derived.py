@@ -70,6 +70,7 @@ __all__ = [
     "half_period_forms",
     "fixed_point_map",
     "term_sizes",
+    "with_term_sizes",
 ]
 
 
@@ -348,6 +349,29 @@ def term_sizes(form: Form) -> Form:
         sizes = Form(f"term sizes of {form.title}", form.args, (total, slope))
         form._cache["term_sizes"] = sizes
     return sizes
+
+
+def with_term_sizes(form: Form, count: int = 3) -> Form:
+    """``form`` and its first ``count`` derivatives followed by its :func:`term_sizes` ``(sum
+    |t_i|, sum |dt_i/dv|)``, as one form of the same arguments (kept on ``form``; built once):
+    compiled for all ``count + 3`` orders it shares every sine, cosine and hyperbolic function
+    among the values, the derivatives and the sizes (a root finder gets its step and the rounding
+    bound of its root from one call).  The terms are those of :func:`term_sizes`, taken without
+    expanding the arguments of the functions (so that they are the form's own), which is the same
+    sum (``tests/test_grid_friction.py`` compares the two)."""
+    key = ("with_term_sizes", count)
+    out = form._cache.get(key)
+    if out is None:
+        import sympy as sp
+
+        var = form.args[0]
+        terms = sp.Add.make_args(sp.expand(form.exprs[0], deep=False))
+        total = sp.Add(*(sp.Abs(t) for t in terms))
+        slope = sp.Add(*(sp.Abs(sp.diff(t, var)) for t in terms))
+        exprs = tuple(form.exprs[: count + 1]) + (total, slope)
+        out = Form(f"{form.title} with term sizes", form.args, exprs)
+        form._cache[key] = out
+    return out
 
 
 def _derivatives(expr, var, count: int) -> tuple:

@@ -21,10 +21,14 @@ Method (all orders and depths at once):
   the four nearest), and takes the first Halley step of every order at once in work arrays kept
   between calls (:func:`_frictionless_theta`), so that it allocates almost nothing per call;
 * friction, normal form: the undamped-form roots (same ``r``, ``beta``) bracket the interval
-  (``D <= D0`` and ``D0 < 0`` outside them); the maximiser of ``D`` is the root of ``D'`` (Newton
-  safeguarded by bisection, from the secant start, where ``D'`` changes sign); where ``D`` is
-  positive there, the edges are the zeros of ``D`` left and right of it (Halley safeguarded by
-  bisection, started at the undamped roots);
+  (``D <= D0`` and ``D0 < 0`` outside them); one compiled call gives ``D``, its first three
+  derivatives and its rounding bound (:func:`verify.derived.with_term_sizes`).  From the values
+  at the undamped roots, the cubic through ``D'`` and ``D''`` there gives the maximiser of ``D``
+  and a guess of ``D`` there; where the guess is positive, both edges at once (Householder steps
+  of order 3 safeguarded by bisection, the first from the values at the undamped roots), kept
+  where they converge to zeros with the edges' slopes on either side of that split; elsewhere
+  the maximiser (Halley steps on ``D'`` where it changes sign) and, where ``D`` is positive
+  there, the edges left and right of it.  Every iteration runs only on the points still moving;
 * exact model with a critically or over-damped half: the same on the trace form in
   ``zeta = gamma T/2``, inside the window of the order (see :mod:`verify.solve`);
 * near ``m = 1`` (``1 - beta < NEAR_ONE``): Newton steps on the forms for ``m -> 1``
@@ -45,7 +49,7 @@ import math
 import threading
 from dataclasses import fields
 from fractions import Fraction
-from functools import lru_cache
+from functools import cache, lru_cache
 
 import mpmath
 import numpy as np
@@ -58,6 +62,7 @@ from .derived import (
     near_one_forms,
     order1_forms,
     term_sizes,
+    with_term_sizes,
 )
 from .float_roots import (
     DOUBT,
@@ -710,74 +715,286 @@ def _bisect_newton_compact(
 
 
 def damped_normal(n, P, edges=None):
-    """Friction, normal form: ``dict(a, b, top, lo, hi)`` of float64 ``theta`` arrays (one parity):
-    the undamped-form bracket ``[a, b]``, the maximiser ``top`` of ``D`` and the edges (NaN where
-    the interval does not exist).  ``edges``: the undamped roots ``normal_edges(n, P)`` if the
-    caller has them already."""
+    """Friction, normal form: ``dict(a, b, top, dtop, lo, hi)`` of float64 ``theta`` arrays (one
+    parity): the undamped-form bracket ``[a, b]``, the maximiser ``top`` of ``D`` with ``dtop =
+    D(top)``, and the edges (NaN where the interval does not exist).  ``edges``: the undamped
+    roots ``normal_edges(n, P)`` if the caller has them already.  (:func:`_damped_normal` also
+    gives the error estimates of the grid.)"""
+    res = _damped_normal(n, P, edges)
+    return {k: res[k] for k in ("a", "b", "top", "dtop", "lo", "hi")}
+
+
+@cache
+def _indicator_all(parity: int, sizes: bool = True):
+    """``(D, D', D'', D''', sum |t_i|, sum |dt_i/dtheta|)`` of the indicator of ``parity`` in one
+    compiled numpy call (:func:`verify.derived.with_term_sizes`: six transcendental calls);
+    ``sizes=False``: the first four only."""
+    orders = (0, 1, 2, 3, 4, 5) if sizes else (0, 1, 2, 3)
+    return with_term_sizes(indicator(parity).real).compiled("numpy", orders)
+
+
+#: the maximiser of ``D`` is taken once its Halley step (on ``D'``) is below this (absolute, in
+#: ``theta``); its value ``D(top)`` is then the Taylor polynomial of degree 3 of ``D`` at the last
+#: iterate, which leaves an error of about ``D'''' step^4/24 <= 1e-21 D''''`` (far below the
+#: rounding of ``D``) and a maximiser off by about ``step^3``, whose ``D`` is below the maximum by
+#: some ``D'' 1e-30``
+_TOP_STEP = 1e-5
+
+#: an edge is taken once Halley's estimate of its error, ``K step^3`` with ``K = |D'''|/(6 |D'|)
+#: + (D''/(2 D'))^2``, is below this times ``max(c + theta, 1)`` (and its step below
+#: :data:`_EDGE_STEP`, where that estimate holds)
+_EDGE_RTOL = 2e-16
+_EDGE_STEP = 1e-4
+
+
+def _damped_normal(n, P, edges=None, *, split=False):
+    """:func:`damped_normal` with the grid's error estimates: also ``undecided`` (the sign of
+    ``D`` at the maximiser is within the rounding bound of ``D``) and ``lo_doubt``, ``hi_doubt``
+    (the edge's estimated relative error -- the rounding bound of ``D`` over its slope at the
+    edge, as :func:`_root_doubt` -- exceeds :data:`DOUBT`).
+
+    Every evaluation gives ``D``, its first three derivatives and the rounding bound from one
+    set of transcendental calls (:func:`_indicator_all`).  The maximiser: Halley steps on ``D'``
+    from the root of the cubic that interpolates ``D'`` and ``D''`` at the ends of the undamped
+    bracket (``D'`` decreasing through it), safeguarded by bisection (:func:`_maximiser`).  The
+    edges: Halley steps on ``D`` from the undamped roots (the first from the values there,
+    computed already), each in the bracket between its undamped root and the maximiser, stopped
+    by Halley's error estimate (:func:`_edges`).  Each iteration runs only on the points still
+    moving.
+
+    ``split=True`` (the grid): ``top`` is only a point where ``D`` exceeds twice its rounding
+    bound where the interval exists (it splits the edges' brackets and proves the existence),
+    the maximiser itself only where no such point has been met; ``dtop`` is ``D`` there."""
     n = np.asarray(n)
-    parity = _parity(int(n.flat[0]))
-    form = indicator(parity)
-    dd = form.compiled("numpy", (1, 2))
-    d012 = form.compiled("numpy", (0, 1, 2))
+    parity = int(_parity(int(n.flat[0])))
+    ev = _indicator_all(parity)
     t1, t2 = normal_edges(n, P) if edges is None else edges
     a, b = np.minimum(t1, t2), np.maximum(t1, t2)
     c = n * _HALF_PI
-    args = (c, P.r2, P.u, P.beta, P.g)
-    shape = np.broadcast(a, *args).shape
-    a, b = _full(a, shape), _full(b, shape)
-    # D, D', D'' at both ends: D' for the maximiser's bracket and start, D where the maximiser is
-    # an end, and all three for the first Halley step of each edge
-    at_a = [np.asarray(v, float) * np.ones(shape) for v in d012(a, *args)]
-    at_b = [np.asarray(v, float) * np.ones(shape) for v in d012(b, *args)]
-    d1a, d1b = at_a[1], at_b[1]
-    # maximiser: zero of D' (decreasing through it), started where the secant of D' through the
-    # ends vanishes
-    inside = (d1a > 0) & (d1b < 0)
-    top = np.where(d1a <= 0, a, b)
-    dtop = np.where(d1a <= 0, at_a[0], at_b[0])
-    scale = np.maximum(c + 0.5 * (a + b), 1.0)
-    if inside.any():  # (only there: elsewhere D' has no sign change)
-        sel = np.nonzero(inside.ravel())[0]
-        aa, bb, ya, yb, sc = (np.ravel(v)[sel] for v in (a, b, d1a, d1b, scale))
-        sub = tuple(_full(v, shape).ravel()[sel] for v in args)
-        with np.errstate(divide="ignore", invalid="ignore"):
-            x0 = aa + ya * (bb - aa) / (ya - yb)
-        x0 = np.where((x0 > aa) & (x0 < bb), x0, 0.5 * (aa + bb))
-        # to 1e-12 of c + theta: D(top) is then below its maximum by ~D'' 1e-24, far below
-        # the rounding of D (the existence decision and the edge brackets need no more)
-        tops = _bisect_newton_compact(dd, sub, aa, bb, x0, False, scale=sc, rtol=1e-12)
-        top = np.array(top, float, copy=True)
-        top.ravel()[sel] = tops
-        dtop.ravel()[sel] = np.asarray(d012(tops, *sub)[0], float)
-    exists = dtop > 0
-    lo = np.full(shape, np.nan)
-    hi = np.full(shape, np.nan)
-    if exists.any():
-        # both edges in one Halley iteration (only where the interval exists: elsewhere there
-        # is no sign change), each from its undamped root, in the bracket between it and the
-        # maximiser (D negative at the one end, positive at the other)
-        sel = np.nonzero(exists.ravel())[0]
-        cc = _full(c, shape).ravel()[sel]
-        aa, bb, tt = (np.ravel(v)[sel] for v in (a, b, top))
-        sub = tuple(np.concatenate([w, w]) for w in (_full(v, shape).ravel()[sel] for v in args))
-        k = sel.size
-        both = _bisect_newton_compact(
-            d012,
-            sub,
-            np.concatenate([aa, tt]),
-            np.concatenate([tt, bb]),
-            np.concatenate([aa, bb]),
-            np.concatenate([np.ones(k), -np.ones(k)]),
-            scale=np.maximum(np.concatenate([cc + aa, cc + bb]), 1.0),
-            halley=True,
-            first=[
-                np.concatenate([va.ravel()[sel], vb.ravel()[sel]])
-                for va, vb in zip(at_a, at_b, strict=True)
-            ],
-        )
-        lo.ravel()[sel] = both[:k]
-        hi.ravel()[sel] = both[k:]
-    return {"a": a, "b": b, "top": top, "dtop": dtop, "lo": lo, "hi": hi}
+    params = (c, P.r2, P.u, P.beta, P.g)
+    shape = np.broadcast(a, b, *params).shape
+    a, b = _full(a, shape).ravel(), _full(b, shape).ravel()
+    args = tuple(_full(v, shape).ravel() for v in params)
+    cc = args[0]
+    far = _full(np.asarray(P.bm) >= NEAR_ONE, shape).ravel() if split else None
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+        at_a = _indicator_all(parity, False)(a, *args)  # (the sizes only where needed)
+        at_b = _indicator_all(parity, False)(b, *args)
+        d1a, d1b = at_a[1], at_b[1]
+        left = d1a <= 0
+        top = np.where(left, a, b)
+        dtop = np.where(left, at_a[0], at_b[0])
+        tot, tsl = np.zeros(a.size), np.zeros(a.size)
+        within = (d1a > 0) & (d1b < 0)
+        inside = np.nonzero(within)[0]
+        end = np.nonzero(~within)[0]
+        if end.size:  # the maximiser is an end: the sizes there
+            got = ev(top[end], *(v[end] for v in args))
+            tot[end], tsl[end] = got[4], got[5]
+        lo = np.full(a.size, np.nan)
+        hi = np.full(a.size, np.nan)
+        lo_doubt = np.zeros(a.size, bool)
+        hi_doubt = np.zeros(a.size, bool)
+        solved = np.zeros(a.size, bool)
+        x0 = guess = None
+        if inside.size:
+            ends = (a[inside], b[inside], d1a[inside], d1b[inside])
+            x0, guess = _hermite_root(*ends, at_a[2][inside], at_b[2][inside], at_a[0][inside])
+        if inside.size and split:
+            # where the cubic predicts D > 0 at its maximiser, the edges at once, in the
+            # brackets split there; kept where both converge to simple zeros with the slopes of
+            # the edges (D increasing through the lower, decreasing through the upper) on either
+            # side of the split -- D is then positive between them (one zero each side of the
+            # maximiser), and the interval exists; an edge whose error is not bounded is
+            # escalated as on the other path
+            # (not next to m = 1, where the standard form loses the digits that decide it)
+            guess = np.where(far[inside], guess, -1.0)
+            sel = inside[guess > 0]
+            if sel.size:
+                split_at = x0[guess > 0]
+                got = _edge_pair(ev, args, a, b, split_at, at_a, at_b, sel, iterations=8)
+                ok = got[4] & (got[0] < split_at) & (split_at < got[1])
+                ok &= got[1] - got[0] > 1e-8 * np.maximum(np.abs(cc[sel] + got[1]), 1.0)
+                sel = sel[ok]
+                lo[sel], hi[sel] = got[0][ok], got[1][ok]
+                lo_doubt[sel], hi_doubt[sel] = got[2][ok], got[3][ok]
+                top[sel] = split_at[ok]
+                dtop[sel] = np.inf  # (D > 0 between the edges: not its maximum)
+                solved[sel] = True
+                keep = ~solved[inside]
+                inside, x0 = inside[keep], x0[keep]
+        if inside.size:
+            sub = tuple(v[inside] for v in args)
+            ends = (a[inside], b[inside], d1a[inside], d1b[inside])
+            got = _maximiser(ev, sub, *ends, x0, split=split)
+            top[inside], dtop[inside], tot[inside], tsl[inside] = got
+        noise = NOISE_ULPS * 2.0**-53 * (np.abs(tot) + np.abs(cc + top) * np.abs(tsl))
+        undecided = np.abs(dtop) <= noise
+        sel = np.nonzero((dtop > 0) & ~solved)[0]
+        if sel.size:
+            got = _edge_pair(ev, args, a, b, top[sel], at_a, at_b, sel)
+            lo[sel], hi[sel], lo_doubt[sel], hi_doubt[sel] = got[:4]
+    out = {"a": a, "b": b, "top": top, "dtop": dtop, "lo": lo, "hi": hi}
+    out.update(undecided=undecided, lo_doubt=lo_doubt, hi_doubt=hi_doubt)
+    return {key: v.reshape(shape) for key, v in out.items()}
+
+
+def _hermite_root(a, b, ya, yb, sa, sb, da=None):
+    """A start for the zero of ``D'`` in ``[a, b]``: the zero of the cubic with the values ``ya >
+    0 > yb`` and slopes ``sa``, ``sb`` of ``D'`` at the ends (four Newton steps from the secant
+    root, kept in the bracket; the secant root where they fail).  With ``da = D(a)`` also the
+    value of ``D`` there that the cubic predicts (``D(a)`` plus its integral from ``a``): a guess,
+    which the caller checks."""
+    h = b - a
+    p0, p1, m0, m1 = ya, yb, sa * h, sb * h
+    # the cubic in t = (x - a)/h: p0 + m0 t + c2 t^2 + c3 t^3
+    c2 = 3 * (p1 - p0) - 2 * m0 - m1
+    c3 = 2 * (p0 - p1) + m0 + m1
+    t0 = ya / (ya - yb)
+    t = t0
+    for _ in range(4):
+        f = p0 + t * (m0 + t * (c2 + t * c3))
+        df = m0 + t * (2 * c2 + 3 * t * c3)
+        t = np.minimum(np.maximum(t - f / df, 0.0), 1.0)
+    t = np.where(np.isfinite(t) & (t > 0) & (t < 1), t, t0)
+    if da is None:
+        return a + t * h
+    return a + t * h, da + h * t * (p0 + t * (m0 / 2 + t * (c2 / 3 + t * c3 / 4)))
+
+
+def _maximiser(ev, args, a, b, d1a, d1b, x0, *, split=False, iterations: int = 100):
+    """The maximiser of ``D`` in ``[a, b]`` where ``D'(a) > 0 > D'(b)``, from ``x0``: ``(top,
+    D(top), sum |t_i|, sum |dt_i/dtheta|)`` (the sizes at the last iterate).  Halley steps on
+    ``D'``, a step out of the bracket replaced by bisection, each point dropped once its step is
+    below :data:`_TOP_STEP` (which says why that is enough).  ``split=True``: a point is also
+    dropped once ``D`` exceeds twice its rounding bound there (that point is returned).
+    ``split=False`` (the float stage of the proofs, :mod:`verify.existence`, which start from the
+    maximiser itself): each point is iterated until its step is below ``1e-12`` of ``max(c +
+    (a + b)/2, 1)``, and ``D`` and the sizes are evaluated at the maximiser found."""
+    x = np.where((x0 > a) & (x0 < b), x0, 0.5 * (a + b))
+    tl = _TOP_STEP if split else 0.5e-12 * np.maximum(args[0] + 0.5 * (a + b), 1.0)
+    lo, hi = a.copy(), b.copy()
+    top, dtop = x.copy(), np.full(x.size, -np.inf)
+    tot, tsl = np.zeros(x.size), np.zeros(x.size)
+    idx = np.arange(x.size)
+    sub = args
+    for it in range(iterations):
+        D, D1, D2, D3, T0, T1 = ev(x, *sub)
+        lo = np.where(D1 > 0, x, lo)
+        hi = np.where(D1 < 0, x, hi)
+        s = D1 / D2
+        s = s / (1.0 - 0.5 * s * D3 / D2)  # (0 where D' = 0, NaN -> bisection where D'' = 0)
+        xn = x - s
+        done = np.abs(s) <= tl
+        if it >= 2:  # (a bracket this narrow takes more than two steps)
+            narrow = hi - lo <= 1e-12 * np.maximum(np.abs(x), 1.0)
+            if narrow.any():  # bisection has closed in on it: the step to the midpoint
+                s = np.where(narrow & ~done, x - 0.5 * (lo + hi), s)
+                done |= narrow & (np.abs(s) <= tl)
+        if split:
+            noise = NOISE_ULPS * 2.0**-53 * (np.abs(T0) + np.abs(sub[0] + x) * np.abs(T1))
+            high = (D > 2 * noise) & ~done
+            if high.any():
+                s = np.where(high, 0.0, s)
+                done |= high
+        last = it == iterations - 1
+        if done.any() or last:
+            j = np.nonzero(done)[0] if not last else np.arange(x.size)
+            sj = s[j]
+            top[idx[j]] = x[j] - sj
+            dtop[idx[j]] = D[j] - sj * (D1[j] - sj * (0.5 * D2[j] - sj * D3[j] / 6.0))
+            tot[idx[j]], tsl[idx[j]] = T0[j], T1[j]
+        if done.all() or last:
+            break
+        xn = np.where((xn > lo) & (xn < hi), xn, 0.5 * (lo + hi))
+        keep = ~done
+        idx, x, lo, hi = idx[keep], xn[keep], lo[keep], hi[keep]
+        if not split:
+            tl = tl[keep]
+        sub = tuple(v[keep] for v in sub)
+    if not split:
+        D, _D1, _D2, _D3, tot, tsl = ev(top, *args)
+        dtop = np.asarray(D, float)
+    return top, dtop, tot, tsl
+
+
+def _edge_pair(ev, args, a, b, top, at_a, at_b, sel, iterations: int = 100):
+    """Both edges of the points ``sel`` in one iteration (:func:`_edges`): the lower in ``[a,
+    top]`` from ``a``, the upper in ``[top, b]`` from ``b``, the first step of each from the
+    values ``at_a``, ``at_b`` there (no new evaluation): ``(lower, upper, lower doubt, upper
+    doubt, good)``, ``good``: both converged to zeros with the edges' slopes."""
+    k = sel.size
+    sub = tuple(np.concatenate([v[sel], v[sel]]) for v in args)
+    aa, bb = a[sel], b[sel]
+    x1 = np.concatenate(
+        [e[sel] - _step(*(v[sel] for v in at[:4]))[0] for e, at in ((a, at_a), (b, at_b))]
+    )
+    brl, brh = np.concatenate([aa, top]), np.concatenate([top, bb])
+    x1 = np.where((x1 > brl) & (x1 < brh), x1, 0.5 * (brl + brh))
+    sign = np.concatenate([np.ones(k), -np.ones(k)])
+    scale = np.maximum(sub[0] + np.concatenate([aa, bb]), 1.0)
+    root, unsure, good = _edges(ev, sub, brl, brh, x1, sign, scale, iterations=iterations)
+    return root[:k], root[k:], unsure[:k], unsure[k:], good[:k] & good[k:]
+
+
+def _step(D, D1, D2, D3):
+    """Householder's step of order 3 for a zero of ``D`` (its error after the step ~ step^4; the
+    third derivative comes with every evaluation anyway) and Halley's estimate ``K step^3`` of the
+    error a step of order 2 would leave, ``K = |D'''|/(6 |D'|) + (D''/(2 D'))^2`` (an upper
+    estimate of what this step leaves): ``(step, err)``."""
+    h = 0.5 * D2 / D1
+    q = D / D1
+    s = q * (1.0 - q * h) / (1.0 - q * (2.0 * h - q * D3 / (6.0 * D1)))  # (NaN where D' = 0)
+    a = np.abs(s)
+    return s, (np.abs(D3) / (6.0 * np.abs(D1)) + h * h) * (a * a * a)
+
+
+def _edges(ev, args, lo, hi, x, sign, scale, *, iterations: int = 100):
+    """The zeros of ``D`` in ``[lo, hi]`` (``sign D`` negative at ``lo``, positive at ``hi``),
+    from ``x``: ``(roots, doubt)``.  Steps of :func:`_step`, a step out of the bracket replaced by
+    bisection; a point stops once the error estimate is below :data:`_EDGE_RTOL` times ``scale``
+    (and its step below :data:`_EDGE_STEP`), or its bracket is that narrow.  ``doubt``: the
+    rounding bound of ``D`` over its slope at the root exceeds :data:`DOUBT` relative to ``c +
+    root`` (as :func:`_root_doubt`; the slope at the last iterate corrected by ``D''`` times the
+    step).  Also ``good``: the point stopped by the error estimate (not by the bracket or the
+    count), at a zero where ``sign D`` increases."""
+    root = x.copy()
+    doubt = np.zeros(x.size, bool)
+    good = np.zeros(x.size, bool)
+    idx = np.arange(x.size)
+    sub, sg, sc = args, sign, scale
+    for it in range(iterations):
+        D, D1, D2, D3, T0, T1 = ev(x, *sub)
+        f = sg * D
+        lo = np.where(f < 0, x, lo)
+        hi = np.where(f > 0, x, hi)
+        s, err = _step(D, D1, D2, D3)
+        done = (err <= _EDGE_RTOL * sc) & (np.abs(s) <= _EDGE_STEP)
+        converged = done.copy()
+        if it >= 2:  # (a bracket this narrow takes more than two steps)
+            narrow = (hi - lo <= 2 * _EDGE_RTOL * sc) & ~done
+            if narrow.any():  # bisection has closed in on it: the step to the midpoint
+                s = np.where(narrow, x - 0.5 * (lo + hi), s)
+                done |= narrow
+        last = it == iterations - 1
+        if done.any() or last:
+            j = np.nonzero(done)[0] if not last else np.arange(x.size)
+            sj = s[j]
+            r = x[j] - sj
+            slope = np.abs(D1[j] - D2[j] * sj)
+            at = np.abs(sub[0][j] + r)
+            noise = NOISE_ULPS * 2.0**-53 * (np.abs(T0[j]) + at * np.abs(T1[j]))
+            root[idx[j]] = r
+            doubt[idx[j]] = ~(noise / (slope * at) <= DOUBT)
+            good[idx[j]] = converged[j] & (sg[j] * (D1[j] - D2[j] * sj) > 0)
+        if done.all() or last:
+            break
+        xn = x - s
+        xn = np.where((xn > lo) & (xn < hi), xn, 0.5 * (lo + hi))
+        keep = ~done
+        idx, x, lo, hi, sg, sc = idx[keep], xn[keep], lo[keep], hi[keep], sg[keep], sc[keep]
+        sub = tuple(v[keep] for v in sub)
+    return root, doubt, good
 
 
 # ---------------------------------------------------------------------------------------------
@@ -789,22 +1006,27 @@ def _halves_exact(m, Q: Fraction):
     return [regime_of(4 * Q * Q - 1 - x) for x in m], [regime_of(4 * Q * Q - 1 + x) for x in m]
 
 
+#: the regime names by the codes of :func:`_halves` (``-1``, ``0``, ``+1``), shifted by one
+_REGIMES = ("over", "critical", "under")
+
+
 def _halves(dep, cols, Q: Fraction):
-    """:func:`_halves_exact` for the depths ``cols`` of ``dep``, decided in floats where
-    ``4 Q^2 - 1 -+ m`` is far from 0 (its float value is within a few ulp of ``4 Q^2 + 1`` of
-    the exact one: ``4 Q^2 - 1`` and ``m`` are each rounded once) and from the exact depth
-    elsewhere."""
+    """:func:`_halves_exact` for the depths ``cols`` of ``dep`` as int8 arrays of codes (``+1``
+    under-, ``0`` critically, ``-1`` over-damped; the name is ``_REGIMES[code + 1]``), decided in
+    floats where ``4 Q^2 - 1 -+ m`` is far from 0 (its float value is within a few ulp of ``4 Q^2
+    + 1`` of the exact one: ``4 Q^2 - 1`` and ``m`` are each rounded once) and from the exact
+    depth elsewhere."""
     q = 4 * Q * Q - 1
     qf, ms = float(q), dep.m[cols]
     margin = 1e-12 * (abs(qf) + 2.0)
-    names = []
+    codes = []
     for sign in (-1, 1):
         u = qf + sign * ms
-        out = np.where(u > 0, "under", "over").astype(object)
+        out = np.where(u > 0, 1, -1).astype(np.int8)
         for j in np.nonzero(np.abs(u) <= margin)[0]:
-            out[j] = regime_of(q + sign * dep.exact(int(cols[j])))
-        names.append(list(out))
-    return names[0], names[1]
+            out[j] = _REGIMES.index(regime_of(q + sign * dep.exact(int(cols[j])))) - 1
+        codes.append(out)
+    return codes[0], codes[1]
 
 
 #: the double path serves depths with ``1 - m`` at least this (the last double below 1 has
@@ -1065,7 +1287,7 @@ def _double_grid(orders, dep: _Depths, cols, Qx, damping):
     Qexact = Fraction(Qx) if not isinstance(Qx, Fraction) else Qx
     h1, h2 = _halves(dep, cols, Qexact)
     u1 = (4 * float(Qexact) ** 2 - 1 - ms) / (1 + ms)
-    normal = np.array([a == "under" for a in h1]) & (u1 >= NEAR_CRITICAL**2)
+    normal = (h1 == 1) & (u1 >= NEAR_CRITICAL**2)
     if normal.any():
         idx = np.nonzero(normal)[0]
         sub = ms[idx]
@@ -1076,11 +1298,12 @@ def _double_grid(orders, dep: _Depths, cols, Qx, damping):
         out[:, :, idx] = part
     for j in np.nonzero(~normal)[0]:
         T = trace_params(dep.exact(int(cols[j])), Qexact, backend("math"))
+        regimes = (_REGIMES[h1[j] + 1], _REGIMES[h2[j] + 1])
         for i, n in enumerate(orders):
-            window = trace_window_ends(n, (h1[j], h2[j]), T)
+            window = trace_window_ends(n, regimes, T)
             if window is None:
                 continue
-            res = damped_trace(n, (h1[j], h2[j]), T, window)
+            res = damped_trace(n, regimes, T, window)
             scale = 2 * float(Qexact) / math.pi
             out[i, 0, j] = res["lo"] * scale
             out[i, 1, j] = res["hi"] * scale
@@ -1237,7 +1460,7 @@ def _fill_normal(out, orders, ms, P, damped: bool, *, system=None, om=None) -> n
         if rows.size == 0:
             continue
         n = orders_arr[rows][:, None]
-        res = damped_normal(n, P, edges=(t1[rows], t2[rows]))
+        res = _damped_normal(n, P, edges=(t1[rows], t2[rows]), split=True)
         near = near_one_forms()[2]
         lo = _polish_near_one(res["lo"], orders_arr[rows], P, near)
         hi = _polish_near_one(res["hi"], orders_arr[rows], P, near)
@@ -1341,26 +1564,25 @@ def _normal_doubt(n, P, res, lo, hi):
     """Masks of the entries of the normal-form friction path that must be escalated: ``(top,
     lower, upper)``: the sign of ``D`` at its maximiser within rounding (existence undecided),
     and each edge whose estimated error exceeds :data:`DOUBT` (near a threshold or a closing gap,
-    where the edges are a near-double root)."""
-    parity = _parity(int(n.flat[0]))
+    where the edges are a near-double root).  :func:`_damped_normal` gave them for the standard
+    form; the depths polished on the form for ``m -> 1`` (``1 - beta <`` :data:`NEAR_ONE`) are
+    judged here on that form."""
+    undecided, edges = res["undecided"], [res["lo_doubt"].copy(), res["hi_doubt"].copy()]
+    cols = np.nonzero(np.asarray(P.bm) < NEAR_ONE)[0]
+    if cols.size == 0:
+        return undecided, edges[0], edges[1]
     c = n * _HALF_PI
-    params = (c, P.r2, P.u, P.beta, P.g, P.bm)
-    shape = np.broadcast_shapes(*(np.shape(v) for v in (res["top"], lo, hi, *params)))
-    top, lo, hi = (_full(v, shape) for v in (res["top"], lo, hi))
-    c, r2, u, beta, g, bm = (_full(v, shape) for v in params)
-    form, nearf = indicator(parity), near_one_forms()[2]
+    params = (c, P.u[cols], P.bm[cols], P.g[cols])
+    shape = np.broadcast_shapes(lo[:, cols].shape, *(np.shape(v) for v in params))
+    args = tuple(_full(v, shape) for v in params)
+    nearf = near_one_forms()[2]
     with np.errstate(invalid="ignore", over="ignore"):
-        undecided = np.abs(res["dtop"]) <= _noise(form, top, (c, r2, u, beta, g), c + top)
-        edges = []
-        for theta in (lo, hi):
-            bad = np.zeros(theta.shape, bool)
-            for on, f, names in (
-                (bm >= NEAR_ONE, form, (c, r2, u, beta, g)),
-                (bm < NEAR_ONE, nearf, (c, u, bm, g)),
-            ):
-                sel = on & np.isfinite(theta)
-                if sel.any():
-                    t, args = theta[sel], tuple(a[sel] for a in names)
-                    bad[sel] = _root_doubt(f, t, args, args[0] + t)
-            edges.append(bad)
+        for bad, theta in zip(edges, (lo, hi), strict=True):
+            t = _full(theta[:, cols], shape)
+            sel = np.isfinite(t)
+            part = np.zeros(shape, bool)
+            if sel.any():
+                sub = tuple(a[sel] for a in args)
+                part[sel] = _root_doubt(nearf, t[sel], sub, sub[0] + t[sel])
+            bad[:, cols] = part
     return undecided, edges[0], edges[1]

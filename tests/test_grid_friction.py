@@ -1,0 +1,159 @@
+"""The double grid with friction against the certified boundary, point by point.
+
+Reference: the certified :func:`verify.solve.boundary` at the exact depth of each point (its digits
+are proven by ball arithmetic; it never uses the grid's values), at 20 digits, or more where it asks
+for more.  The claim checked is the one stated in :func:`verify.grid.boundary_grid`: every finite
+entry within a relative :data:`verify.grid.ERROR_BOUND` of the exact edge, NaN exactly where the
+interval does not exist.  Depths: random (fixed seed) over the whole range, next to the thresholds
+where an interval appears or closes (where the two edges are a near-double root of the indicator),
+and next to critical damping of either half in the exact model (where the grid changes from the
+normal form to the trace form).
+"""
+
+from __future__ import annotations
+
+from fractions import Fraction
+
+import numpy as np
+import pytest
+
+from verify.certify import CertificationError
+from verify.grid import ERROR_BOUND, boundary_grid
+from verify.solve import boundary
+
+ORDERS = [1, 2, 3, 4, 5, 6]
+
+#: the thresholds of orders 1-6 with Q = 7 (depths where an interval appears or closes), from
+#: ``verify.existence.existence(n, 7, damping=..., digits=15)`` (proven enclosures; here they only
+#: choose depths next to them -- the reference at each depth is the certified boundary)
+THRESHOLDS = {
+    "exact": [
+        0.07442366215504008,
+        0.296290949907762,
+        0.2600664686827162,
+        0.4826539711306615,
+        0.6520353346861848,
+        0.3191726978904458,
+        0.7789682720051991,
+        0.8133908237386502,
+        0.5081551097314514,
+        0.8750605899326807,
+        0.8867408607788055,
+        0.6547139014937136,
+        0.9197659551875935,
+        0.9247372611288041,
+    ],
+    "paper": [
+        0.07444395814033679,
+        0.29695044545435956,
+        0.2593586091943339,
+        0.4859976240146599,
+        0.6536435572591718,
+        0.31971495877639283,
+        0.7807238824815731,
+        0.8146848054712842,
+        0.5094974027461772,
+        0.876169940546023,
+        0.8876624913076495,
+        0.6562814093132477,
+        0.9205154608156897,
+        0.9253996912664038,
+    ],
+}
+
+
+def _certified(n, m, Q, damping):
+    for digits in (20, 40, 80):
+        try:
+            return boundary(n, m, Q=Q, damping=damping, digits=digits)
+        except CertificationError:
+            continue
+    raise AssertionError(f"no certified reference for order {n}, m = {m}, Q = {Q}, {damping}")
+
+
+def _bad_points(orders, ms, Q, damping):
+    """Every disagreement of the grid with the certified edges at the depths ``ms``."""
+    grid = boundary_grid(orders, ms, Q=Q, damping=damping)
+    assert grid.shape == (len(orders), 2, len(ms))
+    bad = []
+    for i, n in enumerate(orders):
+        for j, m in enumerate(ms):
+            b = _certified(n, m, Q, damping)
+            where = f"order {n}, m = {m!r}, Q = {Q} {damping}"
+            if not b.exists:
+                if not np.isnan(grid[i, :, j]).all():
+                    bad.append(f"{where}: grid {grid[i, :, j]}, certified: no interval")
+                continue
+            for k, want in ((0, b.lower), (1, b.upper)):
+                got, want = grid[i, k, j], float(want)
+                rel = abs(got - want) / abs(want) if np.isfinite(got) else np.inf
+                if not rel <= ERROR_BOUND:
+                    edge = "lower" if k == 0 else "upper"
+                    bad.append(f"{where}, {edge}: grid {got!r}, certified {want!r}, rel {rel:.2e}")
+    return bad
+
+
+@pytest.mark.parametrize("damping", ["exact", "paper"])
+def test_random_depths(damping):
+    """150 depths uniform in (0, 1) (seeded), orders 1-6, Q = 7."""
+    rng = np.random.default_rng(20261123 + (damping == "paper"))
+    ms = np.sort(rng.uniform(0.0, 1.0, 150))
+    bad = _bad_points(ORDERS, ms, 7, damping)
+    assert not bad, f"{len(bad)} bad points:\n" + "\n".join(bad)
+
+
+@pytest.mark.parametrize("damping", ["exact", "paper"])
+def test_next_to_the_thresholds(damping):
+    """Depths a relative 1e-4 ... 1e-12 either side of every threshold of orders 1-6 (Q = 7):
+    the edges merge into a double root of the indicator there, and the grid must either bound its
+    error or hand the point to ball arithmetic (and be NaN exactly where nothing exists)."""
+    ms = []
+    for t in THRESHOLDS[damping]:
+        for k in (4, 6, 8, 10, 12):
+            ms += [t * (1 - 10.0**-k), t * (1 + 10.0**-k)]
+    ms = np.sort(np.array(ms))
+    bad = _bad_points(ORDERS, ms, 7, damping)
+    assert not bad, f"{len(bad)} bad points:\n" + "\n".join(bad)
+
+
+@pytest.mark.parametrize(
+    "Q, critical",
+    [
+        # half 1 critically damped where 4 Q^2 - 1 - m = 0: m = 11/25 for Q = 3/5
+        (Fraction(3, 5), Fraction(11, 25)),
+        # half 2 critically damped where 4 Q^2 - 1 + m = 0: m = 9/25 for Q = 2/5
+        (Fraction(2, 5), Fraction(9, 25)),
+    ],
+)
+def test_next_to_critical_damping(Q, critical):
+    """Exact model: depths at critical damping of one half (exactly, as a rational) and a relative
+    1e-3 ... 1e-15 either side, where the grid changes between the normal form and the trace
+    form, and the normal form's parameters lose digits to cancellation."""
+    ms = [critical]
+    for k in (3, 6, 9, 12, 15):
+        d = Fraction(1, 10**k) * critical
+        ms += [critical - d, critical + d]
+    bad = _bad_points([1, 2, 3], ms, Q, "exact")
+    assert not bad, f"{len(bad)} bad points:\n" + "\n".join(bad)
+
+
+@pytest.mark.parametrize("parity", [1, -1])
+def test_one_call_gives_the_forms_and_their_term_sizes(parity):
+    """:func:`verify.derived.with_term_sizes` (the grid's one call per evaluation) gives the same
+    values as the indicator's own compilations and :func:`verify.derived.term_sizes` (two
+    independent lambdifications of the same sympy expressions; they differ only by rounding)."""
+    from verify.derived import indicator, term_sizes, with_term_sizes
+
+    rng = np.random.default_rng(7)
+    k = 200
+    theta = rng.uniform(-1.5, 1.5, k)
+    c = rng.integers(1, 7, k) * (np.pi / 2)
+    r2 = rng.uniform(0.0, 0.9, k)
+    args = (theta, c, r2, 1 - r2, rng.uniform(0.0, 1.0, k), rng.uniform(0.0, 0.2, k))
+    form = indicator(parity).real
+    both = with_term_sizes(form).compiled("numpy", (0, 1, 2, 3, 4, 5))(*args)
+    want = [form.compiled("numpy", j)(*args) for j in range(4)]
+    want += list(term_sizes(form).compiled("numpy", (0, 1))(*args))
+    sizes = np.abs(want[4]) + np.abs(want[5])  # every value is a sum of terms of these sizes
+    for got, ref in zip(both, want, strict=True):
+        assert np.all(np.abs(got - ref) <= 1e-14 * (sizes + np.abs(ref)))
