@@ -101,10 +101,61 @@ class _Hump:
     point: object = None
     #: ``(D, D')`` in one evaluation (shared subexpressions), where there is one
     DdD: Callable | None = None
+    #: ``(D', D'')`` in one evaluation, where there is one
+    d12D: Callable | None = None
+
+
+def _unimodal_shape(h: _Hump, lo_root, hi_root, budget: int = 32) -> bool:
+    """The shape from unimodality: the two root balls disjoint and inside ``(a, b)``, and
+    ``[a, b]`` cut (bisection at 64 bits, at most ``budget`` sub-balls; often the whole bracket
+    at once) into pieces each ``cap`` (``D'' < 0``), ``up`` (``D' > 0``) or ``down`` (``D' <
+    0``), with no ``up`` right of a ``down``.
+
+    Then ``D' > 0`` up to the last ``up`` piece (a run of ``cap`` pieces before an ``up`` one has
+    ``D'`` decreasing to a positive value), ``D' < 0`` from the first ``down`` piece on, and ``D'``
+    strictly decreasing between them: ``D`` rises strictly, then falls strictly, so it has at most
+    two zeros.  The two enclosed zeros are therefore all of them, ``D > 0`` between them and ``D <
+    0`` on either side: the shape of :func:`_prove_shape`, and existence with it.  ``False`` where
+    this is not proven."""
+    with ctx.workprec(64):
+        a, b = ball(h.a), ball(h.b)
+        lo, hi = lo_root.ball, hi_root.ball
+        if not (a < lo and lo < hi and hi < b):
+            return False
+        stack, count, down = [(a, b)], 0, False
+        while stack:  # left to right: the left half is pushed last
+            u, v = stack.pop()
+            count += 1
+            if count > budget:
+                return False
+            mid = ((u + v) / 2).mid()
+            X = arb(mid, max(v - mid, mid - u).abs_upper())
+            if h.d12D is not None:
+                d1, d2 = h.d12D(X)
+            else:
+                d1, d2 = None, h.d2D(X)
+            if d2 < 0:
+                continue  # cap: allowed anywhere
+            if d1 is None:
+                d1 = h.dD(X)
+            if d1 < 0:
+                down = True
+                continue
+            if d1 > 0:
+                if down:
+                    return False
+                continue
+            stack.append((mid, v))
+            stack.append((u, mid))
+        return True
 
 
 def _prove_shape(h: _Hump, lo_root, hi_root) -> bool:
-    """``D < 0`` on ``[a, lower)``, ``> 0`` on ``(lower, upper)``, ``< 0`` on ``(upper, b]``."""
+    """``D < 0`` on ``[a, lower)``, ``> 0`` on ``(lower, upper)``, ``< 0`` on ``(upper, b]``:
+    by unimodality where that is proven cheaply (:func:`_unimodal_shape`), else by signs on
+    sub-intervals around monotone neighbourhoods of the two zeros."""
+    if _unimodal_shape(h, lo_root, hi_root):
+        return True
     e1, e2 = float(lo_root.ball.mid()), float(hi_root.ball.mid())
     top_prec = max(256, 2 * max(lo_root.prec, hi_root.prec))
     precs = [64]
@@ -213,7 +264,48 @@ def taylor_negative(h: _Hump, t: float, Dt, D1t, tries: int, prec: int, budget: 
 def _solve_hump(req: Request, h: _Hump, bits: int):
     """Decide existence and enclose the two zeros.
 
+    Where the float stage found both edges, each is enclosed by the fast path
+    (:func:`verify.certify.quick_root`) and the concavity of ``D`` on the bracket proves the
+    shape, existence included (:func:`_unimodal_shape`).  Otherwise, or where that fails: a point
+    with ``D > 0`` (or ``D < 0`` proven on all of ``[a, b]``: no interval), the two zeros either
+    side of it, and the shape by :func:`_prove_shape`.
+
     Returns ``(exists, lo_root, hi_root, shape_ok)``."""
+
+    def scale(t):
+        return max(min(abs(t + sh) for sh in h.shifts), h.floor, 1e-300)
+
+    neg = lambda t: -h.D(t)  # noqa: E731
+    dneg = lambda t: -h.dD(t)  # noqa: E731
+    if h.DdD is not None:
+        both = h.DdD
+
+        def both_neg(t):
+            v, d = h.DdD(t)
+            return -v, -d
+
+    else:
+        both = lambda t: (h.D(t), h.dD(t))  # noqa: E731
+        both_neg = lambda t: (neg(t), dneg(t))  # noqa: E731
+
+    def quick(lower: bool, top):
+        """The fast path for the float edge on one side of ``top`` (``None`` where it fails)."""
+        if lower:
+            return quick_root(
+                both, h.D, h.dD, h.lo, bits=bits, floor=h.floor,
+                bracket=(ball(h.a), ball(top)), scale=scale,
+            )  # fmt: skip
+        return quick_root(
+            both_neg, neg, dneg, h.hi, bits=bits, floor=h.floor,
+            bracket=(ball(top), ball(h.b)), scale=scale,
+        )  # fmt: skip
+
+    fine = math.isfinite(h.lo) and math.isfinite(h.hi) and h.dtop > 0
+    quick_roots = (None, None)
+    if fine and h.a < h.lo < h.top < h.hi < h.b:
+        quick_roots = (quick(True, h.top), quick(False, h.top))
+        if None not in quick_roots and _unimodal_shape(h, *quick_roots):
+            return True, quick_roots[0], quick_roots[1], True
     # existence: a point with D > 0, or D < 0 everywhere on [a, b]
     top = h.top
     if math.isfinite(top) and h.dtop > 0:
@@ -251,42 +343,18 @@ def _solve_hump(req: Request, h: _Hump, bits: int):
             )
         top = float(t_root.ball.mid())
         lo0, hi0 = 0.5 * (h.a + top), 0.5 * (top + h.b)
+        quick_roots = (None, None)  # found around another top: not known to be on its sides
     else:
         lo0 = h.lo if math.isfinite(h.lo) else 0.5 * (h.a + top)
         hi0 = h.hi if math.isfinite(h.hi) else 0.5 * (top + h.b)
-
-    def scale(t):
-        return max(min(abs(t + sh) for sh in h.shifts), h.floor, 1e-300)
-
-    neg = lambda t: -h.D(t)  # noqa: E731
-    dneg = lambda t: -h.dD(t)  # noqa: E731
-    if h.DdD is not None:
-        both = h.DdD
-
-        def both_neg(t):
-            v, d = h.DdD(t)
-            return -v, -d
-
-    else:
-        both = lambda t: (h.D(t), h.dD(t))  # noqa: E731
-        both_neg = lambda t: (neg(t), dneg(t))  # noqa: E731
     roots = []
-    for F, dF, FD, x0, (a, b), fine in (
-        (h.D, h.dD, both, lo0, (h.a, top), math.isfinite(h.lo)),
-        (neg, dneg, both_neg, hi0, (top, h.b), math.isfinite(h.hi)),
+    for k, (F, dF, x0, (a, b)) in enumerate(
+        ((h.D, h.dD, lo0, (h.a, top)), (neg, dneg, hi0, (top, h.b)))
     ):
-        root = None
-        if fine:  # a float edge from the float stage: the fast path (None where it fails)
-            root = quick_root(
-                FD,
-                F,
-                dF,
-                x0,
-                bits=bits,
-                floor=h.floor,
-                bracket=(ball(a), ball(b)),
-                scale=scale,
-            )
+        root = quick_roots[k]
+        if root is None and (math.isfinite(h.lo) if k == 0 else math.isfinite(h.hi)):
+            # a float edge from the float stage: the fast path (None where it fails)
+            root = quick(k == 0, top)
         if root is None:
             root = certified_root(F, dF, x0, bits=bits, floor=h.floor, bracket=(a, b), scale=scale)
         roots.append(root)
@@ -391,11 +459,13 @@ def hump_normal(
     if bm < NEAR_ONE:
         return _hump_near_one(n, P, fl, b, C, E0, check=not jet), P
     D01 = form.compiled("arb", (0, 1))
+    D12 = form.compiled("arb", (1, 2))
     h = _Hump(
         D=lambda t: D0(t, *args()),
         dD=lambda t: D1(t, *args()),
         d2D=lambda t: D2(t, *args()),
         DdD=lambda t: D01(t, *args()),
+        d12D=lambda t: D12(t, *args()),
         a=a,
         b=b,
         top=fl["top"],
