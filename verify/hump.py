@@ -53,7 +53,7 @@ from .derived import (
     trace_window,
 )
 from .enclosure import AtPrecision, edges_result, no_interval, sgn_of, theta_floor
-from .float_stage import normal_float_stage
+from .float_stage import normal_float_edges, normal_float_stage
 from .params import NEAR_ONE, NormalParams, normal_params, trace_params
 from .request import Request
 from .result import Boundary
@@ -81,7 +81,9 @@ _MATH = backend("math")
 class _Hump:
     """Arb functions ``D``, ``D'``, ``D''`` of one variable, a bracket ``[a, b]`` on which the
     interval must lie (``D < 0`` proven at both ends and outside by the caller), and the float
-    stage: maximiser ``top`` (``dtop = D(top)``) and edges ``lo``, ``hi`` (NaN if none)."""
+    stage: ``top`` (``dtop = D(top)``), the maximiser or, where ``D > 0`` there, a point between
+    the edges (:func:`verify.float_stage.normal_float_edges`), and edges ``lo``, ``hi`` (NaN if
+    none)."""
 
     D: Callable
     dD: Callable
@@ -424,23 +426,38 @@ def hump_normal(
             rounded=True,
         )
     C = AtPrecision(lambda: arb.pi() * n / 2, rounded=True)
+    near = None  # the parameters at the proof's precision (one point): used as they are below
     if float_stage is not None:
         fl, bm = float_stage, float_stage["bm"]
     elif jet or m_box is not None:  # pragma: no cover - ranges come with their float stage
         pm = normal_params(m, Q, damping, _MATH, system)
         fl, bm = normal_float_stage(n, pm), pm.bm
     else:
-        # the parameters once, at the precision of the proof (quick_root's) or of the bracket
-        # check below, whichever is higher; lower precisions take them rounded, and the float
-        # stage their midpoints (right to the last bit, also next to critical damping)
-        with ctx.workprec(max(128, bits + QUICK_GUARD)):
+        # the parameters once, at the precision of the proof (quick_root's); the float stage
+        # takes their midpoints (right to the last bit, also next to critical damping)
+        top = max(80, bits + QUICK_GUARD)
+        with ctx.workprec(top):
             pt = P()
-            C()
-        fl, bm = normal_float_stage(n, pt), float(pt.bm)
+            near = (top, pt, C())
+        fl, bm = normal_float_edges(n, pt), float(pt.bm)
+
+    def params():
+        """``(p, c)`` for the working precision: those of the proof's precision as they are
+        (balls that hold the exact values, at a precision not far above the working one: no
+        rounding needed), else the parameters at the working precision."""
+        if near is not None and near[0] <= 2 * ctx.prec + 64:
+            return near[1], near[2]
+        return P(), C()
+
+    cache: dict = {}
 
     def args():
-        p = P()
-        return (C(), p.r2, p.u, p.beta, p.g)
+        prec = ctx.prec
+        got = cache.get(prec)
+        if got is None:
+            p, c = params()
+            got = cache[prec] = (c, p.r2, p.u, p.beta, p.g)
+        return got
 
     # the bracket: a little outside the undamped-form roots, proven outside both
     E0 = edge_equation(parity).compiled("arb", 0)
@@ -449,11 +466,15 @@ def hump_normal(
     a = max(fl["a"] - max(span * 1e-6, abs(fl["a"]) * 1e-12, 1e-300), -math.pi / 2)
     b = min(fl["b"] + max(span * 1e-6, abs(fl["b"]) * 1e-12, 1e-300), math.pi / 2)
     if not jet:
-        with ctx.workprec(128):
-            p = P()
-            outside = all(E0(ball(a), C(), sgn, e, p.r, p.beta) < 0 for e in (1, -1)) and all(
-                E0(ball(b), C(), sgn, e, p.r, p.beta) > 0 for e in (1, -1)
-            )
+        A, B = ball(a), ball(b)
+        for prec in (64, 128):  # 64 bits nearly always decide it
+            with ctx.workprec(prec):
+                p, c = params()
+                outside = all(E0(A, c, sgn, e, p.r, p.beta) < 0 for e in (1, -1)) and all(
+                    E0(B, c, sgn, e, p.r, p.beta) > 0 for e in (1, -1)
+                )
+            if outside:
+                break
         if not outside:  # pragma: no cover - the float bracket is always this good
             a, b = -math.pi / 2, math.pi / 2
     if bm < NEAR_ONE:
