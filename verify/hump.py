@@ -103,8 +103,6 @@ class _Hump:
     point: object = None
     #: ``(D, D')`` in one evaluation (shared subexpressions), where there is one
     DdD: Callable | None = None
-    #: ``(D', D'')`` in one evaluation, where there is one
-    d12D: Callable | None = None
 
 
 def _unimodal_shape(h: _Hump, lo_root, hi_root, budget: int = 32) -> bool:
@@ -132,14 +130,9 @@ def _unimodal_shape(h: _Hump, lo_root, hi_root, budget: int = 32) -> bool:
                 return False
             mid = ((u + v) / 2).mid()
             X = arb(mid, max(v - mid, mid - u).abs_upper())
-            if h.d12D is not None:
-                d1, d2 = h.d12D(X)
-            else:
-                d1, d2 = None, h.d2D(X)
-            if d2 < 0:
+            if h.d2D(X) < 0:
                 continue  # cap: allowed anywhere
-            if d1 is None:
-                d1 = h.dD(X)
+            d1 = h.dD(X)
             if d1 < 0:
                 down = True
                 continue
@@ -480,13 +473,11 @@ def hump_normal(
     if bm < NEAR_ONE:
         return _hump_near_one(n, P, fl, b, C, E0, check=not jet), P
     D01 = form.compiled("arb", (0, 1))
-    D12 = form.compiled("arb", (1, 2))
     h = _Hump(
         D=lambda t: D0(t, *args()),
         dD=lambda t: D1(t, *args()),
         d2D=lambda t: D2(t, *args()),
         DdD=lambda t: D01(t, *args()),
-        d12D=lambda t: D12(t, *args()),
         a=a,
         b=b,
         top=fl["top"],
