@@ -98,6 +98,12 @@ def _near_threshold_cases():
     return out
 
 
+#: just on the normal form's side of the switch to the trace form at m = 9/10 (half 1 within
+#: NEAR_CRITICAL of critical damping: 4 Q^2 = (1 + m)(1 + NEAR_CRITICAL^2), times 1 + 1e-20)
+Q_NEAR_CRITICAL = _sqrt_fraction(
+    Fraction(19, 40) * (1 + Fraction(NEAR_CRITICAL) ** 2) * (1 + Fraction(1, 10**20))
+)
+
 CASES = [
     (3, Fraction(3, 10), Fraction(7), "exact", "pendulum", "1/2"),  # the benchmark's
     (3, Fraction(3, 10), Fraction(7), "paper", "pendulum", "1/2"),
@@ -111,8 +117,7 @@ CASES = [
     (2, Fraction(1, 2), Fraction(20), "exact", "meissner", "1/3"),
     (1, Fraction(3, 10), Fraction(7), "paper", "pendulum", "1/3"),
     (1, Fraction(96, 100), Fraction(7, 10), "exact", "pendulum", "1/2"),  # half 1 critical
-    (1, Fraction(9, 10), _sqrt_fraction(Fraction(19, 40) * (1 + Fraction(NEAR_CRITICAL) ** 2)
-     * (1 + Fraction(1, 10**20))), "exact", "pendulum", "1/2"),  # fmt: skip
+    (1, Fraction(9, 10), Q_NEAR_CRITICAL, "exact", "pendulum", "1/2"),
 ]
 
 

@@ -200,7 +200,5 @@ def normal_float_edges(n: int, p) -> dict:
     ):
         if not u0 < x0 < v0:
             x0 = 0.5 * (u0 + v0)
-        ends.append(
-            _halley_edge(lambda x: d012(x, *args), u0, v0, x0, inc, d012(x0, *args))
-        )
+        ends.append(_halley_edge(lambda x: d012(x, *args), u0, v0, x0, inc, d012(x0, *args)))
     return {"a": a, "b": b, "top": mid, "dtop": dm, "lo": ends[0], "hi": ends[1]}

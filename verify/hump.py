@@ -6,10 +6,12 @@ at most its friction-free value ``D0`` (same ``r``, ``beta``), which is negative
 undamped roots ``[a, b]``; so the interval lies in ``[a, b]``.  There ``D`` is maximised (root of
 ``D'``); no interval if the maximum is ``<= 0``, else the edges are the zeros of ``D`` left and
 right of the maximiser, each proven by interval Newton.  The *shape* -- ``D < 0`` on ``[a,
-lower)``, ``D > 0`` between the edges, ``D < 0`` on ``(upper, b]`` -- is proven too
-(:func:`verify.certify.prove_sign` on sub-intervals, with monotone neighbourhoods of the edges), so
-the two zeros are the edges and nothing in between is missed.  Non-existence is proven the same
-way (``D < 0`` on all of ``[a, b]``).
+lower)``, ``D > 0`` between the edges, ``D < 0`` on ``(upper, b]`` -- is proven too, so the two
+zeros are the edges and nothing in between is missed: by unimodality where it holds (``D'' < 0``
+on the bracket, or on pieces of it with ``D'`` of one sign on the others, in an order that lets
+``D`` rise and then fall: at most two zeros; :func:`_unimodal_shape`, usually one evaluation),
+else by :func:`verify.certify.prove_sign` on sub-intervals, with monotone neighbourhoods of the
+edges.  Non-existence is proven by signs (``D < 0`` on all of ``[a, b]``).
 
 **Trace form** (exact model, a half critically or over-damped, or half 1 within
 :data:`verify.params.NEAR_CRITICAL` of it): ``D(zeta) = sigma (2 C1 C2 - kappa S1 S2) - 2 cosh(2
