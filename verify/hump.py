@@ -107,24 +107,25 @@ class _Hump:
     DdD: Callable | None = None
 
 
-def _unimodal_shape(h: _Hump, lo_root, hi_root, budget: int = 32) -> bool:
+def _unimodal_shape(h: _Hump, lo_root, hi_root, budget: int = 16) -> bool:
     """The shape from unimodality: the two root balls disjoint and inside ``(a, b)``, and
     ``[a, b]`` cut (bisection at 64 bits, at most ``budget`` sub-balls; often the whole bracket
-    at once) into pieces each ``cap`` (``D'' < 0``), ``up`` (``D' > 0``) or ``down`` (``D' <
-    0``), with no ``up`` right of a ``down``.
+    at once) into pieces each ``cap`` (``D'' < 0``), ``up`` (``D' > 0``), ``down`` (``D' < 0``) or
+    ``neg`` (``D < 0``), where the ``neg`` pieces are at the two ends only (the others make one
+    interval, the run) and no ``up`` piece lies right of a ``down`` one.
 
-    Then ``D' > 0`` up to the last ``up`` piece (a run of ``cap`` pieces before an ``up`` one has
-    ``D'`` decreasing to a positive value), ``D' < 0`` from the first ``down`` piece on, and ``D'``
-    strictly decreasing between them: ``D`` rises strictly, then falls strictly, so it has at most
-    two zeros.  The two enclosed zeros are therefore all of them, ``D > 0`` between them and ``D <
-    0`` on either side: the shape of :func:`_prove_shape`, and existence with it.  ``False`` where
-    this is not proven."""
+    On the run, ``D' > 0`` up to the last ``up`` piece (a run of ``cap`` pieces before an ``up``
+    one has ``D'`` decreasing to a positive value), ``D' < 0`` from the first ``down`` piece on, and
+    ``D'`` strictly decreasing between them: ``D`` rises strictly, then falls strictly, so it has at
+    most two zeros there, and none on the ``neg`` pieces.  The two enclosed zeros are therefore all
+    of them, ``D > 0`` between them and ``D < 0`` on either side: the shape of
+    :func:`_prove_shape`, and existence with it.  ``False`` where this is not proven."""
     with ctx.workprec(64):
         a, b = ball(h.a), ball(h.b)
         lo, hi = lo_root.ball, hi_root.ball
         if not (a < lo and lo < hi and hi < b):
             return False
-        stack, count, down = [(a, b)], 0, False
+        stack, count, labels = [(a, b)], 0, []
         while stack:  # left to right: the left half is pushed last
             u, v = stack.pop()
             count += 1
@@ -133,25 +134,38 @@ def _unimodal_shape(h: _Hump, lo_root, hi_root, budget: int = 32) -> bool:
             mid = ((u + v) / 2).mid()
             X = arb(mid, max(v - mid, mid - u).abs_upper())
             if h.d2D(X) < 0:
-                continue  # cap: allowed anywhere
-            d1 = h.dD(X)
-            if d1 < 0:
-                down = True
+                labels.append("cap")
                 continue
-            if d1 > 0:
-                if down:
-                    return False
+            d1 = h.dD(X)
+            if d1 < 0 or d1 > 0:
+                labels.append("down" if d1 < 0 else "up")
+                continue
+            if h.D(X) < 0:
+                labels.append("neg")
                 continue
             stack.append((mid, v))
             stack.append((u, mid))
+        while labels and labels[0] == "neg":
+            labels.pop(0)
+        while labels and labels[-1] == "neg":
+            labels.pop()
+        if "neg" in labels:
+            return False
+        down = False
+        for label in labels:
+            if label == "down":
+                down = True
+            elif label == "up" and down:
+                return False
         return True
 
 
-def _prove_shape(h: _Hump, lo_root, hi_root) -> bool:
+def _prove_shape(h: _Hump, lo_root, hi_root, unimodal: bool = True) -> bool:
     """``D < 0`` on ``[a, lower)``, ``> 0`` on ``(lower, upper)``, ``< 0`` on ``(upper, b]``:
-    by unimodality where that is proven cheaply (:func:`_unimodal_shape`), else by signs on
-    sub-intervals around monotone neighbourhoods of the two zeros."""
-    if _unimodal_shape(h, lo_root, hi_root):
+    by unimodality where that is proven cheaply (:func:`_unimodal_shape`; not tried again with
+    ``unimodal=False``), else by signs on sub-intervals around monotone neighbourhoods of the two
+    zeros."""
+    if unimodal and _unimodal_shape(h, lo_root, hi_root):
         return True
     e1, e2 = float(lo_root.ball.mid()), float(hi_root.ball.mid())
     top_prec = max(256, 2 * max(lo_root.prec, hi_root.prec))
@@ -298,11 +312,13 @@ def _solve_hump(req: Request, h: _Hump, bits: int):
         )  # fmt: skip
 
     fine = math.isfinite(h.lo) and math.isfinite(h.hi) and h.dtop > 0
-    quick_roots = (None, None)
+    quick_roots, tried = (None, None), None
     if fine and h.a < h.lo < h.top < h.hi < h.b:
         quick_roots = (quick(True, h.top), quick(False, h.top))
-        if None not in quick_roots and _unimodal_shape(h, *quick_roots):
-            return True, quick_roots[0], quick_roots[1], True
+        if None not in quick_roots:
+            if _unimodal_shape(h, *quick_roots):
+                return True, quick_roots[0], quick_roots[1], True
+            tried = quick_roots  # unimodality not proven with these roots: not tried again
     # existence: a point with D > 0, or D < 0 everywhere on [a, b]
     top = h.top
     if math.isfinite(top) and h.dtop > 0:
@@ -356,7 +372,8 @@ def _solve_hump(req: Request, h: _Hump, bits: int):
             root = certified_root(F, dF, x0, bits=bits, floor=h.floor, bracket=(a, b), scale=scale)
         roots.append(root)
     lo_root, hi_root = roots
-    return True, lo_root, hi_root, _prove_shape(h, lo_root, hi_root)
+    again = tried is None or tried[0] is not lo_root or tried[1] is not hi_root
+    return True, lo_root, hi_root, _prove_shape(h, lo_root, hi_root, unimodal=again)
 
 
 def depth_ball(m_box: tuple[Fraction, Fraction]) -> arb:
