@@ -53,7 +53,7 @@ from functools import cache
 
 import mpmath
 import numpy as np
-from flint import arb, fmpq
+from flint import arb
 
 __all__ = [
     "Backend",
@@ -107,7 +107,7 @@ def _as_pq(value) -> tuple[int, int]:
 
 
 def _arb_q(p: int, q: int):
-    return arb(fmpq(p, q)) if q != 1 else arb(p)
+    return arb(p) / q if q != 1 else arb(p)  # arb(p) is exact: one rounding, by the division
 
 
 def _mp_q(p: int, q: int):

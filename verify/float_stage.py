@@ -19,7 +19,7 @@ from functools import cache
 from .derived import edge_equation, indicator
 from .enclosure import sgn_of
 
-__all__ = ["float_edge", "normal_float_stage", "bisect_newton"]
+__all__ = ["float_edge", "normal_float_stage", "normal_float_edges", "bisect_newton"]
 
 
 @cache
@@ -28,7 +28,7 @@ def _forms(odd: bool):
     form = indicator(parity)
     return (
         edge_equation(parity).compiled("math", (0, 1, 2)),
-        form.compiled("math", (0, 1)),
+        form.compiled("math", (0, 1, 2)),
         form.compiled("math", (1, 2)),
     )
 
@@ -92,23 +92,113 @@ def bisect_newton(
     return x
 
 
+def _halley_edge(f012, lo: float, hi: float, x: float, increasing: bool, first) -> float:
+    """Safeguarded Halley iteration for the root of ``f`` in ``[lo, hi]`` (``f012(x) = (f, f',
+    f'')``; ``first`` = its value at the start ``x``), where ``f(lo) < 0 < f(hi)`` if
+    ``increasing``, else the reverse; the stopping rule of :func:`float_edge`."""
+    sign = 1.0 if increasing else -1.0
+    f, d1, d2 = first
+    for _ in range(100):
+        f, d1, d2 = sign * f, sign * d1, sign * d2
+        if f < 0:
+            lo = x
+        elif f > 0:
+            hi = x
+        else:
+            return x
+        try:
+            step = f / d1
+            step = step / (1.0 - 0.5 * step * d2 / d1)
+            K = 1.0 / (3.0 * abs(d1)) + (0.5 * d2 / d1) ** 2
+        except ZeroDivisionError:
+            step, K = math.inf, math.inf
+        xn = x - step
+        if math.isfinite(xn) and K * abs(step) ** 3 <= 2e-16 * abs(xn) and lo <= xn <= hi:
+            return xn
+        if not lo < xn < hi:
+            xn = 0.5 * (lo + hi)
+        if hi - lo <= 4e-16 * max(abs(xn), 1e-300):
+            return xn
+        x = xn
+        f, d1, d2 = f012(x)
+    return x
+
+
 def normal_float_stage(n: int, p) -> dict:
     """``dict(a, b, top, dtop, lo, hi)`` in ``theta`` for order ``n`` and float normal-form
-    parameters ``p`` (:class:`verify.params.NormalParams` of floats)."""
-    edge, d01, d12 = _forms(n % 2 == 1)
+    parameters ``p`` (:class:`verify.params.NormalParams` of floats).
+
+    The steps of :func:`verify.grid.damped_normal` on one point: the maximiser by Newton on
+    ``D'`` from where the secant of ``D'`` through the bracket's ends vanishes (to ``1e-12``:
+    ``D(top)`` is then below the maximum by about ``D'' 1e-24``), and each edge by Halley's
+    method, started where the parabola through the maximiser with the curvature there vanishes
+    (or at the bracket's end, where that start falls outside)."""
+    edge, d012, d12 = _forms(n % 2 == 1)
     r, r2, u, beta, g = (float(x) for x in (p.r, p.r2, p.u, p.beta, p.g))
     t1 = float_edge(edge, n, 1, r, beta)
     t2 = float_edge(edge, n, -1, r, beta)
     a, b = min(t1, t2), max(t1, t2)
     args = (n * math.pi / 2, r2, u, beta, g)
-    d1a = d12(a, *args)[0]
-    d1b = d12(b, *args)[0]
-    top = a if d1a <= 0 else b
-    if d1a > 0 and d1b < 0:
-        top = bisect_newton(lambda x: d12(x, *args), a, b, 0.5 * (a + b), False)
-    dtop = d01(top, *args)[0]
+    at_a = d012(a, *args)
+    at_b = d012(b, *args)
+    d1a, d1b = at_a[1], at_b[1]
+    if d1a <= 0:
+        top, at_top = a, at_a
+    elif d1b >= 0:
+        top, at_top = b, at_b
+    else:
+        x0 = a + d1a * (b - a) / (d1a - d1b)
+        if not a < x0 < b:
+            x0 = 0.5 * (a + b)
+        top = bisect_newton(lambda x: d12(x, *args), a, b, x0, False, rtol=1e-12)
+        at_top = d012(top, *args)
+    dtop = at_top[0]
     lo = hi = math.nan
     if dtop > 0:
-        lo = bisect_newton(lambda x: d01(x, *args), a, top, 0.5 * (a + top), True)
-        hi = bisect_newton(lambda x: d01(x, *args), top, b, 0.5 * (top + b), False)
+        curv = at_top[2]
+        half = math.sqrt(-2.0 * dtop / curv) if curv < 0 else math.inf
+        ends = []
+        for end, at_end, x0, inc, (u0, v0) in (
+            (a, at_a, top - half, True, (a, top)),
+            (b, at_b, top + half, False, (top, b)),
+        ):
+            if u0 < x0 < v0:
+                first = d012(x0, *args)
+            else:
+                x0, first = end, at_end
+            ends.append(_halley_edge(lambda x: d012(x, *args), u0, v0, x0, inc, first))
+        lo, hi = ends
     return {"a": a, "b": b, "top": top, "dtop": dtop, "lo": lo, "hi": hi}
+
+
+def normal_float_edges(n: int, p) -> dict:
+    """As :func:`normal_float_stage`, cheaper where the interval is not tiny: ``top`` is then the
+    middle of the bracket ``[a, b]`` where ``D > 0`` there (``dtop = D(top)``), not the maximiser,
+    and each edge is found by Halley's method started at a root of the parabola through that
+    point with the slope and curvature there.  Elsewhere (``D <= 0`` at the middle, or ``D'' >= 0``
+    there) it is :func:`normal_float_stage`.  What the certified solver needs of ``top`` is a
+    point between the edges where ``D > 0``."""
+    edge, d012, _ = _forms(n % 2 == 1)
+    r, r2, u, beta, g = (float(x) for x in (p.r, p.r2, p.u, p.beta, p.g))
+    t1 = float_edge(edge, n, 1, r, beta)
+    t2 = float_edge(edge, n, -1, r, beta)
+    a, b = min(t1, t2), max(t1, t2)
+    args = (n * math.pi / 2, r2, u, beta, g)
+    mid = 0.5 * (a + b)
+    at_mid = d012(mid, *args)
+    dm, d1, d2 = at_mid
+    if not (dm > 0 and d2 < 0 and a < mid < b):
+        return normal_float_stage(n, p)
+    # the parabola dm + d1 t + d2 t^2/2: one root either side of t = 0 (dm > 0 > d2)
+    disc = math.sqrt(d1 * d1 - 2.0 * d2 * dm)
+    q = -0.5 * (d1 + math.copysign(disc, d1))  # the roots q/(d2/2) and dm/q, without cancellation
+    roots = sorted((q / (0.5 * d2), dm / q)) if q != 0 else (-math.inf, math.inf)
+    ends = []
+    for x0, inc, (u0, v0) in (
+        (mid + roots[0], True, (a, mid)),
+        (mid + roots[1], False, (mid, b)),
+    ):
+        if not u0 < x0 < v0:
+            x0 = 0.5 * (u0 + v0)
+        ends.append(_halley_edge(lambda x: d012(x, *args), u0, v0, x0, inc, d012(x0, *args)))
+    return {"a": a, "b": b, "top": mid, "dtop": dm, "lo": ends[0], "hi": ends[1]}

@@ -22,7 +22,7 @@ _REGIMES = ("under", "critical", "over")
 ENTRIES = (
     [("edge_equation", (p,), "math", (0, 1, 2)) for p in (-1, 1)]
     + [("edge_equation", (p,), "arb", o) for p in (-1, 1) for o in (0, 1, (0, 1))]
-    + [("indicator", (p,), "math", o) for p in (-1, 1) for o in ((0, 1), (1, 2))]
+    + [("indicator", (p,), "math", o) for p in (-1, 1) for o in ((0, 1), (1, 2), (0, 1, 2))]
     + [("indicator", (p,), "arb", o) for p in (-1, 1) for o in (0, 1, 2, (0, 1))]
     + [
         ("trace_window", (r,), b, o)

@@ -6,10 +6,12 @@ at most its friction-free value ``D0`` (same ``r``, ``beta``), which is negative
 undamped roots ``[a, b]``; so the interval lies in ``[a, b]``.  There ``D`` is maximised (root of
 ``D'``); no interval if the maximum is ``<= 0``, else the edges are the zeros of ``D`` left and
 right of the maximiser, each proven by interval Newton.  The *shape* -- ``D < 0`` on ``[a,
-lower)``, ``D > 0`` between the edges, ``D < 0`` on ``(upper, b]`` -- is proven too
-(:func:`verify.certify.prove_sign` on sub-intervals, with monotone neighbourhoods of the edges), so
-the two zeros are the edges and nothing in between is missed.  Non-existence is proven the same
-way (``D < 0`` on all of ``[a, b]``).
+lower)``, ``D > 0`` between the edges, ``D < 0`` on ``(upper, b]`` -- is proven too, so the two
+zeros are the edges and nothing in between is missed: by unimodality where it holds (``D'' < 0``
+on the bracket, or on pieces of it with ``D'`` of one sign on the others, in an order that lets
+``D`` rise and then fall: at most two zeros; :func:`_unimodal_shape`, usually one evaluation),
+else by :func:`verify.certify.prove_sign` on sub-intervals, with monotone neighbourhoods of the
+edges.  Non-existence is proven by signs (``D < 0`` on all of ``[a, b]``).
 
 **Trace form** (exact model, a half critically or over-damped, or half 1 within
 :data:`verify.params.NEAR_CRITICAL` of it): ``D(zeta) = sigma (2 C1 C2 - kappa S1 S2) - 2 cosh(2
@@ -53,7 +55,7 @@ from .derived import (
     trace_window,
 )
 from .enclosure import AtPrecision, edges_result, no_interval, sgn_of, theta_floor
-from .float_stage import normal_float_stage
+from .float_stage import normal_float_edges, normal_float_stage
 from .params import NEAR_ONE, NormalParams, normal_params, trace_params
 from .request import Request
 from .result import Boundary
@@ -81,7 +83,9 @@ _MATH = backend("math")
 class _Hump:
     """Arb functions ``D``, ``D'``, ``D''`` of one variable, a bracket ``[a, b]`` on which the
     interval must lie (``D < 0`` proven at both ends and outside by the caller), and the float
-    stage: maximiser ``top`` (``dtop = D(top)``) and edges ``lo``, ``hi`` (NaN if none)."""
+    stage: ``top`` (``dtop = D(top)``), the maximiser or, where ``D > 0`` there, a point between
+    the edges (:func:`verify.float_stage.normal_float_edges`), and edges ``lo``, ``hi`` (NaN if
+    none)."""
 
     D: Callable
     dD: Callable
@@ -103,8 +107,66 @@ class _Hump:
     DdD: Callable | None = None
 
 
-def _prove_shape(h: _Hump, lo_root, hi_root) -> bool:
-    """``D < 0`` on ``[a, lower)``, ``> 0`` on ``(lower, upper)``, ``< 0`` on ``(upper, b]``."""
+def _unimodal_shape(h: _Hump, lo_root, hi_root, budget: int = 16) -> bool:
+    """The shape from unimodality: the two root balls disjoint and inside ``(a, b)``, and
+    ``[a, b]`` cut (bisection at 64 bits, at most ``budget`` sub-balls; often the whole bracket
+    at once) into pieces each ``cap`` (``D'' < 0``), ``up`` (``D' > 0``), ``down`` (``D' < 0``) or
+    ``neg`` (``D < 0``), where the ``neg`` pieces are at the two ends only (the others make one
+    interval, the run) and no ``up`` piece lies right of a ``down`` one.
+
+    On the run, ``D' > 0`` up to the last ``up`` piece (a run of ``cap`` pieces before an ``up``
+    one has ``D'`` decreasing to a positive value), ``D' < 0`` from the first ``down`` piece on, and
+    ``D'`` strictly decreasing between them: ``D`` rises strictly, then falls strictly, so it has at
+    most two zeros there, and none on the ``neg`` pieces.  The two enclosed zeros are therefore all
+    of them, ``D > 0`` between them and ``D < 0`` on either side: the shape of
+    :func:`_prove_shape`, and existence with it.  ``False`` where this is not proven."""
+    with ctx.workprec(64):
+        a, b = ball(h.a), ball(h.b)
+        lo, hi = lo_root.ball, hi_root.ball
+        if not (a < lo and lo < hi and hi < b):
+            return False
+        stack, count, labels = [(a, b)], 0, []
+        while stack:  # left to right: the left half is pushed last
+            u, v = stack.pop()
+            count += 1
+            if count > budget:
+                return False
+            mid = ((u + v) / 2).mid()
+            X = arb(mid, max(v - mid, mid - u).abs_upper())
+            if h.d2D(X) < 0:
+                labels.append("cap")
+                continue
+            d1 = h.dD(X)
+            if d1 < 0 or d1 > 0:
+                labels.append("down" if d1 < 0 else "up")
+                continue
+            if h.D(X) < 0:
+                labels.append("neg")
+                continue
+            stack.append((mid, v))
+            stack.append((u, mid))
+        while labels and labels[0] == "neg":
+            labels.pop(0)
+        while labels and labels[-1] == "neg":
+            labels.pop()
+        if "neg" in labels:
+            return False
+        down = False
+        for label in labels:
+            if label == "down":
+                down = True
+            elif label == "up" and down:
+                return False
+        return True
+
+
+def _prove_shape(h: _Hump, lo_root, hi_root, unimodal: bool = True) -> bool:
+    """``D < 0`` on ``[a, lower)``, ``> 0`` on ``(lower, upper)``, ``< 0`` on ``(upper, b]``:
+    by unimodality where that is proven cheaply (:func:`_unimodal_shape`; not tried again with
+    ``unimodal=False``), else by signs on sub-intervals around monotone neighbourhoods of the two
+    zeros."""
+    if unimodal and _unimodal_shape(h, lo_root, hi_root):
+        return True
     e1, e2 = float(lo_root.ball.mid()), float(hi_root.ball.mid())
     top_prec = max(256, 2 * max(lo_root.prec, hi_root.prec))
     precs = [64]
@@ -213,7 +275,50 @@ def taylor_negative(h: _Hump, t: float, Dt, D1t, tries: int, prec: int, budget: 
 def _solve_hump(req: Request, h: _Hump, bits: int):
     """Decide existence and enclose the two zeros.
 
+    Where the float stage found both edges, each is enclosed by the fast path
+    (:func:`verify.certify.quick_root`) and the concavity of ``D`` on the bracket proves the
+    shape, existence included (:func:`_unimodal_shape`).  Otherwise, or where that fails: a point
+    with ``D > 0`` (or ``D < 0`` proven on all of ``[a, b]``: no interval), the two zeros either
+    side of it, and the shape by :func:`_prove_shape`.
+
     Returns ``(exists, lo_root, hi_root, shape_ok)``."""
+
+    def scale(t):
+        return max(min(abs(t + sh) for sh in h.shifts), h.floor, 1e-300)
+
+    neg = lambda t: -h.D(t)  # noqa: E731
+    dneg = lambda t: -h.dD(t)  # noqa: E731
+    if h.DdD is not None:
+        both = h.DdD
+
+        def both_neg(t):
+            v, d = h.DdD(t)
+            return -v, -d
+
+    else:
+        both = lambda t: (h.D(t), h.dD(t))  # noqa: E731
+        both_neg = lambda t: (neg(t), dneg(t))  # noqa: E731
+
+    def quick(lower: bool, top):
+        """The fast path for the float edge on one side of ``top`` (``None`` where it fails)."""
+        if lower:
+            return quick_root(
+                both, h.D, h.dD, h.lo, bits=bits, floor=h.floor,
+                bracket=(ball(h.a), ball(top)), scale=scale,
+            )  # fmt: skip
+        return quick_root(
+            both_neg, neg, dneg, h.hi, bits=bits, floor=h.floor,
+            bracket=(ball(top), ball(h.b)), scale=scale,
+        )  # fmt: skip
+
+    fine = math.isfinite(h.lo) and math.isfinite(h.hi) and h.dtop > 0
+    quick_roots, tried = (None, None), None
+    if fine and h.a < h.lo < h.top < h.hi < h.b:
+        quick_roots = (quick(True, h.top), quick(False, h.top))
+        if None not in quick_roots:
+            if _unimodal_shape(h, *quick_roots):
+                return True, quick_roots[0], quick_roots[1], True
+            tried = quick_roots  # unimodality not proven with these roots: not tried again
     # existence: a point with D > 0, or D < 0 everywhere on [a, b]
     top = h.top
     if math.isfinite(top) and h.dtop > 0:
@@ -251,47 +356,24 @@ def _solve_hump(req: Request, h: _Hump, bits: int):
             )
         top = float(t_root.ball.mid())
         lo0, hi0 = 0.5 * (h.a + top), 0.5 * (top + h.b)
+        quick_roots = (None, None)  # found around another top: not known to be on its sides
     else:
         lo0 = h.lo if math.isfinite(h.lo) else 0.5 * (h.a + top)
         hi0 = h.hi if math.isfinite(h.hi) else 0.5 * (top + h.b)
-
-    def scale(t):
-        return max(min(abs(t + sh) for sh in h.shifts), h.floor, 1e-300)
-
-    neg = lambda t: -h.D(t)  # noqa: E731
-    dneg = lambda t: -h.dD(t)  # noqa: E731
-    if h.DdD is not None:
-        both = h.DdD
-
-        def both_neg(t):
-            v, d = h.DdD(t)
-            return -v, -d
-
-    else:
-        both = lambda t: (h.D(t), h.dD(t))  # noqa: E731
-        both_neg = lambda t: (neg(t), dneg(t))  # noqa: E731
     roots = []
-    for F, dF, FD, x0, (a, b), fine in (
-        (h.D, h.dD, both, lo0, (h.a, top), math.isfinite(h.lo)),
-        (neg, dneg, both_neg, hi0, (top, h.b), math.isfinite(h.hi)),
+    for k, (F, dF, x0, (a, b)) in enumerate(
+        ((h.D, h.dD, lo0, (h.a, top)), (neg, dneg, hi0, (top, h.b)))
     ):
-        root = None
-        if fine:  # a float edge from the float stage: the fast path (None where it fails)
-            root = quick_root(
-                FD,
-                F,
-                dF,
-                x0,
-                bits=bits,
-                floor=h.floor,
-                bracket=(ball(a), ball(b)),
-                scale=scale,
-            )
+        root = quick_roots[k]
+        if root is None and (math.isfinite(h.lo) if k == 0 else math.isfinite(h.hi)):
+            # a float edge from the float stage: the fast path (None where it fails)
+            root = quick(k == 0, top)
         if root is None:
             root = certified_root(F, dF, x0, bits=bits, floor=h.floor, bracket=(a, b), scale=scale)
         roots.append(root)
     lo_root, hi_root = roots
-    return True, lo_root, hi_root, _prove_shape(h, lo_root, hi_root)
+    again = tried is None or tried[0] is not lo_root or tried[1] is not hi_root
+    return True, lo_root, hi_root, _prove_shape(h, lo_root, hi_root, unimodal=again)
 
 
 def depth_ball(m_box: tuple[Fraction, Fraction]) -> arb:
@@ -356,23 +438,38 @@ def hump_normal(
             rounded=True,
         )
     C = AtPrecision(lambda: arb.pi() * n / 2, rounded=True)
+    near = None  # the parameters at the proof's precision (one point): used as they are below
     if float_stage is not None:
         fl, bm = float_stage, float_stage["bm"]
     elif jet or m_box is not None:  # pragma: no cover - ranges come with their float stage
         pm = normal_params(m, Q, damping, _MATH, system)
         fl, bm = normal_float_stage(n, pm), pm.bm
     else:
-        # the parameters once, at the precision of the proof (quick_root's) or of the bracket
-        # check below, whichever is higher; lower precisions take them rounded, and the float
-        # stage their midpoints (right to the last bit, also next to critical damping)
-        with ctx.workprec(max(128, bits + QUICK_GUARD)):
+        # the parameters once, at the precision of the proof (quick_root's); the float stage
+        # takes their midpoints (right to the last bit, also next to critical damping)
+        top = max(80, bits + QUICK_GUARD)
+        with ctx.workprec(top):
             pt = P()
-            C()
-        fl, bm = normal_float_stage(n, pt), float(pt.bm)
+            near = (top, pt, C())
+        fl, bm = normal_float_edges(n, pt), float(pt.bm)
+
+    def params():
+        """``(p, c)`` for the working precision: those of the proof's precision as they are
+        (balls that hold the exact values, at a precision not far above the working one: no
+        rounding needed), else the parameters at the working precision."""
+        if near is not None and near[0] <= 2 * ctx.prec + 64:
+            return near[1], near[2]
+        return P(), C()
+
+    cache: dict = {}
 
     def args():
-        p = P()
-        return (C(), p.r2, p.u, p.beta, p.g)
+        prec = ctx.prec
+        got = cache.get(prec)
+        if got is None:
+            p, c = params()
+            got = cache[prec] = (c, p.r2, p.u, p.beta, p.g)
+        return got
 
     # the bracket: a little outside the undamped-form roots, proven outside both
     E0 = edge_equation(parity).compiled("arb", 0)
@@ -381,11 +478,15 @@ def hump_normal(
     a = max(fl["a"] - max(span * 1e-6, abs(fl["a"]) * 1e-12, 1e-300), -math.pi / 2)
     b = min(fl["b"] + max(span * 1e-6, abs(fl["b"]) * 1e-12, 1e-300), math.pi / 2)
     if not jet:
-        with ctx.workprec(128):
-            p = P()
-            outside = all(E0(ball(a), C(), sgn, e, p.r, p.beta) < 0 for e in (1, -1)) and all(
-                E0(ball(b), C(), sgn, e, p.r, p.beta) > 0 for e in (1, -1)
-            )
+        A, B = ball(a), ball(b)
+        for prec in (64, 128):  # 64 bits nearly always decide it
+            with ctx.workprec(prec):
+                p, c = params()
+                outside = all(E0(A, c, sgn, e, p.r, p.beta) < 0 for e in (1, -1)) and all(
+                    E0(B, c, sgn, e, p.r, p.beta) > 0 for e in (1, -1)
+                )
+            if outside:
+                break
         if not outside:  # pragma: no cover - the float bracket is always this good
             a, b = -math.pi / 2, math.pi / 2
     if bm < NEAR_ONE:

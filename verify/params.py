@@ -133,7 +133,15 @@ def form_for(
     The normal form without friction, in the paper model, and in the exact model with both halves
     under-damped and half 1 (the low-frequency phase) not within :data:`NEAR_CRITICAL` of critical
     damping (``Omega1^2 / gamma^2 < NEAR_CRITICAL^2``); the trace form otherwise."""
+    if system is PAPER and type(m) is Fraction and type(Q) is Fraction:
+        # cached by the integers (hashing a Fraction and a System costs more than the lookup)
+        return _form_for_paper(m.numerator, m.denominator, Q.numerator, Q.denominator, damping)
     return _form_for(m, Q, damping, system)
+
+
+@lru_cache(maxsize=256)
+def _form_for_paper(mp: int, mq: int, qp: int, qq: int, damping: str):
+    return _form_for(Fraction(mp, mq), Fraction(qp, qq), damping, PAPER)
 
 
 @lru_cache(maxsize=256)
@@ -242,22 +250,26 @@ def normal_params(
         from .system_params import normal_values
 
         return NormalParams(**normal_values(system, m, Q, damping, B, om))
+    if (
+        Q is not None
+        and damping != "paper"
+        and isinstance(m, Fraction)
+        and isinstance(Q, Fraction)
+        and (om is None or om == 1 - m)
+    ):
+        return _exact_rational(m, Q, B)
     r, r2, u, beta, w0, bm = _undamped(m, B, om)
     zero = r * 0
     if Q is None:
         return NormalParams(r, r2, u, beta, w0, zero, w0, zero, bm)
     if damping == "paper":
         return NormalParams(r, r2, u, beta, w0, 1 / (2 * _lift(Q, B) * w0), w0, zero, bm)
-    if isinstance(m, Fraction) and isinstance(Q, Fraction) and (om is None or om == 1 - m):
-        # the rational parts once per (m, Q): the same at every working precision
-        u1, u2, om2, a, b, Un, d4, b8, op, om = _exact_parts(m, Q)
-    else:
-        om = _one_minus(m, om)
-        q2 = 4 * Q * Q
-        u1, u2, om2 = (q2 - 1 - m) / (1 + m), (q2 - 1 + m) / om, om * (1 + m)
-        a, b = (1 + m) * (1 + m), om * om
-        Un, d4, b8 = 2 * m * ((q2 - 1) * (3 + m * m) - (1 + 3 * m * m)), 4 * m, 8 * m * Q * Q
-        op = 1 + m
+    om = _one_minus(m, om)
+    q2 = 4 * Q * Q
+    u1, u2, om2 = (q2 - 1 - m) / (1 + m), (q2 - 1 + m) / om, om * (1 + m)
+    a, b = (1 + m) * (1 + m), om * om
+    Un, d4, b8 = 2 * m * ((q2 - 1) * (3 + m * m) - (1 + 3 * m * m)), 4 * m, 8 * m * Q * Q
+    op = 1 + m
     nu1 = _root(u1, B)
     nu2 = _root(u2, B)
     om2 = _lift(om2, B)
@@ -278,24 +290,62 @@ def normal_params(
     return NormalParams(B.sqrt(r2), r2, u, beta, w, g, w0, diff / (w * w0), 2 * nu1 / nsum)
 
 
+def _exact_rational(m: Fraction, Q: Fraction, B: Backend) -> NormalParams:
+    """The exact model's parameters for exact ``m``, ``Q``: the formulas of the general branch of
+    :func:`normal_params`, with their rational parts combined exactly first (once per ``(m, Q)``,
+    :func:`_exact_parts`), so that fewer numbers are converted and rounded::
+
+        V = k nu1 + nu2 / k,  k = (1+m)/(1-m);   U = (Un/(1-m^2)^2) / V;   d = 4m/(1-m^2)
+        beta = (8 m Q^2/(1-m^2)) / (nu1 + nu2)^2;   2Q/sqrt(1 +- m) = sqrt(nu_i^2 + 1)
+    """
+    u1, u2, k, Uq, dq, bq, q4, s2 = _exact_parts(m, Q)
+    lift = B.num
+    U1, U2, K = lift(u1), lift(u2), lift(k)
+    nu1, nu2 = B.sqrt(U1), B.sqrt(U2)
+    V = K * nu1 + nu2 / K
+    U = lift(Uq) / V
+    d = lift(dq)
+    dd = d * d
+    den = V * V + dd
+    r2 = (U * U + dd) / den
+    nsum = nu1 + nu2
+    iq = lift(q4)
+    w = nsum * iq
+    s = B.sqrt(lift(s2))
+    w0 = B.sqrt((1 + s) / 2) / s  # omega_av/omega0 without friction (see omega_av)
+    # w0 - w = (omega1 - Omega1 + omega2 - Omega2)/(4 pi), omega - Omega = gamma^2/(omega + Omega)
+    diff = (1 / (B.sqrt(U1 + 1) + nu1) + 1 / (B.sqrt(U2 + 1) + nu2)) * iq
+    return NormalParams(
+        B.sqrt(r2),
+        r2,
+        4 * nu1 * nu2 / den,
+        lift(bq) / (nsum * nsum),
+        w,
+        2 / nsum,
+        w0,
+        diff / (w * w0),
+        2 * nu1 / nsum,
+    )
+
+
 @lru_cache(maxsize=64)
 def _exact_parts(m: Fraction, Q: Fraction) -> tuple:
-    """The rational parts of the exact model's normal-form parameters (see the module text):
-    ``u1 = nu1^2``, ``u2 = nu2^2``, ``1 - m^2``, ``(1+m)^2``, ``(1-m)^2``, the numerator of ``U``,
-    ``4m``, ``8 m Q^2``, ``1 + m`` and ``1 - m``."""
+    """The rational parts of the exact model's normal-form parameters (see the module text and
+    :func:`_exact_rational`): ``u1 = nu1^2``, ``u2 = nu2^2``, ``(1+m)/(1-m)``, ``Un/(1-m^2)^2``,
+    ``4m/(1-m^2)``, ``8 m Q^2/(1-m^2)``, ``1/(4Q)`` and ``1 - m^2``."""
     q2 = 4 * Q * Q
-    om = 1 - m
+    om, op = 1 - m, 1 + m
+    om2 = om * op
+    Un = 2 * m * ((q2 - 1) * (3 + m * m) - (1 + 3 * m * m))
     return (
-        (q2 - 1 - m) / (1 + m),
+        (q2 - 1 - m) / op,
         (q2 - 1 + m) / om,
-        om * (1 + m),
-        (1 + m) * (1 + m),
-        om * om,
-        2 * m * ((q2 - 1) * (3 + m * m) - (1 + 3 * m * m)),
-        4 * m,
-        8 * m * Q * Q,
-        1 + m,
-        om,
+        op / om,
+        Un / (om2 * om2),
+        4 * m / om2,
+        8 * m * Q * Q / om2,
+        1 / (4 * Q),
+        om2,
     )
 
 

@@ -25,10 +25,11 @@ interval.  ``D`` is at most its friction-free value ``D0`` (same ``r``, ``beta``
 outside the two undamped roots ``[a, b]``; so the interval lies in ``[a, b]``.  There ``D`` is
 maximised (root of ``D'``); no interval if the maximum is ``<= 0``, else the edges are the zeros of
 ``D`` left and right of the maximiser, each proven by interval Newton.  The *shape* -- ``D < 0`` on
-``[a, lower)``, ``D > 0`` between the edges, ``D < 0`` on ``(upper, b]`` -- is proven too
-(:func:`verify.certify.prove_sign` on sub-intervals, with monotone neighbourhoods of the edges), so
-the two zeros are the edges and nothing in between is missed.  Non-existence is proven the same way
-(``D < 0`` on all of ``[a, b]``).
+``[a, lower)``, ``D > 0`` between the edges, ``D < 0`` on ``(upper, b]`` -- is proven too (by
+unimodality, ``D'' < 0`` on the bracket or on pieces of it, else by
+:func:`verify.certify.prove_sign` on sub-intervals; see :mod:`verify.hump`), so the two zeros are
+the edges and nothing in between is missed.  Non-existence is proven by signs (``D < 0`` on all
+of ``[a, b]``).
 
 **Friction, trace form** (exact model, a half critically or over-damped, ``4 Q^2 <= 1 + m``, or half
 1 within :data:`verify.params.NEAR_CRITICAL` of it, where the normal form degenerates): ``D(zeta) =

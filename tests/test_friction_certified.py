@@ -1,0 +1,180 @@
+"""Certified edges with friction (normal and trace forms): the shape of the indicator ``D``.
+
+The fast path encloses both edges and proves the shape -- ``D < 0``, then ``> 0`` between the
+edges, then ``< 0`` on the bracket -- by unimodality (:func:`verify.hump._unimodal_shape`); where
+that fails the former proof runs (a point with ``D > 0``, signs on sub-intervals,
+:func:`verify.hump._prove_shape`).
+
+References, independent of the indicator:
+
+* the Floquet route (:func:`verify.floquet.monodromy_matrix`, built from the segment solutions and
+  the jump rule): on an edge of order ``n`` one multiplier is ``(-1)^n``, so ``det(M - (-1)^n I)``
+  changes sign within ``1e-25`` (relative) of each certified edge;
+* the former proof of the shape (the fast path switched off): the same edges, every enclosure
+  overlapping.
+"""
+
+from __future__ import annotations
+
+import math
+from fractions import Fraction
+
+import mpmath
+import pytest
+from flint import arb
+
+import verify.hump as hump
+from analytic.system import system
+from verify.certify import Root
+from verify.existence import existence
+from verify.floquet import monodromy_matrix
+from verify.params import NEAR_CRITICAL, form_for
+from verify.solve import boundary
+
+
+def _floquet_sign(T, m, Q, damping, sysv, sigma):
+    with mpmath.workdps(60):
+        M = monodromy_matrix(m, T, Q, damping, system=sysv, dps=60)
+        return (M[0, 0] - sigma) * (M[1, 1] - sigma) - M[0, 1] * M[1, 0]
+
+
+def _assert_floquet_edges(b, m, Q, damping, sysv, n):
+    sigma = (-1) ** n
+    with mpmath.workdps(60):
+        for T in (b.lower, b.upper):
+            delta = abs(mpmath.mpf(T)) * mpmath.mpf(10) ** -25
+            lo = _floquet_sign(mpmath.mpf(T) - delta, m, Q, damping, sysv, sigma)
+            hi = _floquet_sign(mpmath.mpf(T) + delta, m, Q, damping, sysv, sigma)
+            assert lo * hi < 0, (n, m, Q, damping, T, lo, hi)
+
+
+def _root(x: float, rad: float = 1e-12) -> Root:
+    return Root(arb(x, rad), arb(x, 10 * rad), 64)
+
+
+def _hump_of(D, dD, d2D, a, b):
+    return hump._Hump(
+        D=D, dD=dD, d2D=d2D, a=a, b=b, top=0.0, dtop=1.0, lo=math.nan, hi=math.nan, floor=0.0
+    )
+
+
+def test_unimodal_shape_proves_a_cap():
+    """``D = 1 - x^2`` on ``[-2, 2]``: concave, zeros at -+1 -- proven."""
+    h = _hump_of(lambda x: 1 - x * x, lambda x: -2 * x, lambda x: x * 0 - 2, -2.0, 2.0)
+    assert hump._unimodal_shape(h, _root(-1.0), _root(1.0))
+
+
+def test_unimodal_shape_refuses_a_second_hump():
+    """``D = cos(x)`` on ``[-7, 7]`` has zeros at -+pi/2 and -+3pi/2: D rises again after falling,
+    so the two inner zeros are not all of them -- not proven (never a wrong shape)."""
+    h = _hump_of(lambda x: x.cos(), lambda x: -x.sin(), lambda x: -x.cos(), -7.0, 7.0)
+    assert not hump._unimodal_shape(h, _root(-math.pi / 2), _root(math.pi / 2))
+
+
+def test_unimodal_shape_refuses_bad_roots():
+    """The same zero twice, or a zero outside the bracket: not proven."""
+    h = _hump_of(lambda x: 1 - x * x, lambda x: -2 * x, lambda x: x * 0 - 2, -2.0, 2.0)
+    assert not hump._unimodal_shape(h, _root(1.0), _root(1.0))
+    assert not hump._unimodal_shape(h, _root(-1.0), _root(2.5))
+
+
+def _sqrt_fraction(x: Fraction) -> Fraction:
+    with mpmath.workdps(60):
+        return Fraction(mpmath.nstr(mpmath.sqrt(mpmath.mpf(x.numerator) / x.denominator), 60))
+
+
+def _near_threshold_cases():
+    """Depths ``1e-9`` inside the proven thresholds (the interval is a sliver there)."""
+    out = []
+    eps = Fraction(1, 10**9)
+    for n, Q, damping in ((3, Fraction(7), "exact"), (1, Fraction(5), "paper")):
+        ex = existence(n, Q, damping=damping, digits=15)
+        for th in ex.thresholds:
+            lo, hi = th.enclosure
+            for m in (lo - eps, hi + eps):
+                b = boundary(n, m, Q=Q, damping=damping, digits=20)
+                if b.exists:
+                    out.append((n, m, Q, damping))
+    return out
+
+
+#: just on the normal form's side of the switch to the trace form at m = 9/10 (half 1 within
+#: NEAR_CRITICAL of critical damping: 4 Q^2 = (1 + m)(1 + NEAR_CRITICAL^2), times 1 + 1e-20)
+Q_NEAR_CRITICAL = _sqrt_fraction(
+    Fraction(19, 40) * (1 + Fraction(NEAR_CRITICAL) ** 2) * (1 + Fraction(1, 10**20))
+)
+
+CASES = [
+    (3, Fraction(3, 10), Fraction(7), "exact", "pendulum", "1/2"),  # the benchmark's
+    (3, Fraction(3, 10), Fraction(7), "paper", "pendulum", "1/2"),
+    (1, Fraction(1, 5), Fraction(5), "paper", "pendulum", "1/2"),
+    (2, Fraction(1, 2), Fraction(20), "exact", "pendulum", "1/2"),
+    (5, Fraction(7, 10), Fraction(30), "exact", "pendulum", "1/2"),
+    (1, Fraction(99, 100), Fraction(7), "exact", "pendulum", "1/2"),  # edge next to the bracket
+    (3, Fraction(9, 10), Fraction(7), "exact", "pendulum", "1/2"),  # wide, not concave
+    (1, Fraction(3, 10), Fraction(7), "exact", "torsion", "1/2"),
+    (2, Fraction(1, 2), Fraction(20), "paper", "torsion", "1/2"),
+    (2, Fraction(1, 2), Fraction(20), "exact", "meissner", "1/3"),
+    (1, Fraction(3, 10), Fraction(7), "paper", "pendulum", "1/3"),
+    (1, Fraction(96, 100), Fraction(7, 10), "exact", "pendulum", "1/2"),  # half 1 critical
+    (1, Fraction(9, 10), Q_NEAR_CRITICAL, "exact", "pendulum", "1/2"),
+]
+
+
+@pytest.mark.parametrize("case", CASES, ids=lambda c: "-".join(map(str, c)))
+def test_edges_agree_with_floquet_and_with_the_former_proof(case, monkeypatch):
+    n, m, Q, damping, name, duty = case
+    sysv = system(name, duty=duty)
+    b = boundary(n, m, Q=Q, damping=damping, system=sysv, digits=30)
+    assert b.exists and b.certified, str(b)
+    _assert_floquet_edges(b, m, Q, damping, sysv, n)
+    monkeypatch.setattr(hump, "_unimodal_shape", lambda *a, **k: False)
+    old = boundary(n, m, Q=Q, damping=damping, system=sysv, digits=30)
+    assert old.exists and old.certified
+    for (a0, a1), (b0, b1) in zip(
+        (b.lower_enclosure, b.upper_enclosure),
+        (old.lower_enclosure, old.upper_enclosure),
+        strict=True,
+    ):
+        assert a0 <= b1 and b0 <= a1  # the enclosures overlap
+
+
+def test_near_critical_case_is_the_normal_form():
+    """The last case of CASES is just on the normal form's side of the switch to the trace form
+    (half 1 within NEAR_CRITICAL of critical damping), the one before it critical itself."""
+    assert form_for(CASES[-1][1], CASES[-1][2], "exact")[0] == "normal"
+    assert form_for(CASES[-2][1], CASES[-2][2], "exact")[0] == "trace"
+
+
+def test_near_thresholds():
+    """Slivers of intervals ``1e-9`` inside the proven thresholds (order 3 with Q = 7, exact;
+    order 1 with Q = 5, paper): certified, and each edge a Floquet root."""
+    cases = _near_threshold_cases()
+    assert len(cases) >= 3
+    for n, m, Q, damping in cases:
+        b = boundary(n, m, Q=Q, damping=damping, digits=30)
+        assert b.exists and b.certified, str(b)
+        assert 0 < b.upper - b.lower < 1e-3
+        _assert_floquet_edges(b, m, Q, damping, system("pendulum"), n)
+
+
+def test_the_benchmark_case_takes_the_fast_path(monkeypatch):
+    """Order 3, m = 0.3, Q = 7: the shape is proven by unimodality (one call, no sign proof on
+    sub-intervals)."""
+    calls = {"unimodal": [], "signs": 0}
+    real = hump._unimodal_shape
+
+    def unimodal(*a, **k):
+        calls["unimodal"].append(real(*a, **k))
+        return calls["unimodal"][-1]
+
+    def signs(*a, **k):  # pragma: no cover - must not be reached
+        calls["signs"] += 1
+        return False
+
+    monkeypatch.setattr(hump, "_unimodal_shape", unimodal)
+    monkeypatch.setattr(hump, "prove_sign", signs)
+    for digits in (15, 50):
+        b = boundary(3, "3/10", Q=7, digits=digits)
+        assert b.exists and b.certified
+    assert calls["unimodal"] == [True, True] and calls["signs"] == 0
