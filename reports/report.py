@@ -124,6 +124,18 @@ def _claim(counter, count: int) -> int | None:
     return k
 
 
+def _picklable(value) -> bool:
+    """Whether ``value`` can go through the pipe (a result the first process cannot receive it
+    computes again)."""
+    import pickle
+
+    try:
+        pickle.dumps(value)
+    except Exception:
+        return False
+    return True
+
+
 def _second_process(conn, counter, config: Config, directory, packages, names, queue, lang):
     """The second process: build ``names``, then the sections of ``queue`` the first process has
     not taken yet, and send back ``("ok", parts, shares, messages)``, or ``("error",
@@ -142,7 +154,7 @@ def _second_process(conn, counter, config: Config, directory, packages, names, q
                 build(name)
             while (k := _claim(counter, len(queue))) is not None:
                 build(queue[k])
-        shares = dict(ctx.memo)  # the results these sections share with others
+        shares = {k: v for k, v in ctx.memo.items() if _picklable(v)}  # shared with others
         conn.send(("ok", parts, shares, messages))
     except BaseException as exc:  # handed to the first process, which raises it
         try:
