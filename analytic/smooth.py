@@ -95,6 +95,7 @@ def system_matrix(l, g=_g, gamma=_gamma) -> sp.Matrix:
     return sp.Matrix([[0, 1 / l**2], [-g * l, -2 * gamma]])
 
 
+@cache  # the sine's is asked for by the integrator's forms, the Ince form and the report
 def hill_form(l) -> sp.Expr:
     """``q(t)`` of (V3) for the length ``l(t)``, derived: ``u = l phi`` substituted in (V1) and
     the result divided by ``l`` (see :func:`check_hill_form`)."""

@@ -77,7 +77,7 @@ def pareto_figure(panels: Sequence[tuple[str, Sequence[dict]]], *, subtitle: str
                 xs = np.array([p["seconds"] for p in front])
                 ys = np.array([max(float(p["error"]), FLOOR) for p in front])
                 ax.step(xs, ys, where="post", color="0.4", lw=0.6, zorder=2)
-                for text, x, y in _front_labels(front, xs, ys):
+                for text, x, y in _front_labels(front, xs, ys, points):
                     ax.annotate(
                         text,
                         (x, y),
@@ -128,9 +128,16 @@ def pareto_figure(panels: Sequence[tuple[str, Sequence[dict]]], *, subtitle: str
     return fig
 
 
-def _front_labels(front, xs, ys):
+#: a label moves right of the points of its family within this many decades of its height
+#: (about the height of a label on the panel's axis), so that it touches none of them
+CLUSTER_DECADES = 2.0
+
+
+def _front_labels(front, xs, ys, points=()):
     """One label per run of consecutive front points of the same family (``series K=1 ... 8``),
-    at the run's first point, so that labels of close points do not overlap."""
+    at the run's first point, so that labels of close points do not overlap; a label starts
+    right of the points of its family (in ``points``) at about its height, so that it does not
+    touch a cluster of them."""
     out = []
     k = 0
     while k < len(front):
@@ -144,7 +151,16 @@ def _front_labels(front, xs, ys):
             tail = last.split()[-1]
             tail = tail.split("=")[-1]
             text = f"{first} ... {tail}"
-        out.append((text, xs[k], ys[k]))
+        x, y = xs[k], ys[k]
+        for p in points:
+            err = max(float(p["error"]), FLOOR)
+            if (
+                p["family"] == front[k]["family"]
+                and abs(np.log10(err) - np.log10(y)) <= CLUSTER_DECADES
+                and p["seconds"] > x
+            ):
+                x = p["seconds"]
+        out.append((text, x, y))
         k = j + 1
     return out
 

@@ -9,9 +9,11 @@ document with its figures, written atomically and compiled when a TeX engine is 
 The expensive parts of each section (symbolic derivations, certified tables, boundary grids) go
 through a :class:`~analytic.cache.Cache` keyed by the source of the engine, so a second build with
 unchanged code only assembles and compiles.  A cold build runs the catalogue, the stitching
-section and the expansions in a second process while this one builds the other sections
-(:data:`~reports.sections.SECOND_PROCESS`); each section is computed the same way in either
-process, so the document does not depend on it.
+section and the expansions in a second process (:data:`~reports.sections.SECOND_PROCESS`) while
+this one builds the other sections, the longest first
+(:data:`~reports.sections.LONGEST_FIRST`); the second process takes the next of those when its
+own are done.  Each section is computed the same way in either process, so the document does not
+depend on it.
 """
 
 from __future__ import annotations
@@ -33,8 +35,8 @@ from .latex import DEFAULT, Config, Latex, document, section
 from .output import BANNER
 from .sections import (
     AFTER_SECOND,
+    LONGEST_FIRST,
     SECOND_PROCESS,
-    SECOND_SHARES,
     SECTIONS,
     Context,
     Part,
@@ -80,8 +82,8 @@ def assemble(
     """Build every section and the document around them (no files written), in ``lang``;
     ``command`` is the command line that produced the report, printed under the title.
     ``jobs=2`` builds the sections of :data:`~reports.sections.SECOND_PROCESS` in a second
-    process while this one builds the others (when they are not all in the cache); the document
-    is the same either way."""
+    process while this one builds the others (when they are not all in the cache), and that
+    process then shares the others' work; the document is the same either way."""
     ctx = ctx or Context()
     with language(lang):
         return _assemble(ctx, sections, lang, command, jobs)
@@ -111,18 +113,48 @@ def _second_names(ctx: Context, sections: tuple[str, ...], lang: str, jobs: int)
     return names
 
 
-def _second_process(conn, config: Config, directory, packages, names, lang: str) -> None:
-    """The second process: build ``names`` and send back ``("ok", parts, shares, messages)``,
-    or ``("error", exception)``."""
+def _claim(counter, count: int) -> int | None:
+    """The index of the next section of the shared list for the caller (the counter is shared by
+    both processes), or ``None`` when all ``count`` are taken."""
+    with counter.get_lock():
+        k = counter.value
+        if k >= count:
+            return None
+        counter.value = k + 1
+    return k
+
+
+def _picklable(value) -> bool:
+    """Whether ``value`` can go through the pipe (a result the first process cannot receive it
+    computes again)."""
+    import pickle
+
+    try:
+        pickle.dumps(value)
+    except Exception:
+        return False
+    return True
+
+
+def _second_process(conn, counter, config: Config, directory, packages, names, queue, lang):
+    """The second process: build ``names``, then the sections of ``queue`` the first process has
+    not taken yet, and send back ``("ok", parts, shares, messages)``, or ``("error",
+    exception)``."""
     try:
         messages: list[str] = []
         ctx = Context(config=config, cache=Cache(directory, packages), log=messages.append)
         parts = {}
         with language(lang):
-            for name in names:
+
+            def build(name: str) -> None:
                 start = time.perf_counter()
                 parts[name] = (_build(ctx, name, lang), time.perf_counter() - start)
-        shares = {k: ctx.memo[k] for k in SECOND_SHARES if k in ctx.memo}
+
+            for name in names:
+                build(name)
+            while (k := _claim(counter, len(queue))) is not None:
+                build(queue[k])
+        shares = {k: v for k, v in ctx.memo.items() if _picklable(v)}  # shared with others
         conn.send(("ok", parts, shares, messages))
     except BaseException as exc:  # handed to the first process, which raises it
         try:
@@ -134,9 +166,10 @@ def _second_process(conn, config: Config, directory, packages, names, lang: str)
 
 
 class _Second:
-    """The second process and the pipe its results come back through."""
+    """The second process, the counter of the shared list of sections and the pipe its results
+    come back through."""
 
-    def __init__(self, ctx: Context, names: tuple[str, ...], lang: str):
+    def __init__(self, ctx: Context, names: tuple[str, ...], queue: tuple[str, ...], lang: str):
         import multiprocessing
 
         from analytic.cache import cache_dir
@@ -147,14 +180,30 @@ class _Second:
         if base is not None:
             Cache(base / "analytic").ensure_key()
         mp = multiprocessing.get_context("spawn")
+        self.queue = queue
+        self.counter = mp.Value("i", 0)
         self.conn, child = mp.Pipe(duplex=False)
         self.process = mp.Process(
             target=_second_process,
-            args=(child, ctx.config, ctx.cache.directory, ctx.cache.packages, names, lang),
+            args=(
+                child,
+                self.counter,
+                ctx.config,
+                ctx.cache.directory,
+                ctx.cache.packages,
+                names,
+                queue,
+                lang,
+            ),
             daemon=True,
         )
         self.process.start()
         child.close()
+
+    def claim(self) -> str | None:
+        """The next section of the shared list for this process, ``None`` when none is left."""
+        k = _claim(self.counter, len(self.queue))
+        return None if k is None else self.queue[k]
 
     def result(self):
         try:
@@ -196,19 +245,27 @@ def _assemble(ctx: Context, sections, lang: str, command: str | None, jobs: int)
     second = None
     try:
         if second_names:
-            second = _Second(ctx, second_names, lang)
+            # the rest is shared: each process takes the next section when it is free
+            rest = [n for n in mine if n not in later]
+            queue = tuple(n for n in LONGEST_FIRST if n in rest) + tuple(
+                n for n in rest if n not in LONGEST_FIRST
+            )
+            second = _Second(ctx, second_names, queue, lang)
             for name in second_names:
                 ctx.log(f"{title(name)} ... (in a second process)")
-        for name in mine:
-            if name not in later:
+            while (name := second.claim()) is not None:
+                build(name)
+        else:
+            for name in mine:
                 build(name)
         if second is not None:
             done, shares, messages = second.result()
             for msg in messages:
                 ctx.log(msg)
-            for name in second_names:
-                parts[name], seconds[name] = done[name]
-                ctx.log(f"{title(name)}: {seconds[name]:.1f} s (second process)")
+            for name in sections:
+                if name in done:
+                    parts[name], seconds[name] = done[name]
+                    ctx.log(f"{title(name)}: {seconds[name]:.1f} s (second process)")
             for k, v in shares.items():
                 ctx.memo.setdefault(k, v)
         for name in later:

@@ -58,3 +58,26 @@ def test_one_process_when_everything_is_cached(second_builds_closings, tmp_path)
     ctx = Context(cache=Cache(tmp_path / "report", PACKAGES), log=messages.append)
     assemble(ctx, SECTIONS, jobs=2)
     assert not any("second process" in m for m in messages)
+
+
+def test_second_process_takes_the_shared_sections_left():
+    """After its own sections the second process builds the sections of the shared list not yet
+    taken (here: none of its own, the first of two already taken by the first process), and
+    hands back what it built, the same as the first process builds it."""
+    import multiprocessing
+
+    from reports.i18n import language
+    from reports.latex import DEFAULT
+
+    mp = multiprocessing.get_context("spawn")
+    counter = mp.Value("i", 1)
+    receive, send = mp.Pipe(duplex=False)
+    queue = ("model", "closings")
+    report._second_process(send, counter, DEFAULT, None, PACKAGES, (), queue, "en")
+    kind, parts, _, _ = receive.recv()
+    assert kind == "ok"
+    assert set(parts) == {"closings"}
+    assert counter.value == len(queue)
+    with language("en"):
+        alone = report._build(Context(log=lambda m: None), "closings", "en")
+    assert parts["closings"][0] == alone

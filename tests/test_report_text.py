@@ -161,3 +161,39 @@ def test_time_figure_titles_end_inside_the_figure(lang):
         assert box.x1 <= fig.bbox.x1 and box.y1 <= fig.bbox.y1, (t.get_text(), box)
     if lang == "ru":
         assert "рад" in " ".join(t.get_text() for t in _figure_texts(fig))
+
+
+@pytest.mark.parametrize("lang", ["en", "ru"])
+def test_front_labels_touch_no_marker(lang):
+    # the report's speed figure from the stored benchmark: a label of the Pareto front (e.g.
+    # "series K=1" at a cluster of series points) overlaps no point of its family
+    import json
+
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+    from matplotlib.lines import Line2D
+    from matplotlib.text import Annotation
+
+    from reports.benchplots import pareto_figure
+    from reports.sections.performance import BENCH_RESULTS
+
+    pareto = json.loads(BENCH_RESULTS.read_text(encoding="utf-8"))["pareto"]
+    with language(lang):
+        fig = pareto_figure([(tr("all scenes"), pareto["all"]), ("m", pareto["small m"])])
+    renderer = FigureCanvasAgg(fig).get_renderer()
+    fig.draw(renderer)
+    checked = 0
+    for ax in fig.axes:
+        marks = [m for m in ax.get_lines() if isinstance(m, Line2D) and m.get_marker() != "None"]
+        for t in ax.texts:
+            if isinstance(t, Annotation) and t.get_fontsize() == 6 and t.get_color() == "0.2":
+                # the run's first point: the front marker at the label's height
+                x, y = t.xy
+                first = next(
+                    m for m in marks if m.get_markeredgecolor() == "black" and m.get_ydata()[0] == y
+                )
+                box = t.get_window_extent(renderer)
+                for m in marks:
+                    if m.get_color() == first.get_color():
+                        assert not box.overlaps(m.get_window_extent(renderer)), t.get_text()
+                checked += 1
+    assert checked >= 4

@@ -288,7 +288,9 @@ _LOW_BITS = 64
 
 
 def _secant(F, x1: arb, x2: arb, f1: arb, goal: arb, iters: int):
-    """Secant steps on ball midpoints; returns ``(x_last, x_before, f_last, f_before)``."""
+    """Secant steps on ball midpoints; returns ``(x_last, x_before, f_last, f_before)``, the
+    ``f`` the midpoints of ``F`` there (``f_last`` is ``None`` when the last step converged
+    before ``F`` was evaluated at ``x_last``)."""
     f2 = F(x2).mid()
     for _ in range(iters):
         if f2 == f1:
@@ -297,7 +299,7 @@ def _secant(F, x1: arb, x2: arb, f1: arb, goal: arb, iters: int):
         x1, f1 = x2, f2
         x2 = x3
         if abs(x2 - x1) < goal * abs(x2):
-            break
+            return x2, x1, None, f1
         f2 = F(x2).mid()
     return x2, x1, f2, f1
 
@@ -314,8 +316,10 @@ def _refine(m: Fraction, e: int, x0: float, bits: int) -> arb:
 
         x1 = arb(x0)
         f1 = F_low(x1).mid()
-        x, xp, _, _ = _secant(F_low, x1, arb(x0 * (1 + 1e-9)), f1, arb(2) ** -50, 12)
-        slope = (F_low(x).mid() - F_low(xp).mid()) / (x - xp) if x != xp else None
+        x, xp, fx, fxp = _secant(F_low, x1, arb(x0 * (1 + 1e-9)), f1, arb(2) ** -50, 12)
+        if fx is None and x != xp:  # the values at the last two points, one already known
+            fx = F_low(x).mid()
+        slope = (fx - fxp) / (x - xp) if x != xp else None
     with ctx.workprec(bits):
 
         def F(T: arb) -> arb:
