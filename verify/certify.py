@@ -259,19 +259,23 @@ def quick_root(
     lo = hi = None
     if bracket is not None:
         lo, hi = bracket
-    while acc < need:
-        acc = min(2 * acc - 8, need + 8)
-        with ctx.workprec(acc + 12):
+    old = ctx.prec  # set and restored here (a workprec context costs more than this proof at
+    try:  # 15 digits)
+        while acc < need:
+            acc = min(2 * acc - 8, need + 8)
+            ctx.prec = acc + 12
             f, d = FD(x)
             if not (d.is_finite() and f.is_finite()) or d.contains(0):
                 return None
             x = (x - f / d).mid()
             if lo is not None and not lo < x < hi:
                 return None
-    with ctx.workprec(work):
-        size = max(abs(x), floor if type(floor) is arb else arb(floor))
-        delta = (size * arb((1, 4 - acc))).abs_upper()
-        X = arb(x, delta)
+        ctx.prec = work
+        size = abs(x)
+        fl = floor if type(floor) is arb else arb(floor)
+        if fl > size:
+            size = fl
+        X = arb(x, (size * pow2(4 - acc)).abs_upper())
         dX = dF(X)
         if dX.contains(0) or not dX.is_finite():
             return None
@@ -282,9 +286,24 @@ def quick_root(
             want = size
         else:
             want = arb(scale(float(x)) if callable(scale) else scale)
-        if not N.rad() <= (want * arb((1, -bits))).abs_lower():
+        if not N.rad() <= (want * pow2(-bits)).abs_lower():
             return None
         return Root(N, X, work)
+    finally:
+        ctx.prec = old
+
+
+_POW2: dict[int, arb] = {}
+
+
+def pow2(k: int) -> arb:
+    """The exact ball ``2**k`` (the same few powers recur: kept)."""
+    p = _POW2.get(k)
+    if p is None:
+        p = arb((1, k))
+        if len(_POW2) < 4096:
+            _POW2[k] = p
+    return p
 
 
 def prove_sign(

@@ -8,11 +8,10 @@ from __future__ import annotations
 import math
 from functools import lru_cache
 
-import mpmath
 from flint import arb, ctx
 
-from .certify import CertificationError, exact_mpf, to_mpf
-from .result import Boundary
+from .certify import CertificationError
+from .result import Boundary, from_balls
 
 __all__ = [
     "AtPrecision",
@@ -155,35 +154,21 @@ def balls_result(
     notes=(),
     certified=True,
 ) -> Boundary:
-    """The result from four balls: ``T/T0`` of the lower and the upper edge and their offsets.
-    The numbers are the midpoints (exactly), ``radii`` the balls' radii (exactly) and ``radius``
-    the largest, the enclosures of the edges the balls' ends (exactly: midpoint -+ radius)."""
-    radii = tuple(exact_mpf(x.rad()) for x in balls)
-    vals = [to_mpf(x) for x in balls]
-    encl = [
-        (mpmath.fsub(v, r, exact=True), mpmath.fadd(v, r, exact=True))
-        for v, r in zip(vals[:2], radii[:2], strict=True)
-    ]
-    return Boundary(
+    """The result from four balls: ``T/T0`` of the lower and the upper edge and their offsets
+    (:func:`verify.result.from_balls`: the numbers are the balls' midpoints, radii and ends,
+    converted exactly on first use)."""
+    return from_balls(
+        balls,
         order=order,
         m=m,
         Q=Q,
         damping=damping,
         digits=digits,
         method=method,
-        exists=True,
-        lower=vals[0],
-        upper=vals[1],
-        delta_lower=vals[2],
-        delta_upper=vals[3],
-        radius=max(radii),
-        lower_enclosure=encl[0],
-        upper_enclosure=encl[1],
-        certified=certified,
         regime=regime,
-        notes=tuple(notes),
-        radii=radii,
         system=system,
+        notes=notes,
+        certified=certified,
     )
 
 
