@@ -10,7 +10,7 @@ from functools import lru_cache
 
 from flint import arb, ctx
 
-from .certify import CertificationError
+from .certify import CertificationError, pow2
 from .result import Boundary, from_balls
 
 __all__ = [
@@ -42,13 +42,16 @@ class AtPrecision:
         prec = ctx.prec
         val = self._cache.get(prec)
         if val is None:
-            with ctx.workprec(max(prec, self._min) + 12):
+            ctx.prec = max(prec, self._min) + 12
+            try:
                 if prec < self._top:
                     val = _round(self._cache[self._top])
                 else:
                     val = self._make()
                     if self._rounded:
                         self._top = prec
+            finally:
+                ctx.prec = prec
             self._cache[prec] = val
         return val
 
@@ -102,7 +105,9 @@ def edges_result(
     for the two edges, near ``m = 1``; ``None`` to use ``theta``) give ``T`` from ``x = y + (n -
     1) pi/2`` and the offset from ``theta = y - pi/2``, each without cancellation."""
     n = req.order
-    with ctx.workprec(prec):
+    old = ctx.prec
+    ctx.prec = prec
+    try:
         p = P()
         if theta and ys is not None:
             pi = arb.pi()
@@ -121,23 +126,25 @@ def edges_result(
             pi = arb.pi()
             Ts = [2 * p.Q * z / pi for z in (th_lo, th_hi)]
             ds = [T - arb(n) / (2 * p.w0) for T in Ts]
-        tol = arb((1, -bits))
+        tol = pow2(-bits)
         for T in Ts:
             if not T.rad() <= T.abs_lower() * tol:  # pragma: no cover - guard
                 raise CertificationError(f"enclosure of T too wide: {T}")
-        return balls_result(
-            Ts + ds,
-            order=n,
-            m=req.m,
-            Q=req.Q,
-            damping=req.damping,
-            digits=req.digits,
-            method=method,
-            regime=regime,
-            system=req.system,
-            notes=notes,
-            certified=certified,
-        )
+    finally:
+        ctx.prec = old
+    return balls_result(
+        Ts + ds,
+        order=n,
+        m=req.m,
+        Q=req.Q,
+        damping=req.damping,
+        digits=req.digits,
+        method=method,
+        regime=regime,
+        system=req.system,
+        notes=notes,
+        certified=certified,
+    )
 
 
 def balls_result(

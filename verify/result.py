@@ -244,6 +244,8 @@ class _FromBalls(Boundary):
 
 
 _COMPARED = tuple(f.name for f in fields(Boundary) if f.compare)
+
+
 def _ends(v, r) -> tuple:
     """``(v - r, v + r)`` exactly."""
     return mpmath.fsub(v, r, exact=True), mpmath.fadd(v, r, exact=True)

@@ -56,8 +56,12 @@ def undamped(req: Request) -> Boundary:
     # the parameters once, at the precision of the proof (quick_root's); the float start and
     # every lower precision of the Newton steps take them rounded from there
     top = bits + QUICK_GUARD
-    with ctx.workprec(top):
+    old = ctx.prec
+    ctx.prec = top
+    try:
         pt, ct = P(), C()
+    finally:
+        ctx.prec = old
     if float(pt.bm) < NEAR_ONE:
         ys = sorted(
             (near_one_edge(n, eps, P, C, bits) for eps in (1, -1)),
@@ -120,7 +124,9 @@ def undamped(req: Request) -> Boundary:
                 F, dF, start, bits=bits, floor=floor, bracket=(-half, half), scale=scale
             )
         roots.append(root)
-    lo_root, hi_root = sorted(roots, key=lambda rt: float(rt.ball.mid()))
+    lo_root, hi_root = roots
+    if float(hi_root.ball.mid()) < float(lo_root.ball.mid()):
+        lo_root, hi_root = hi_root, lo_root
     return edges_result(
         req,
         "certified",
@@ -129,7 +135,7 @@ def undamped(req: Request) -> Boundary:
         P,
         bits,
         "per-edge equations",
-        max(r.prec for r in roots),
+        max(lo_root.prec, hi_root.prec),
     )
 
 
