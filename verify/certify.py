@@ -26,7 +26,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Callable
-from dataclasses import dataclass
+from typing import NamedTuple
 
 import mpmath
 from flint import arb, ctx
@@ -55,8 +55,7 @@ class CertificationError(ArithmeticError):
     """A result could not be proven at the precision allowed (e.g. a double root at a threshold)."""
 
 
-@dataclass(frozen=True)
-class Root:
+class Root(NamedTuple):
     """A proven simple root: ``ball`` contains exactly one zero of the function (in the ball
     ``search`` the test was run on), computed at ``prec`` bits."""
 
@@ -251,9 +250,10 @@ def quick_root(
     the zero and, being itself a Newton step, doubles the accuracy once more -- so the last full
     precision evaluation is that of the proof, not a further midpoint step.  The enclosure must
     meet the radius that :func:`certified_root` promises (``2**-bits`` relative to ``scale`` or
-    ``max(|root|, floor)``)."""
+    ``max(|root|, floor)``); a proven enclosure that is still too wide is the start of one more
+    test (its midpoint holds twice the accuracy)."""
     work = bits + QUICK_GUARD
-    need = (bits + 12) // 2 + 1
+    need = (bits + 4) // 2 + 1
     x = arb(x0)
     acc = start_bits
     lo = hi = None
@@ -271,24 +271,26 @@ def quick_root(
             if lo is not None and not lo < x < hi:
                 return None
         ctx.prec = work
-        size = abs(x)
         fl = floor if type(floor) is arb else arb(floor)
-        if fl > size:
-            size = fl
-        X = arb(x, (size * pow2(4 - acc)).abs_upper())
-        dX = dF(X)
-        if dX.contains(0) or not dX.is_finite():
-            return None
-        N = x - F(x) / dX
-        if not X.contains_interior(N):
-            return None
-        if scale is None:
-            want = size
-        else:
-            want = arb(scale(float(x)) if callable(scale) else scale)
-        if not N.rad() <= (want * pow2(-bits)).abs_lower():
-            return None
-        return Root(N, X, work)
+        for _ in range(2):
+            size = abs(x)
+            if fl > size:
+                size = fl
+            X = arb(x, (size * pow2(4 - acc)).abs_upper())
+            dX = dF(X)
+            if dX.contains(0) or not dX.is_finite():
+                return None
+            N = x - F(x) / dX
+            if not X.contains_interior(N):
+                return None
+            if scale is None:
+                want = size
+            else:
+                want = arb(scale(float(x)) if callable(scale) else scale)
+            if N.rad() <= (want * pow2(-bits)).abs_lower():
+                return Root(N, X, work)
+            x, acc = N.mid(), 2 * acc - 8  # proven, too wide: once more from its midpoint
+        return None
     finally:
         ctx.prec = old
 
