@@ -167,6 +167,8 @@ def _mpf_fraction(x) -> Fraction:
 def as_integer(value, *, name: str, low: int, high: int) -> int:
     """An integer ``low <= value <= high`` given as text (``"12"``), an int, or an integral float;
     text of more than 30 characters is refused before conversion."""
+    if type(value) is int and low <= value <= high:  # the common case, checked at once
+        return value
     allowed = f"{low} to {high}"
     if isinstance(value, bool):
         raise InputError(f"{name} {value!r} is not an integer; allowed range {allowed}")
@@ -255,6 +257,8 @@ def as_digits(d, allowed: tuple[int, int] = DIGITS_RANGE) -> int:
 
 def as_damping(model) -> str:
     """``"exact"`` or ``"paper"``."""
+    if type(model) is str and (model == "exact" or model == "paper"):  # the common case
+        return model
     if not isinstance(model, str) or model.strip().lower() not in ("exact", "paper"):
         raise InputError(f"damping model {_show(repr(model))} is not one of: exact, paper")
     return model.strip().lower()

@@ -73,7 +73,10 @@ def sgn_of(n: int) -> int:
 def theta_scale(theta: float, n: int, bits: int):
     """What ``theta`` must be accurate relative to: itself (for the offset ``delta``) and
     ``x = n pi/2 + theta`` (for ``T``; small for the lower edge of order 1 as ``m -> 1``)."""
-    return max(min(abs(theta), abs(n * math.pi / 2 + theta)), theta_floor(bits, n))
+    s = min(abs(theta), abs(n * math.pi / 2 + theta))
+    if s > n * 1e-59:  # above theta_floor(bits, n) <= 3 n 2**-201 (no ball compared)
+        return s
+    return max(s, theta_floor(bits, n))
 
 
 @lru_cache(maxsize=256)

@@ -88,8 +88,9 @@ def undamped(req: Request) -> Boundary:
         a = rounded.get(prec)
         if a is None:
             if prec < top:
-                with ctx.workprec(prec + 12):
-                    a = (+ct, +pt.r, +pt.beta)
+                ctx.prec = prec + 12
+                a = (+ct, +pt.r, +pt.beta)
+                ctx.prec = prec
             else:
                 p = P()
                 a = (C(), p.r, p.beta)
@@ -100,6 +101,10 @@ def undamped(req: Request) -> Boundary:
     floor = theta_floor(bits, n)
     window = _WINDOW
     roots = []
+
+    def scale(t):
+        return theta_scale(t, n, bits)
+
     for eps in (1, -1):
         start = float_edge(f_math, n, eps, r_f, beta_f)
 
@@ -114,9 +119,6 @@ def undamped(req: Request) -> Boundary:
         def FD(t, eps=eps):
             c, r, beta = args()
             return fd_arb(t, c, sgn, eps, r, beta)
-
-        def scale(t):
-            return theta_scale(t, n, bits)
 
         root = quick_root(FD, F, dF, start, bits=bits, floor=floor, bracket=window, scale=scale)
         if root is None:
