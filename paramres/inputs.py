@@ -362,6 +362,8 @@ def as_modulation(modulation, switch_time=None, system=None) -> tuple[str, Fract
     switching time ``S`` (``None`` otherwise).  Refused: an unknown kind, a switching time
     without ``ramp``, ``ramp`` without one, ``ramp`` or ``sine`` for a system other than the
     pendulum (a ``System`` or its name), ``sine`` with a duty other than ``1/2``."""
+    if type(modulation) is str and modulation == "square" and switch_time is None:
+        return "square", None  # the default: nothing below applies to it
     kind = modulation.strip().lower() if isinstance(modulation, str) else None
     if kind not in MODULATIONS:
         raise InputError(
