@@ -139,9 +139,18 @@ def as_depth(m) -> Fraction | mpmath.mpf:
             raise InputError(f"depth m = {m} is outside the allowed range {allowed}")
         return m
     val = as_number(m, name="depth m", allowed=allowed)
-    if not MIN_DEPTH <= val < 1:
+    if not _depth_ok(val.numerator, val.denominator):
         raise InputError(f"depth m = {_show(m)} is outside the allowed range {allowed}")
     return val
+
+
+def _depth_ok(p: int, q: int) -> bool:
+    """``MIN_DEPTH <= p/q < 1`` (``q > 0``), in integers (a comparison of Fractions costs more
+    than a certified edge's proof at 15 digits)."""
+    return 0 < p < q and p * _MIN_DEPTH_PQ[1] >= q * _MIN_DEPTH_PQ[0]
+
+
+_MIN_DEPTH_PQ = (MIN_DEPTH.numerator, MIN_DEPTH.denominator)
 
 
 def _show(value) -> str:
@@ -158,6 +167,8 @@ def _mpf_fraction(x) -> Fraction:
 def as_integer(value, *, name: str, low: int, high: int) -> int:
     """An integer ``low <= value <= high`` given as text (``"12"``), an int, or an integral float;
     text of more than 30 characters is refused before conversion."""
+    if type(value) is int and low <= value <= high:  # the common case, checked at once
+        return value
     allowed = f"{low} to {high}"
     if isinstance(value, bool):
         raise InputError(f"{name} {value!r} is not an integer; allowed range {allowed}")
@@ -246,6 +257,8 @@ def as_digits(d, allowed: tuple[int, int] = DIGITS_RANGE) -> int:
 
 def as_damping(model) -> str:
     """``"exact"`` or ``"paper"``."""
+    if type(model) is str and (model == "exact" or model == "paper"):  # the common case
+        return model
     if not isinstance(model, str) or model.strip().lower() not in ("exact", "paper"):
         raise InputError(f"damping model {_show(repr(model))} is not one of: exact, paper")
     return model.strip().lower()
@@ -349,6 +362,8 @@ def as_modulation(modulation, switch_time=None, system=None) -> tuple[str, Fract
     switching time ``S`` (``None`` otherwise).  Refused: an unknown kind, a switching time
     without ``ramp``, ``ramp`` without one, ``ramp`` or ``sine`` for a system other than the
     pendulum (a ``System`` or its name), ``sine`` with a duty other than ``1/2``."""
+    if type(modulation) is str and modulation == "square" and switch_time is None:
+        return "square", None  # the default: nothing below applies to it
     kind = modulation.strip().lower() if isinstance(modulation, str) else None
     if kind not in MODULATIONS:
         raise InputError(

@@ -26,7 +26,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Callable
-from dataclasses import dataclass
+from typing import NamedTuple
 
 import mpmath
 from flint import arb, ctx
@@ -55,8 +55,7 @@ class CertificationError(ArithmeticError):
     """A result could not be proven at the precision allowed (e.g. a double root at a threshold)."""
 
 
-@dataclass(frozen=True)
-class Root:
+class Root(NamedTuple):
     """A proven simple root: ``ball`` contains exactly one zero of the function (in the ball
     ``search`` the test was run on), computed at ``prec`` bits."""
 
@@ -251,40 +250,62 @@ def quick_root(
     the zero and, being itself a Newton step, doubles the accuracy once more -- so the last full
     precision evaluation is that of the proof, not a further midpoint step.  The enclosure must
     meet the radius that :func:`certified_root` promises (``2**-bits`` relative to ``scale`` or
-    ``max(|root|, floor)``)."""
+    ``max(|root|, floor)``); a proven enclosure that is still too wide is the start of one more
+    test (its midpoint holds twice the accuracy)."""
     work = bits + QUICK_GUARD
-    need = (bits + 12) // 2 + 1
+    need = (bits + 4) // 2 + 1
     x = arb(x0)
     acc = start_bits
     lo = hi = None
     if bracket is not None:
         lo, hi = bracket
-    while acc < need:
-        acc = min(2 * acc - 8, need + 8)
-        with ctx.workprec(acc + 12):
+    old = ctx.prec  # set and restored here (a workprec context costs more than this proof at
+    try:  # 15 digits)
+        while acc < need:
+            acc = min(2 * acc - 8, need + 8)
+            ctx.prec = acc + 12
             f, d = FD(x)
             if not (d.is_finite() and f.is_finite()) or d.contains(0):
                 return None
             x = (x - f / d).mid()
             if lo is not None and not lo < x < hi:
                 return None
-    with ctx.workprec(work):
-        size = max(abs(x), floor if type(floor) is arb else arb(floor))
-        delta = (size * arb((1, 4 - acc))).abs_upper()
-        X = arb(x, delta)
-        dX = dF(X)
-        if dX.contains(0) or not dX.is_finite():
-            return None
-        N = x - F(x) / dX
-        if not X.contains_interior(N):
-            return None
-        if scale is None:
-            want = size
-        else:
-            want = arb(scale(float(x)) if callable(scale) else scale)
-        if not N.rad() <= (want * arb((1, -bits))).abs_lower():
-            return None
-        return Root(N, X, work)
+        ctx.prec = work
+        fl = floor if type(floor) is arb else arb(floor)
+        for _ in range(2):
+            size = abs(x)
+            if fl > size:
+                size = fl
+            X = arb(x, (size * pow2(4 - acc)).abs_upper())
+            dX = dF(X)
+            if dX.contains(0) or not dX.is_finite():
+                return None
+            N = x - F(x) / dX
+            if not X.contains_interior(N):
+                return None
+            if scale is None:
+                want = size
+            else:
+                want = arb(scale(float(x)) if callable(scale) else scale)
+            if N.rad() <= (want * pow2(-bits)).abs_lower():
+                return Root(N, X, work)
+            x, acc = N.mid(), 2 * acc - 8  # proven, too wide: once more from its midpoint
+        return None
+    finally:
+        ctx.prec = old
+
+
+_POW2: dict[int, arb] = {}
+
+
+def pow2(k: int) -> arb:
+    """The exact ball ``2**k`` (the same few powers recur: kept)."""
+    p = _POW2.get(k)
+    if p is None:
+        p = arb((1, k))
+        if len(_POW2) < 4096:
+            _POW2[k] = p
+    return p
 
 
 def prove_sign(

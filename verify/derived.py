@@ -50,6 +50,7 @@ import math
 import re
 from dataclasses import dataclass, field
 from functools import cache
+from operator import methodcaller
 
 import mpmath
 import numpy as np
@@ -148,16 +149,16 @@ _BACKENDS = {
         "_q": _mp_q,
         "_pi": lambda: +mpmath.pi,
     },
-    "arb": {
-        "sin": lambda z: z.sin(),
-        "cos": lambda z: z.cos(),
-        "sinh": lambda z: z.sinh(),
-        "cosh": lambda z: z.cosh(),
-        "sqrt": lambda z: z.sqrt(),
+    "arb": {  # z.sin() etc. (balls or jets, verify.certify.Jet), called without a Python frame
+        "sin": methodcaller("sin"),
+        "cos": methodcaller("cos"),
+        "sinh": methodcaller("sinh"),
+        "cosh": methodcaller("cosh"),
+        "sqrt": methodcaller("sqrt"),
         "atan2": lambda a, b: arb.atan2(a, b),
-        "asin": lambda z: z.asin(),
-        "sin_cos": lambda z: z.sin_cos(),
-        "sinh_cosh": lambda z: z.sinh_cosh(),
+        "asin": methodcaller("asin"),
+        "sin_cos": methodcaller("sin_cos"),
+        "sinh_cosh": methodcaller("sinh_cosh"),
         "_q": _arb_q,
         "_pi": arb.pi,
     },

@@ -8,11 +8,10 @@ from __future__ import annotations
 import math
 from functools import lru_cache
 
-import mpmath
 from flint import arb, ctx
 
-from .certify import CertificationError, exact_mpf, to_mpf
-from .result import Boundary
+from .certify import CertificationError, pow2
+from .result import Boundary, from_balls
 
 __all__ = [
     "AtPrecision",
@@ -43,13 +42,16 @@ class AtPrecision:
         prec = ctx.prec
         val = self._cache.get(prec)
         if val is None:
-            with ctx.workprec(max(prec, self._min) + 12):
+            ctx.prec = max(prec, self._min) + 12
+            try:
                 if prec < self._top:
                     val = _round(self._cache[self._top])
                 else:
                     val = self._make()
                     if self._rounded:
                         self._top = prec
+            finally:
+                ctx.prec = prec
             self._cache[prec] = val
         return val
 
@@ -71,7 +73,10 @@ def sgn_of(n: int) -> int:
 def theta_scale(theta: float, n: int, bits: int):
     """What ``theta`` must be accurate relative to: itself (for the offset ``delta``) and
     ``x = n pi/2 + theta`` (for ``T``; small for the lower edge of order 1 as ``m -> 1``)."""
-    return max(min(abs(theta), abs(n * math.pi / 2 + theta)), theta_floor(bits, n))
+    s = min(abs(theta), abs(n * math.pi / 2 + theta))
+    if s > n * 1e-59:  # above theta_floor(bits, n) <= 3 n 2**-201 (no ball compared)
+        return s
+    return max(s, theta_floor(bits, n))
 
 
 @lru_cache(maxsize=256)
@@ -103,7 +108,9 @@ def edges_result(
     for the two edges, near ``m = 1``; ``None`` to use ``theta``) give ``T`` from ``x = y + (n -
     1) pi/2`` and the offset from ``theta = y - pi/2``, each without cancellation."""
     n = req.order
-    with ctx.workprec(prec):
+    old = ctx.prec
+    ctx.prec = prec
+    try:
         p = P()
         if theta and ys is not None:
             pi = arb.pi()
@@ -122,23 +129,25 @@ def edges_result(
             pi = arb.pi()
             Ts = [2 * p.Q * z / pi for z in (th_lo, th_hi)]
             ds = [T - arb(n) / (2 * p.w0) for T in Ts]
-        tol = arb((1, -bits))
+        tol = pow2(-bits)
         for T in Ts:
             if not T.rad() <= T.abs_lower() * tol:  # pragma: no cover - guard
                 raise CertificationError(f"enclosure of T too wide: {T}")
-        return balls_result(
-            Ts + ds,
-            order=n,
-            m=req.m,
-            Q=req.Q,
-            damping=req.damping,
-            digits=req.digits,
-            method=method,
-            regime=regime,
-            system=req.system,
-            notes=notes,
-            certified=certified,
-        )
+    finally:
+        ctx.prec = old
+    return balls_result(
+        Ts + ds,
+        order=n,
+        m=req.m,
+        Q=req.Q,
+        damping=req.damping,
+        digits=req.digits,
+        method=method,
+        regime=regime,
+        system=req.system,
+        notes=notes,
+        certified=certified,
+    )
 
 
 def balls_result(
@@ -155,35 +164,21 @@ def balls_result(
     notes=(),
     certified=True,
 ) -> Boundary:
-    """The result from four balls: ``T/T0`` of the lower and the upper edge and their offsets.
-    The numbers are the midpoints (exactly), ``radii`` the balls' radii (exactly) and ``radius``
-    the largest, the enclosures of the edges the balls' ends (exactly: midpoint -+ radius)."""
-    radii = tuple(exact_mpf(x.rad()) for x in balls)
-    vals = [to_mpf(x) for x in balls]
-    encl = [
-        (mpmath.fsub(v, r, exact=True), mpmath.fadd(v, r, exact=True))
-        for v, r in zip(vals[:2], radii[:2], strict=True)
-    ]
-    return Boundary(
+    """The result from four balls: ``T/T0`` of the lower and the upper edge and their offsets
+    (:func:`verify.result.from_balls`: the numbers are the balls' midpoints, radii and ends,
+    converted exactly on first use)."""
+    return from_balls(
+        balls,
         order=order,
         m=m,
         Q=Q,
         damping=damping,
         digits=digits,
         method=method,
-        exists=True,
-        lower=vals[0],
-        upper=vals[1],
-        delta_lower=vals[2],
-        delta_upper=vals[3],
-        radius=max(radii),
-        lower_enclosure=encl[0],
-        upper_enclosure=encl[1],
-        certified=certified,
         regime=regime,
-        notes=tuple(notes),
-        radii=radii,
         system=system,
+        notes=notes,
+        certified=certified,
     )
 
 

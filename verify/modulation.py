@@ -45,6 +45,19 @@ def _friction(kind: str, Q, damping, *, edges: bool) -> None:
         )
 
 
+_SQUARE: list = []
+
+
+def _square_boundary():
+    """:func:`verify.solve.boundary`, imported on first use (kept: an import statement costs more
+    than a certified edge at 15 digits)."""
+    if not _SQUARE:
+        from .solve import boundary
+
+        _SQUARE.append(boundary)
+    return _SQUARE[0]
+
+
 def boundary(
     order,
     m=None,
@@ -67,9 +80,7 @@ def boundary(
     sysv = as_system(system, getattr(system, "duty", duty)) if modulation != "square" else None
     kind, S = as_modulation(modulation, switch_time, sysv or system)
     if kind == "square":
-        from .solve import boundary as square_boundary
-
-        return square_boundary(
+        return _square_boundary()(
             order,
             m,
             Q=Q,

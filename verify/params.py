@@ -42,7 +42,7 @@ returns numbers of the same kind.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, fields
 from fractions import Fraction
 from functools import lru_cache
 
@@ -85,6 +85,9 @@ class NormalParams:
     w0: object
     dinv: object
     bm: object = None  # 1 - beta
+
+
+_NORMAL_FIELDS = tuple(f.name for f in fields(NormalParams))
 
 
 @dataclass(frozen=True)
@@ -203,30 +206,36 @@ def _one_minus(m, om):
     return 1 - m if om is None else om
 
 
-@lru_cache(maxsize=256)
-def _rational_parts(m: Fraction) -> tuple:
-    """``1 - m`` and ``(1 - m)(1 + m)`` of an exact depth (the same at every precision)."""
-    om = 1 - m
-    return om, om * (1 + m)
-
-
 def _undamped(m, B: Backend, om=None):
     if om is None and type(m) is Fraction:
-        om, s2 = _rational_parts(m)
+        # the exact rationals from the integers of m = p/q (in lowest terms, and so are
+        # 1 - m = (q - p)/q and (1 - m)(1 + m) = (q - p)(q + p)/q^2): rounded once each
+        p, q = m.numerator, m.denominator
+        rat = B.namespace["_q"]
+        s = B.sqrt(rat((q - p) * (q + p), q * q))
+        mb, omb = rat(p, q), rat(q - p, q)
     else:
         om = _one_minus(m, om)
-        s2 = om * (1 + m)
-    s = _root(s2, B)
+        s = _root(om * (1 + m), B)
+        mb, omb = _lift(m, B), _lift(om, B)
     ps = 1 + s
-    beta = _lift(m, B) / ps
+    beta = mb / ps
     b2 = beta * beta
     q = 1 + 3 * b2
     r = beta * (3 + b2) / q
     omb2 = 2 * s / ps
     u = omb2 * omb2 * omb2 / (q * q)
     w = B.sqrt(ps / 2) / s
-    bm = (_lift(om, B) + s) / ps  # 1 - m is exact or given: no cancellation
+    bm = (omb + s) / ps  # 1 - m is exact or given: no cancellation
     return r, r * r, u, beta, w, bm
+
+
+def _normal(*values) -> NormalParams:
+    """``NormalParams(*values)`` without the frozen dataclass's ``__init__`` (one
+    ``object.__setattr__`` per field: more than the arithmetic of the parameters at 15 digits)."""
+    obj = object.__new__(NormalParams)
+    obj.__dict__.update(zip(_NORMAL_FIELDS, values, strict=True))
+    return obj
 
 
 def normal_params(
@@ -261,7 +270,7 @@ def normal_params(
     r, r2, u, beta, w0, bm = _undamped(m, B, om)
     zero = r * 0
     if Q is None:
-        return NormalParams(r, r2, u, beta, w0, zero, w0, zero, bm)
+        return _normal(r, r2, u, beta, w0, zero, w0, zero, bm)
     if damping == "paper":
         return NormalParams(r, r2, u, beta, w0, 1 / (2 * _lift(Q, B) * w0), w0, zero, bm)
     om = _one_minus(m, om)

@@ -4,7 +4,7 @@ them into exact values."""
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, fields
 from fractions import Fraction
 
 from analytic.system import PAPER, System
@@ -66,7 +66,7 @@ def make_request(order, m, Q, damping, digits, method, tol, system, duty) -> tup
         tt, method = as_tolerance(tol), "auto"
     QF = None if QQ is None else exact_fraction(QQ)
     if sysv is PAPER or sysv.is_paper:
-        return Request(n, exact_fraction(mm), QF, model, d, mm, tt), method
+        return _request(n, exact_fraction(mm), QF, model, d, mm, tt, PAPER), method
     if method != "certified":
         raise InputError(
             f"method {method!r} is for the paper's system only; {sysv.label} uses 'certified'"
@@ -74,3 +74,14 @@ def make_request(order, m, Q, damping, digits, method, tol, system, duty) -> tup
     return Request(
         n, None if mm is None else exact_fraction(mm), QF, model, d, mm, tt, sysv
     ), method
+
+
+def _request(*values) -> Request:
+    """``Request(*values)`` (every field) without the frozen dataclass's ``__init__`` (one
+    ``object.__setattr__`` per field: a sizeable part of a certified edge at 15 digits)."""
+    obj = object.__new__(Request)
+    obj.__dict__.update(zip(_FIELDS, values, strict=True))
+    return obj
+
+
+_FIELDS = tuple(f.name for f in fields(Request))

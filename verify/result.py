@@ -7,7 +7,7 @@ a number with only the digits its proven radius supports.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, fields
 from fractions import Fraction
 
 import mpmath
@@ -15,9 +15,10 @@ from mpmath.libmp import to_str
 
 from analytic.system import PAPER, System
 
+from .certify import exact_mpf, to_mpf
 from .rounding import _POW10, _pow10, largest_bound, printed_bound
 
-__all__ = ["Boundary", "proven_text", "fraction_text"]
+__all__ = ["Boundary", "from_balls", "proven_text", "fraction_text"]
 
 
 class _once:
@@ -205,6 +206,97 @@ class Boundary:
         tail = f"  [{self.method}; {self.regime}; {proof}]"
         notes = "".join(f"\n  note: {n}" for n in self.notes)
         return f"{head}\n{body}\n{tail}{notes}"
+
+
+class _FromBalls(Boundary):
+    """A :class:`Boundary` built from the four proven balls (:func:`from_balls`): the numbers --
+    ``lower, upper, delta_lower, delta_upper`` (the balls' midpoints), ``radii`` (their radii),
+    ``radius`` (the largest) and the enclosures (the balls' ends) -- are converted from the balls
+    exactly, each on first use, instead of all when the result is built.  Equal to a
+    :class:`Boundary` holding the same numbers."""
+
+    @_once
+    def lower(self):
+        return to_mpf(self._balls[0])
+
+    @_once
+    def upper(self):
+        return to_mpf(self._balls[1])
+
+    @_once
+    def delta_lower(self):
+        return to_mpf(self._balls[2])
+
+    @_once
+    def delta_upper(self):
+        return to_mpf(self._balls[3])
+
+    @_once
+    def radii(self):
+        return tuple(exact_mpf(x.rad()) for x in self._balls)
+
+    @_once
+    def radius(self):
+        return max(self.radii)
+
+    @_once
+    def lower_enclosure(self):
+        return _ends(self.lower, self.radii[0])
+
+    @_once
+    def upper_enclosure(self):
+        return _ends(self.upper, self.radii[1])
+
+    def __eq__(self, other):
+        if not isinstance(other, Boundary):
+            return NotImplemented
+        return all(getattr(self, f) == getattr(other, f) for f in _COMPARED)
+
+    __hash__ = Boundary.__hash__
+
+
+_COMPARED = tuple(f.name for f in fields(Boundary) if f.compare)
+
+
+def _ends(v, r) -> tuple:
+    """``(v - r, v + r)`` exactly."""
+    return mpmath.fsub(v, r, exact=True), mpmath.fadd(v, r, exact=True)
+
+
+def from_balls(
+    balls,
+    *,
+    order,
+    m,
+    Q,
+    damping,
+    digits,
+    method,
+    regime,
+    system,
+    notes=(),
+    certified=True,
+) -> Boundary:
+    """The result from four proven balls: ``T/T0`` of the lower and the upper edge and their
+    offsets.  The numbers are the balls' midpoints (exactly), ``radii`` their radii (exactly) and
+    ``radius`` the largest, the enclosures of the edges the balls' ends (exactly: midpoint -+
+    radius); each is converted from the balls on first use."""
+    obj = object.__new__(_FromBalls)
+    obj.__dict__.update(
+        order=order,
+        m=m,
+        Q=Q,
+        damping=damping,
+        digits=digits,
+        method=method,
+        exists=True,
+        certified=certified,
+        regime=regime,
+        notes=tuple(notes),
+        system=system,
+        _balls=tuple(balls),
+    )
+    return obj
 
 
 def proven_text(x: mpmath.mpf, rad, digits: int) -> str:

@@ -56,8 +56,12 @@ def undamped(req: Request) -> Boundary:
     # the parameters once, at the precision of the proof (quick_root's); the float start and
     # every lower precision of the Newton steps take them rounded from there
     top = bits + QUICK_GUARD
-    with ctx.workprec(top):
+    old = ctx.prec
+    ctx.prec = top
+    try:
         pt, ct = P(), C()
+    finally:
+        ctx.prec = old
     if float(pt.bm) < NEAR_ONE:
         ys = sorted(
             (near_one_edge(n, eps, P, C, bits) for eps in (1, -1)),
@@ -84,8 +88,9 @@ def undamped(req: Request) -> Boundary:
         a = rounded.get(prec)
         if a is None:
             if prec < top:
-                with ctx.workprec(prec + 12):
-                    a = (+ct, +pt.r, +pt.beta)
+                ctx.prec = prec + 12
+                a = (+ct, +pt.r, +pt.beta)
+                ctx.prec = prec
             else:
                 p = P()
                 a = (C(), p.r, p.beta)
@@ -96,6 +101,10 @@ def undamped(req: Request) -> Boundary:
     floor = theta_floor(bits, n)
     window = _WINDOW
     roots = []
+
+    def scale(t):
+        return theta_scale(t, n, bits)
+
     for eps in (1, -1):
         start = float_edge(f_math, n, eps, r_f, beta_f)
 
@@ -111,16 +120,15 @@ def undamped(req: Request) -> Boundary:
             c, r, beta = args()
             return fd_arb(t, c, sgn, eps, r, beta)
 
-        def scale(t):
-            return theta_scale(t, n, bits)
-
         root = quick_root(FD, F, dF, start, bits=bits, floor=floor, bracket=window, scale=scale)
         if root is None:
             root = certified_root(
                 F, dF, start, bits=bits, floor=floor, bracket=(-half, half), scale=scale
             )
         roots.append(root)
-    lo_root, hi_root = sorted(roots, key=lambda rt: float(rt.ball.mid()))
+    lo_root, hi_root = roots
+    if float(hi_root.ball.mid()) < float(lo_root.ball.mid()):
+        lo_root, hi_root = hi_root, lo_root
     return edges_result(
         req,
         "certified",
@@ -129,7 +137,7 @@ def undamped(req: Request) -> Boundary:
         P,
         bits,
         "per-edge equations",
-        max(r.prec for r in roots),
+        max(lo_root.prec, hi_root.prec),
     )
 
 
