@@ -121,11 +121,129 @@ def exponential_polynomial(*exprs: sp.Expr) -> list[sp.Expr]:
     return _z_mapping(exprs)[0]
 
 
+class _Unfit(Exception):
+    """An expression that :func:`_ring_field_elements` does not take (sympy's ``sfield`` does)."""
+
+
+def _scan(expr, gens: set, seen: dict) -> bool:
+    """Collect the generators of ``expr`` into ``gens`` (symbols only); whether ``I`` occurs."""
+    if expr in seen:
+        return seen[expr]
+    has_i = False
+    if expr.is_Add or expr.is_Mul:
+        for a in expr.args:
+            has_i |= _scan(a, gens, seen)
+    elif expr is sp.I:
+        has_i = True
+    elif expr.is_Rational:
+        pass
+    elif expr.is_Pow and expr.exp.is_Integer:
+        has_i = _scan(expr.base, gens, seen)
+    elif expr.is_Symbol:
+        gens.add(expr)
+    else:  # a float, a root, a function: left to sfield
+        raise _Unfit
+    seen[expr] = has_i
+    return has_i
+
+
+def _ring_field_elements(exprs):
+    """What ``sfield(exprs)`` gives for sums, products and integer powers of symbols with
+    rational (or Gaussian-rational) coefficients: the same field (generators sorted as sympy
+    sorts them, integer coefficients) and the same elements, computed by ring arithmetic on
+    the expression tree instead of sympy's ``expand``.  Each sub-expression is a numerator and a
+    product of denominator factors, so a sum is taken over the least common multiple of its
+    terms' factors; one cancellation per element at the end.  Raises :class:`_Unfit` for
+    anything else, and where a Gaussian coefficient is left after the arithmetic (whose
+    cancellation sympy does over ``ZZ_I``)."""
+    from sympy.polys.domains import ZZ, ZZ_I
+    from sympy.polys.fields import FracField
+    from sympy.polys.orderings import lex
+    from sympy.polys.polyoptions import build_options
+    from sympy.polys.polyutils import _sort_gens
+
+    gens: set = set()
+    seen: dict = {}
+    has_i = False
+    for e in exprs:
+        has_i |= _scan(e, gens, seen)
+    gens = _sort_gens(gens, opt=build_options((), {}))
+    domain = ZZ_I if has_i else ZZ
+    ring = FracField(gens, domain, lex).ring
+    index = dict(zip(gens, ring.gens))
+    one = ring.one
+    memo: dict = {}
+
+    def product(den: dict):
+        out = one
+        for f, p in den.items():
+            out = out * f**p
+        return out
+
+    def power(num, den: dict, e: int):
+        if e >= 0:
+            return num**e, {f: p * e for f, p in den.items()}
+        if not num:
+            raise ZeroDivisionError("a power of zero with a negative exponent")
+        return product(den) ** -e, {num: -e}
+
+    def conv(expr):
+        """``(numerator, {denominator factor: power})`` of ``expr``."""
+        if expr in memo:
+            return memo[expr]
+        if expr.is_Add:
+            parts = [conv(a) for a in expr.args]
+            lcm: dict = {}
+            for _, d in parts:
+                for f, p in d.items():
+                    if lcm.get(f, 0) < p:
+                        lcm[f] = p
+            num = ring.zero
+            for n, d in parts:
+                num = num + n * product({f: p - d.get(f, 0) for f, p in lcm.items()})
+            out = (num, lcm)
+        elif expr.is_Mul:
+            num, den = one, {}
+            for a in expr.args:
+                n, d = conv(a)
+                num = num * n
+                for f, p in d.items():
+                    den[f] = den.get(f, 0) + p
+            out = (num, den)
+        elif expr is sp.I:
+            out = (ring(domain.from_sympy(sp.I)), {})
+        elif expr.is_Integer:
+            out = (ring(int(expr)), {})
+        elif expr.is_Rational:
+            out = (ring(expr.p), {ring(expr.q): 1})
+        elif expr.is_Pow:
+            out = power(*conv(expr.base), int(expr.exp))
+        else:
+            out = (index[expr], {})
+        memo[expr] = out
+        return out
+
+    pairs = [(n, product(d)) for n, d in map(conv, exprs)]
+    if has_i:
+        if any(c.y for pair in pairs for p in pair for c in p.values()):
+            raise _Unfit
+        ring = FracField(gens, ZZ, lex).ring
+        pairs = [(n.set_ring(ring), d.set_ring(ring)) for n, d in pairs]
+    field = FracField(gens, ZZ, lex)
+    return [field.new(n, d) for n, d in pairs]
+
+
 def _field_elements(exprs):
     """The expressions as elements of one field of rational functions (sympy's sparse ``sfield``,
-    much faster than ``cancel`` on large sums), or ``None`` if they do not fit one."""
+    much faster than ``cancel`` on large sums; by ring arithmetic where that fits, see
+    :func:`_ring_field_elements`), or ``None`` if they do not fit one."""
+    exprs = [sp.sympify(e) for e in exprs]
     try:
-        _, elems = sfield(list(exprs))
+        return _ring_field_elements(exprs)
+    except _Unfit:
+        pass
+    try:
+        _, elems = sfield(exprs)
         return elems
     except (
         sp.PolynomialError,
