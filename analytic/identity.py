@@ -170,7 +170,7 @@ def _ring_field_elements(exprs):
     gens = _sort_gens(gens, opt=build_options((), {}))
     domain = ZZ_I if has_i else ZZ
     ring = FracField(gens, domain, lex).ring
-    index = dict(zip(gens, ring.gens))
+    index = dict(zip(gens, ring.gens, strict=True))
     one = ring.one
     memo: dict = {}
 
@@ -224,22 +224,76 @@ def _ring_field_elements(exprs):
         return out
 
     pairs = [(n, product(d)) for n, d in map(conv, exprs)]
-    if has_i:
-        if any(c.y for pair in pairs for p in pair for c in p.values()):
-            raise _Unfit
-        ring = FracField(gens, ZZ, lex).ring
-        pairs = [(n.set_ring(ring), d.set_ring(ring)) for n, d in pairs]
-    field = FracField(gens, ZZ, lex)
-    return [field.new(n, d) for n, d in pairs]
+    return FracField(gens, ZZ, lex), has_i, pairs
+
+
+def _flint_parts(field, has_i: bool, poly):
+    """A polynomial of :func:`_ring_field_elements` as ``(real part, imaginary part)`` in
+    FLINT's ``fmpz_mpoly`` (the same generators, in the same lexicographic order)."""
+    from flint import fmpz_mpoly_ctx
+
+    ctx = fmpz_mpoly_ctx.get(tuple(f"x{i}" for i in range(field.ring.ngens)), "lex")
+    if not has_i:
+        return ctx.from_dict(dict(poly)), ctx.from_dict({})
+    re = {k: int(c.x) for k, c in poly.items() if c.x}
+    im = {k: int(c.y) for k, c in poly.items() if c.y}
+    return ctx.from_dict(re), ctx.from_dict(im)
+
+
+def _cancel(field, num, den):
+    """``num/den`` (``fmpz_mpoly``, ``den`` not zero) as the element of ``field`` that sympy's
+    cancellation gives: numerator and denominator coprime (their greatest common divisor,
+    content included, taken by FLINT), the denominator's leading coefficient positive."""
+    ring = field.ring
+    if num == 0:
+        return field.raw_new(ring.zero, ring.one)
+    g = num.gcd(den)
+    if g != 1:
+        num, den = num / g, den / g
+    p = ring.from_dict(num.to_dict())
+    q = ring.from_dict(den.to_dict())
+    if q.LC < 0:
+        p, q = -p, -q
+    return field.raw_new(p, q)
+
+
+def _fast_parts(exprs):
+    """The field of :func:`_ring_field_elements` for ``exprs`` and each expression's numerator
+    and denominator as FLINT parts (:func:`_flint_parts`)."""
+    field, has_i, pairs = _ring_field_elements(exprs)
+    return field, [tuple(_flint_parts(field, has_i, x) for x in pair) for pair in pairs]
+
+
+def _element(field, num, den):
+    """``num/den`` (FLINT parts) cancelled in ``field``; ``None`` where it keeps an imaginary
+    part."""
+    (nr, ni), (dr, di) = num, den
+    if dr == 0 and di == 0:
+        raise ZeroDivisionError("the divisor is zero as a rational function")
+    if di != 0:  # multiply by the conjugate of the denominator: dr^2 + di^2 is real
+        nr, ni, dr = nr * dr + ni * di, ni * dr - nr * di, dr * dr + di * di
+    if ni != 0:
+        return None
+    return _cancel(field, nr, dr)
+
+
+def _gauss_mul(a, b):
+    (ar, ai), (br, bi) = a, b
+    if ai == 0 and bi == 0:
+        return ar * br, ai
+    return ar * br - ai * bi, ar * bi + ai * br
 
 
 def _field_elements(exprs):
     """The expressions as elements of one field of rational functions (sympy's sparse ``sfield``,
-    much faster than ``cancel`` on large sums; by ring arithmetic where that fits, see
+    much faster than ``cancel`` on large sums; by ring arithmetic and FLINT where that fits, see
     :func:`_ring_field_elements`), or ``None`` if they do not fit one."""
     exprs = [sp.sympify(e) for e in exprs]
     try:
-        return _ring_field_elements(exprs)
+        field, parts = _fast_parts(exprs)
+        out = [_element(field, n, d) for n, d in parts]
+        if all(x is not None for x in out):
+            return out
     except _Unfit:
         pass
     try:
@@ -255,6 +309,20 @@ def _field_elements(exprs):
         return None
 
 
+def _field_ratio(a: sp.Expr, b: sp.Expr) -> sp.Expr:
+    """``a/b`` cancelled exactly as a rational function (``b`` not zero)."""
+
+    try:
+        field, ((na, da), (nb, db)) = _fast_parts([a, b])
+        r = _element(field, _gauss_mul(na, db), _gauss_mul(da, nb))
+        if r is not None:
+            return r.as_expr()
+    except _Unfit:
+        pass
+    elems = _field_elements([a, b])
+    return (elems[0] / elems[1]).as_expr() if elems is not None else sp.cancel(a / b)
+
+
 def factor_between(a: sp.Expr, b: sp.Expr) -> sp.Expr | None:
     """The factor ``F`` with ``a = F * b`` if it is free of the oscillating parts, else ``None``.
 
@@ -268,8 +336,7 @@ def factor_between(a: sp.Expr, b: sp.Expr) -> sp.Expr | None:
     if zb == 0:
         return None
     osc = {z for z, e in back.items() if e.args[0].has(sp.I)}
-    elems = _field_elements([za, zb])
-    ratio = (elems[0] / elems[1]).as_expr() if elems is not None else sp.cancel(za / zb)
+    ratio = _field_ratio(za, zb)
     if ratio == 0 or ratio.free_symbols & osc:
         return None
     return sp.factor(ratio).xreplace(back)
