@@ -11,6 +11,7 @@ precision, and the result says which route decided it.
 
 from __future__ import annotations
 
+import functools
 import random
 from dataclasses import dataclass
 
@@ -82,7 +83,16 @@ _TRIG = (sp.sin, sp.cos, sp.tan, sp.sinh, sp.cosh, sp.tanh)
 
 
 def _z_mapping(exprs):
-    rewritten = [sp.sympify(e).rewrite(_TRIG, sp.exp) for e in exprs]
+    """The expressions as polynomials in fresh symbols for the exponentials, and the map back
+    (see :func:`exponential_polynomial`)."""
+    return _z_mapping_of(tuple(sp.sympify(e) for e in exprs))
+
+
+@functools.lru_cache(maxsize=32)
+def _z_mapping_of(exprs: tuple):
+    """:func:`_z_mapping` of a tuple of sympy expressions, remembered: a check looks at the same
+    pair first for a structural screen, then for the exact factor."""
+    rewritten = [e.rewrite(_TRIG, sp.exp) for e in exprs]
     exps = set().union(*(e.atoms(sp.exp) for e in rewritten))
     monos: dict[sp.Expr, list[sp.Rational]] = {}
     for ex in exps:
@@ -106,7 +116,7 @@ def _z_mapping(exprs):
             val *= z ** (c * lcm)
         rep[ex] = val
     back = {z: sp.exp(mono / lcm) for mono, (z, lcm) in zs.items()}
-    return [e.xreplace(rep) for e in rewritten], back
+    return tuple(e.xreplace(rep) for e in rewritten), back
 
 
 def exponential_polynomial(*exprs: sp.Expr) -> list[sp.Expr]:
@@ -118,7 +128,7 @@ def exponential_polynomial(*exprs: sp.Expr) -> list[sp.Expr]:
     a rational function; it vanishes identically iff that rational function is zero.  Only the
     functions in ``_TRIG`` are rewritten (``x**2`` must not become ``exp(2 log x)``).
     """
-    return _z_mapping(exprs)[0]
+    return list(_z_mapping(exprs)[0])
 
 
 class _Unfit(Exception):
