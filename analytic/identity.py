@@ -11,6 +11,7 @@ precision, and the result says which route decided it.
 
 from __future__ import annotations
 
+import functools
 import random
 from dataclasses import dataclass
 
@@ -82,7 +83,16 @@ _TRIG = (sp.sin, sp.cos, sp.tan, sp.sinh, sp.cosh, sp.tanh)
 
 
 def _z_mapping(exprs):
-    rewritten = [sp.sympify(e).rewrite(_TRIG, sp.exp) for e in exprs]
+    """The expressions as polynomials in fresh symbols for the exponentials, and the map back
+    (see :func:`exponential_polynomial`)."""
+    return _z_mapping_of(tuple(sp.sympify(e) for e in exprs))
+
+
+@functools.lru_cache(maxsize=32)
+def _z_mapping_of(exprs: tuple):
+    """:func:`_z_mapping` of a tuple of sympy expressions, remembered: a check looks at the same
+    pair first for a structural screen, then for the exact factor."""
+    rewritten = [e.rewrite(_TRIG, sp.exp) for e in exprs]
     exps = set().union(*(e.atoms(sp.exp) for e in rewritten))
     monos: dict[sp.Expr, list[sp.Rational]] = {}
     for ex in exps:
@@ -106,7 +116,7 @@ def _z_mapping(exprs):
             val *= z ** (c * lcm)
         rep[ex] = val
     back = {z: sp.exp(mono / lcm) for mono, (z, lcm) in zs.items()}
-    return [e.xreplace(rep) for e in rewritten], back
+    return tuple(e.xreplace(rep) for e in rewritten), back
 
 
 def exponential_polynomial(*exprs: sp.Expr) -> list[sp.Expr]:
@@ -118,14 +128,186 @@ def exponential_polynomial(*exprs: sp.Expr) -> list[sp.Expr]:
     a rational function; it vanishes identically iff that rational function is zero.  Only the
     functions in ``_TRIG`` are rewritten (``x**2`` must not become ``exp(2 log x)``).
     """
-    return _z_mapping(exprs)[0]
+    return list(_z_mapping(exprs)[0])
+
+
+class _Unfit(Exception):
+    """An expression that :func:`_ring_field_elements` does not take (sympy's ``sfield`` does)."""
+
+
+def _scan(expr, gens: set, seen: dict) -> bool:
+    """Collect the generators of ``expr`` into ``gens`` (symbols only); whether ``I`` occurs."""
+    if expr in seen:
+        return seen[expr]
+    has_i = False
+    if expr.is_Add or expr.is_Mul:
+        for a in expr.args:
+            has_i |= _scan(a, gens, seen)
+    elif expr is sp.I:
+        has_i = True
+    elif expr.is_Rational:
+        pass
+    elif expr.is_Pow and expr.exp.is_Integer:
+        has_i = _scan(expr.base, gens, seen)
+    elif expr.is_Symbol:
+        gens.add(expr)
+    else:  # a float, a root, a function: left to sfield
+        raise _Unfit
+    seen[expr] = has_i
+    return has_i
+
+
+def _ring_field_elements(exprs):
+    """What ``sfield(exprs)`` gives for sums, products and integer powers of symbols with
+    rational (or Gaussian-rational) coefficients: the same field (generators sorted as sympy
+    sorts them, integer coefficients) and the same elements, computed by ring arithmetic on
+    the expression tree instead of sympy's ``expand``.  Each sub-expression is a numerator and a
+    product of denominator factors, so a sum is taken over the least common multiple of its
+    terms' factors; one cancellation per element at the end.  Raises :class:`_Unfit` for
+    anything else, and where a Gaussian coefficient is left after the arithmetic (whose
+    cancellation sympy does over ``ZZ_I``)."""
+    from sympy.polys.domains import ZZ, ZZ_I
+    from sympy.polys.fields import FracField
+    from sympy.polys.orderings import lex
+    from sympy.polys.polyoptions import build_options
+    from sympy.polys.polyutils import _sort_gens
+
+    gens: set = set()
+    seen: dict = {}
+    has_i = False
+    for e in exprs:
+        has_i |= _scan(e, gens, seen)
+    gens = _sort_gens(gens, opt=build_options((), {}))
+    domain = ZZ_I if has_i else ZZ
+    ring = FracField(gens, domain, lex).ring
+    index = dict(zip(gens, ring.gens, strict=True))
+    one = ring.one
+    memo: dict = {}
+
+    def product(den: dict):
+        out = one
+        for f, p in den.items():
+            out = out * f**p
+        return out
+
+    def power(num, den: dict, e: int):
+        if e >= 0:
+            return num**e, {f: p * e for f, p in den.items()}
+        if not num:
+            raise ZeroDivisionError("a power of zero with a negative exponent")
+        return product(den) ** -e, {num: -e}
+
+    def conv(expr):
+        """``(numerator, {denominator factor: power})`` of ``expr``."""
+        if expr in memo:
+            return memo[expr]
+        if expr.is_Add:
+            parts = [conv(a) for a in expr.args]
+            lcm: dict = {}
+            for _, d in parts:
+                for f, p in d.items():
+                    if lcm.get(f, 0) < p:
+                        lcm[f] = p
+            num = ring.zero
+            for n, d in parts:
+                num = num + n * product({f: p - d.get(f, 0) for f, p in lcm.items()})
+            out = (num, lcm)
+        elif expr.is_Mul:
+            num, den = one, {}
+            for a in expr.args:
+                n, d = conv(a)
+                num = num * n
+                for f, p in d.items():
+                    den[f] = den.get(f, 0) + p
+            out = (num, den)
+        elif expr is sp.I:
+            out = (ring(domain.from_sympy(sp.I)), {})
+        elif expr.is_Integer:
+            out = (ring(int(expr)), {})
+        elif expr.is_Rational:
+            out = (ring(expr.p), {ring(expr.q): 1})
+        elif expr.is_Pow:
+            out = power(*conv(expr.base), int(expr.exp))
+        else:
+            out = (index[expr], {})
+        memo[expr] = out
+        return out
+
+    pairs = [(n, product(d)) for n, d in map(conv, exprs)]
+    return FracField(gens, ZZ, lex), has_i, pairs
+
+
+def _flint_parts(field, has_i: bool, poly):
+    """A polynomial of :func:`_ring_field_elements` as ``(real part, imaginary part)`` in
+    FLINT's ``fmpz_mpoly`` (the same generators, in the same lexicographic order)."""
+    from flint import fmpz_mpoly_ctx
+
+    ctx = fmpz_mpoly_ctx.get(tuple(f"x{i}" for i in range(field.ring.ngens)), "lex")
+    if not has_i:
+        return ctx.from_dict(dict(poly)), ctx.from_dict({})
+    re = {k: int(c.x) for k, c in poly.items() if c.x}
+    im = {k: int(c.y) for k, c in poly.items() if c.y}
+    return ctx.from_dict(re), ctx.from_dict(im)
+
+
+def _cancel(field, num, den):
+    """``num/den`` (``fmpz_mpoly``, ``den`` not zero) as the element of ``field`` that sympy's
+    cancellation gives: numerator and denominator coprime (their greatest common divisor,
+    content included, taken by FLINT), the denominator's leading coefficient positive."""
+    ring = field.ring
+    if num == 0:
+        return field.raw_new(ring.zero, ring.one)
+    g = num.gcd(den)
+    if g != 1:
+        num, den = num / g, den / g
+    p = ring.from_dict(num.to_dict())
+    q = ring.from_dict(den.to_dict())
+    if q.LC < 0:
+        p, q = -p, -q
+    return field.raw_new(p, q)
+
+
+def _fast_parts(exprs):
+    """The field of :func:`_ring_field_elements` for ``exprs`` and each expression's numerator
+    and denominator as FLINT parts (:func:`_flint_parts`)."""
+    field, has_i, pairs = _ring_field_elements(exprs)
+    return field, [tuple(_flint_parts(field, has_i, x) for x in pair) for pair in pairs]
+
+
+def _element(field, num, den):
+    """``num/den`` (FLINT parts) cancelled in ``field``; ``None`` where it keeps an imaginary
+    part."""
+    (nr, ni), (dr, di) = num, den
+    if dr == 0 and di == 0:
+        raise ZeroDivisionError("the divisor is zero as a rational function")
+    if di != 0:  # multiply by the conjugate of the denominator: dr^2 + di^2 is real
+        nr, ni, dr = nr * dr + ni * di, ni * dr - nr * di, dr * dr + di * di
+    if ni != 0:
+        return None
+    return _cancel(field, nr, dr)
+
+
+def _gauss_mul(a, b):
+    (ar, ai), (br, bi) = a, b
+    if ai == 0 and bi == 0:
+        return ar * br, ai
+    return ar * br - ai * bi, ar * bi + ai * br
 
 
 def _field_elements(exprs):
     """The expressions as elements of one field of rational functions (sympy's sparse ``sfield``,
-    much faster than ``cancel`` on large sums), or ``None`` if they do not fit one."""
+    much faster than ``cancel`` on large sums; by ring arithmetic and FLINT where that fits, see
+    :func:`_ring_field_elements`), or ``None`` if they do not fit one."""
+    exprs = [sp.sympify(e) for e in exprs]
     try:
-        _, elems = sfield(list(exprs))
+        field, parts = _fast_parts(exprs)
+        out = [_element(field, n, d) for n, d in parts]
+        if all(x is not None for x in out):
+            return out
+    except _Unfit:
+        pass
+    try:
+        _, elems = sfield(exprs)
         return elems
     except (
         sp.PolynomialError,
@@ -135,6 +317,20 @@ def _field_elements(exprs):
         NotImplementedError,
     ):  # pragma: no cover
         return None
+
+
+def _field_ratio(a: sp.Expr, b: sp.Expr) -> sp.Expr:
+    """``a/b`` cancelled exactly as a rational function (``b`` not zero)."""
+
+    try:
+        field, ((na, da), (nb, db)) = _fast_parts([a, b])
+        r = _element(field, _gauss_mul(na, db), _gauss_mul(da, nb))
+        if r is not None:
+            return r.as_expr()
+    except _Unfit:
+        pass
+    elems = _field_elements([a, b])
+    return (elems[0] / elems[1]).as_expr() if elems is not None else sp.cancel(a / b)
 
 
 def factor_between(a: sp.Expr, b: sp.Expr) -> sp.Expr | None:
@@ -150,8 +346,7 @@ def factor_between(a: sp.Expr, b: sp.Expr) -> sp.Expr | None:
     if zb == 0:
         return None
     osc = {z for z, e in back.items() if e.args[0].has(sp.I)}
-    elems = _field_elements([za, zb])
-    ratio = (elems[0] / elems[1]).as_expr() if elems is not None else sp.cancel(za / zb)
+    ratio = _field_ratio(za, zb)
     if ratio == 0 or ratio.free_symbols & osc:
         return None
     return sp.factor(ratio).xreplace(back)

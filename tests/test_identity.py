@@ -47,3 +47,30 @@ def test_prove_multiple_and_proportional():
     v = prove_proportional(sp.sin(2 * x), 4 * sp.sin(x) * sp.cos(x))
     assert v.holds and v.factor == sp.Rational(1, 2)
     assert not prove_proportional(sp.sin(x), sp.cos(x)).holds
+
+
+def test_ring_route_gives_sfields_elements_and_quotients():
+    """The exact quotient of two rational functions by ring arithmetic and FLINT's gcd is, term
+    for term, what sympy's own field (``sfield``, the independent route) gives: rational and
+    Gaussian coefficients, negative powers, a quotient that is real although both sides carry
+    ``I``, one that stays complex, and a root (which goes to sympy)."""
+    from sympy.polys.fields import sfield
+
+    from analytic.identity import _field_elements, _field_ratio
+
+    x, y, z = sp.symbols("x y z")
+    cases = [
+        ((x**2 - y**2) / 3 + x / (y + 1), (x - y) * (x + 1) / (2 * (y + 1))),
+        ((x + sp.I * y) * (x - sp.I * y) / (z - 1) ** 2, (x**2 + y**2) * (z + 1) / (z - 1)),
+        (sp.I * (z - 1 / z) * (x + 1), (z - 1 / z) / 2),
+        ((x + sp.I * y) ** 2, x * (y - 2)),
+        (-(x**3) + 2 * x * y - y / z, -(x**2) * z + 2 * y * z - y / x),
+        (sp.sqrt(x + 1) * y + x, y - x),
+    ]
+    for a, b in cases:
+        _, (ea, eb) = sfield([a, b])
+        expected = (ea / eb).as_expr()
+        got = _field_ratio(a, b)
+        assert sp.srepr(got) == sp.srepr(expected), (a, b)
+        for e, f in zip((ea, eb), _field_elements([a, b]), strict=True):
+            assert sp.srepr(f.as_expr()) == sp.srepr(e.as_expr())
