@@ -17,11 +17,13 @@ Method (all orders and depths at once):
 * no friction: safeguarded Halley iteration on ``theta`` for each edge equation, bracket
   ``(-pi/2, pi/2)`` (window theorem: one simple root each), started at the fixed point of
   ``theta = asin(-k r f(beta c))``; a grid of at least 256 depths starts every edge from a
-  cached table of roots per order (1024 depths uniform in ``sqrt(1 - m)``, the cubic through
+  cached table of roots per order (2048 depths uniform in ``sqrt(1 - m)``, the cubic through
   the four nearest), and takes the first Halley step of every order at once in work arrays kept
   between calls (:func:`_frictionless_theta`), so that it allocates almost nothing per call;
 * friction, normal form: the undamped-form roots (same ``r``, ``beta``) bracket the interval
-  (``D <= D0`` and ``D0 < 0`` outside them); one compiled call gives ``D``, its first three
+  (``D <= D0`` and ``D0 < 0`` outside them), in a grid of at least 256 depths from the same pass
+  as without friction with start tables per ``(system, order, Q, damping model)``
+  (:func:`_damped_brackets`); one compiled call gives ``D``, its first three
   derivatives and its rounding bound (:func:`verify.derived.with_term_sizes`).  From the values
   at the undamped roots, the cubic through ``D'`` and ``D''`` there gives the maximiser of ``D``
   and a guess of ``D`` there; where the guess is positive, both edges at once (Householder steps
@@ -360,7 +362,8 @@ def _cubic(xb, rows, x):
 START_NODES = 2048
 
 
-#: the start tables computed so far, ``(system, n) -> (2, K)`` (read-only; cleared when it holds
+#: the start tables computed so far, ``(system, n, friction) -> (2, K)`` (``friction``: None or
+#: ``(Q, damping)``, :func:`_damped_brackets`; read-only; cleared when it holds
 #: :data:`_TABLES_MAX`)
 _TABLES: dict = {}
 _TABLES_MAX = 512
