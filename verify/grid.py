@@ -17,11 +17,13 @@ Method (all orders and depths at once):
 * no friction: safeguarded Halley iteration on ``theta`` for each edge equation, bracket
   ``(-pi/2, pi/2)`` (window theorem: one simple root each), started at the fixed point of
   ``theta = asin(-k r f(beta c))``; a grid of at least 256 depths starts every edge from a
-  cached table of roots per order (1024 depths uniform in ``sqrt(1 - m)``, the cubic through
+  cached table of roots per order (2048 depths uniform in ``sqrt(1 - m)``, the cubic through
   the four nearest), and takes the first Halley step of every order at once in work arrays kept
   between calls (:func:`_frictionless_theta`), so that it allocates almost nothing per call;
 * friction, normal form: the undamped-form roots (same ``r``, ``beta``) bracket the interval
-  (``D <= D0`` and ``D0 < 0`` outside them); one compiled call gives ``D``, its first three
+  (``D <= D0`` and ``D0 < 0`` outside them), in a grid of at least 256 depths from the same pass
+  as without friction with start tables per ``(system, order, Q, damping model)``
+  (:func:`_damped_brackets`); one compiled call gives ``D``, its first three
   derivatives and its rounding bound (:func:`verify.derived.with_term_sizes`).  From the values
   at the undamped roots, the cubic through ``D'`` and ``D''`` there gives the maximiser of ``D``
   and a guess of ``D`` there; where the guess is positive, both edges at once (Householder steps
@@ -360,36 +362,54 @@ def _cubic(xb, rows, x):
 START_NODES = 2048
 
 
-#: the start tables computed so far, ``(system, n) -> (2, K)`` (read-only; cleared when it holds
+#: the start tables computed so far, ``(system, n, friction) -> (2, K)`` (``friction``: None or
+#: ``(Q, damping)``, :func:`_damped_brackets`; read-only; cleared when it holds
 #: :data:`_TABLES_MAX`)
 _TABLES: dict = {}
 _TABLES_MAX = 512
 
 
-def _start_tables(system, orders) -> list:
+def _start_tables(system, orders, friction=None) -> list:
     """For each order ``n`` of ``orders``: the roots ``theta`` of both edge equations (rows ``eps
     = +1, -1``) at the depths ``m = 1 - rho^2``, ``rho = (k + 1/2)/K`` (``K =``
     :data:`START_NODES`), shape ``(2, K)``, read-only.  Starting values only
     (:func:`_frictionless_theta` iterates every point to convergence from them), so a table is a
     function of ``system`` and ``n`` alone, computed once (the orders not yet seen in one
     vectorised solve, to 1e-12): it cannot change a result.  ``rho`` makes the roots smooth up
-    to ``m = 1``, where the parameters go like ``sqrt(1 - m)``."""
-    found = {n: _TABLES.get((system, n)) for n in set(orders)}
+    to ``m = 1``, where the parameters go like ``sqrt(1 - m)``.
+
+    ``friction = (Q, damping)``: the same roots for the parameters of the damped normal form
+    (the brackets of the grid with friction, :func:`_fill_normal`), a table per ``(system, n,
+    Q, damping)``; where those parameters are not defined (a half not underdamped) the node
+    holds the frictionless root (a start like any other)."""
+    found = {n: _TABLES.get((system, n, friction)) for n in set(orders)}
     missing = sorted(n for n, tab in found.items() if tab is None)
     if missing:
         rho = (np.arange(START_NODES) + 0.5) / START_NODES
         om = rho * rho
-        P = normal_params(1 - om, None, "exact", _NP, system, om=om)
-        r, beta = (np.asarray(v, float).reshape(1, 1, -1) for v in (P.r, P.beta))
+        if friction is not None:
+            with np.errstate(all="ignore"):
+                P = normal_params(1 - om, friction[0], friction[1], _NP, system, om=om)
+            r, beta = (np.asarray(v, float) * np.ones(om.shape) for v in (P.r, P.beta))
+            ok = np.isfinite(r) & np.isfinite(beta) & (r >= 0) & (beta > 0)
+            r, beta = r[ok], beta[ok]
+        else:
+            P = normal_params(1 - om, None, "exact", _NP, system, om=om)
+            r, beta = np.asarray(P.r, float), np.asarray(P.beta, float)
         n = np.array(missing).reshape(1, -1, 1)
         eps = np.array([1.0, -1.0]).reshape(2, 1, 1)
-        roots = undamped_roots(n, r, beta, eps, rough=1e-12)
+        roots = undamped_roots(n, r.reshape(1, 1, -1), beta.reshape(1, 1, -1), eps, rough=1e-12)
+        if friction is not None:
+            plain = np.stack(_start_tables(system, missing), axis=1)
+            plain = np.array(plain, float)
+            plain[..., ok] = roots
+            roots = plain
         if len(_TABLES) + len(missing) > _TABLES_MAX:
             _TABLES.clear()
         for k, order in enumerate(missing):
             tab = np.array(roots[:, k], float)
             tab.flags.writeable = False
-            found[order] = _TABLES[(system, order)] = tab
+            found[order] = _TABLES[(system, order, friction)] = tab
     return [found[n] for n in orders]
 
 
@@ -398,7 +418,7 @@ class _Plan:
     order and sign ``eps``, the odd orders first), ``c = n pi/2`` and the coefficients per unit
     ``r`` of :func:`verify.derived.edge_equation_linear` per row, and the stacked start tables."""
 
-    def __init__(self, system, orders: tuple):
+    def __init__(self, system, orders: tuple, friction=None):
         _lin, coef = edge_equation_linear()
         no = len(orders)
         rows = [(e, i) for e in range(2) for i in range(no)]  # (sign eps = 1 - 2 e, order i)
@@ -433,7 +453,7 @@ class _Plan:
         self.sign = np.array([e for e, _i in rows])
         # the rows of the order-1 edge that goes to x = pi/2 + theta -> 0 (solved in x after)
         self.x_rows = [k for k, (e, i) in enumerate(rows) if orders[i] == 1 and e == 0]
-        tables = _start_tables(system, orders)
+        tables = _start_tables(system, orders, friction)
         self.table = np.stack([tables[i][e] for e, i in rows])
 
 
@@ -458,8 +478,8 @@ def _check_kernel(plan) -> None:
 
 
 @lru_cache(maxsize=16)
-def _plan(system, orders: tuple) -> _Plan:
-    return _Plan(system, orders)
+def _plan(system, orders: tuple, friction=None) -> _Plan:
+    return _Plan(system, orders, friction)
 
 
 class _Workspace(threading.local):
@@ -507,7 +527,7 @@ def _start_values(table, rho, out, tmp) -> None:
         out += tmp
 
 
-def _frictionless_theta(orders, P, rho, system, theta) -> None:
+def _frictionless_theta(orders, P, rho, system, theta, friction=None) -> None:
     """Both undamped edge roots of every order at every depth: ``theta[i, 0]`` the root of the
     edge equation ``eps = +1`` of ``orders[i]``, ``theta[i, 1]`` that of ``eps = -1`` (``theta``:
     ``(len(orders), 2, N)``, filled here), for the parameters ``P`` (arrays of ``N`` depths),
@@ -522,7 +542,7 @@ def _frictionless_theta(orders, P, rho, system, theta) -> None:
     identity, and the convergence test adds what their error costs the step.  The points that
     have not converged go on with every sine computed, compacted, and to the safeguarded
     iteration (:func:`_safeguarded`) if they still have not."""
-    plan = _plan(system, tuple(orders))
+    plan = _plan(system, tuple(orders), friction)
     width = max(64, _WORK_EDGES // plan.rows)
     N = rho.size
     beta_all = np.ascontiguousarray(P.beta, float)
@@ -1177,7 +1197,14 @@ def boundary_grid(orders, m, *, Q=None, damping="exact", system="pendulum", duty
             P = normal_params(dep.m[cols], Qf, damping, _NP, sysv, om=dep.om[cols])
             part = np.full((len(orders), 2, cols.size), np.nan)
             doubt[:, cols] = _fill_normal(
-                part, orders, dep.m[cols], P, damped=Qx is not None, system=sysv, om=dep.om[cols]
+                part,
+                orders,
+                dep.m[cols],
+                P,
+                damped=Qx is not None,
+                system=sysv,
+                om=dep.om[cols],
+                friction=None if Qf is None else (Qf, damping),
             )
             out[:, :, cols] = part
         doubt[:, ~served] = True
@@ -1282,7 +1309,8 @@ def _double_grid(orders, dep: _Depths, cols, Qx, damping):
     if Qx is None or damping == "paper":
         Qf = None if Qx is None else float(Qx)
         P = normal_params(ms, Qf, damping, _NP, om=om)
-        doubt[:] = _fill_normal(out, orders, ms, P, damped=Qx is not None, om=om)
+        fr = None if Qx is None else (Qf, damping)
+        doubt[:] = _fill_normal(out, orders, ms, P, damped=Qx is not None, om=om, friction=fr)
         return out, doubt
     Qexact = Fraction(Qx) if not isinstance(Qx, Fraction) else Qx
     h1, h2 = _halves(dep, cols, Qexact)
@@ -1294,7 +1322,8 @@ def _double_grid(orders, dep: _Depths, cols, Qx, damping):
         P = normal_params(sub, float(Qexact), "exact", _NP, om=om[idx])
         P = _exact_near_critical(P, sub, lambda k: dep.exact(int(cols[idx[k]])), Qexact)
         part = np.full((len(orders), 2, sub.size), np.nan)
-        doubt[:, idx] = _fill_normal(part, orders, sub, P, damped=True)
+        fr = (float(Qexact), "exact")
+        doubt[:, idx] = _fill_normal(part, orders, sub, P, damped=True, om=om[idx], friction=fr)
         out[:, :, idx] = part
     for j in np.nonzero(~normal)[0]:
         T = trace_params(dep.exact(int(cols[j])), Qexact, backend("math"))
@@ -1425,11 +1454,15 @@ def _polish_near_one(theta, n, P, form):
     return theta
 
 
-def _fill_normal(out, orders, ms, P, damped: bool, *, system=None, om=None) -> np.ndarray:
+def _fill_normal(
+    out, orders, ms, P, damped: bool, *, system=None, om=None, friction=None
+) -> np.ndarray:
     """Fill ``out`` (orders x 2 x depths) from the normal form; returns the mask (orders x
     depths) of entries whose error is not bounded by :data:`ERROR_BOUND` (to be escalated).
     ``system`` (default the paper's) and ``om = 1 - m``: for the start tables of the frictionless
-    grid (:func:`_frictionless_theta`, grids of at least :data:`_TABLE_MIN` depths)."""
+    grid (:func:`_frictionless_theta`, grids of at least :data:`_TABLE_MIN` depths); with
+    friction also ``friction = (Q, damping)``, the key of the start tables of the undamped roots
+    that bracket the edges (:func:`_damped_brackets`)."""
     orders_arr = np.array(orders)
     doubt = np.zeros((len(orders), ms.size), bool)
     P = NormalParams(
@@ -1454,7 +1487,10 @@ def _fill_normal(out, orders, ms, P, damped: bool, *, system=None, om=None) -> n
         out[:, 0, :] = np.minimum(T1, T2)
         out[:, 1, :] = np.maximum(T1, T2)
         return doubt
-    t1, t2 = normal_edges(orders_arr[:, None], P)  # the undamped roots of all orders at once
+    if om is not None and friction is not None and ms.size >= _TABLE_MIN:
+        t1, t2 = _damped_brackets(orders_arr, P, om, system or _paper_system(), friction)
+    else:
+        t1, t2 = normal_edges(orders_arr[:, None], P)  # the undamped roots of all orders at once
     for parity in (1, 0):
         rows = np.nonzero(orders_arr % 2 == parity)[0]
         if rows.size == 0:
@@ -1485,6 +1521,25 @@ def _fill_normal(out, orders, ms, P, damped: bool, *, system=None, om=None) -> n
                 lo_doubt[k, cols] = unsure
         doubt[rows] = top_doubt | lo_doubt | hi_doubt
     return doubt
+
+
+def _damped_brackets(orders, P, om, system, friction):
+    """The undamped roots ``(theta_eps=+1, theta_eps=-1)`` (each ``(len(orders), N)``) for the
+    parameters ``P`` of the damped normal form, as :func:`normal_edges` gives them: from
+    :func:`_frictionless_theta` with the start tables of ``friction = (Q, damping)`` (a function
+    of the key alone), except the order-1 root with ``x = pi/2 + theta`` below ``ORDER1_X / 2``,
+    which that pass leaves to a solve in ``x``: that one from :func:`normal_edges` on the whole
+    grid, as before (next to ``m = 1`` the friction path takes the lower edge of order 1 from its
+    solve in ``x``, :func:`_order1_lower`, and this root only brackets it)."""
+    theta = np.empty((len(orders), 2, om.size))
+    _frictionless_theta(orders.tolist(), P, np.sqrt(om), system, theta, friction)
+    rows = np.nonzero(orders == 1)[0]
+    if rows.size:
+        cols = np.nonzero(~(_HALF_PI + theta[rows[0], 0] >= 0.5 * ORDER1_X + 1e-3))[0]
+        if cols.size:
+            t1 = normal_edges(np.array([[1]]), P)[0][0]
+            theta[rows[:, None], 0, cols] = t1[cols]
+    return theta[:, 0], theta[:, 1]
 
 
 def _fill_frictionless(out, n, P, om, system) -> None:
