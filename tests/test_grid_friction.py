@@ -157,17 +157,12 @@ def test_next_to_critical_damping(Q, critical, large):
     assert not bad, f"{len(bad)} bad points:\n" + "\n".join(bad)
 
 
-@pytest.mark.xfail(
-    strict=True,
-    reason="known fault: order 1 at m = 0.9999999999057332 (Q = 7, both models) in a grid of "
-    "fewer than 256 depths is NaN where the interval exists (the maximiser falls on the "
-    "undamped root x = 3.3e-10, where D = -1.6e-15 is taken as decided; in a large grid the "
-    "same depths pass tests/test_grid.py)",
-)
 @pytest.mark.parametrize("damping", ["exact", "paper"])
 def test_small_grid_next_to_one(damping):
     """Orders 1-3 at 40 depths log-spaced in ``1 - m`` from 1e-12 to 0.1, as a grid of their own
-    (the path of small grids); ``tests/test_grid.py`` checks the same depths in a large grid."""
+    (the path of small grids); ``tests/test_grid.py`` checks the same depths in a large grid.
+    Order 1 at ``m = 1 - 9.4e-11`` was NaN here (the standard form read ``D < 0`` at the
+    maximiser where the certified route proves the interval exists)."""
     near = 1 - np.logspace(-12, -1, 40)
     bad = _bad_points([1, 2, 3], near, 7, damping)
     assert not bad, f"{len(bad)} bad points:\n" + "\n".join(bad)
