@@ -135,7 +135,7 @@ def edges_result(
                 raise CertificationError(f"enclosure of T too wide: {T}")
     finally:
         ctx.prec = old
-    return balls_result(
+    return from_balls(  # balls_result's body: one layer of keyword arguments less
         Ts + ds,
         order=n,
         m=req.m,
