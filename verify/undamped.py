@@ -52,7 +52,7 @@ def undamped(req: Request) -> Boundary:
     n, bits = req.order, bits_for_digits(req.digits + 2)
     f_math, f_arb, df_arb, fd_arb = _forms(n % 2 == 1)
     P = AtPrecision(lambda: normal_params(req.m, None, "exact", _ARB, req.system))
-    C = AtPrecision(lambda: arb.pi() * n / 2)
+    C = AtPrecision(lambda: arb.pi() * arb(n) * _HALF)  # n pi/2 (the halving is exact)
     # the parameters once, at the precision of the proof (quick_root's); the float start and
     # every lower precision of the Newton steps take them rounded from there
     top = bits + QUICK_GUARD
@@ -143,6 +143,7 @@ def undamped(req: Request) -> Boundary:
 
 _WINDOW = (ball(-math.pi / 2), ball(math.pi / 2))
 _UNIT = {1: arb(1), -1: arb(-1)}
+_HALF = arb(0.5)
 _EDGES = ((1, _UNIT[1]), (-1, _UNIT[-1]))
 
 
