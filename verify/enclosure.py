@@ -65,6 +65,9 @@ def _round(v):
     return type(v)(**{k: (+x if type(x) is arb else x) for k, x in vars(v).items()})
 
 
+_HALF = arb(0.5)
+
+
 def sgn_of(n: int) -> int:
     """``sin(n pi/2)`` for odd ``n``, ``cos(n pi/2)`` for even ``n`` (exact)."""
     return (1 if n % 4 == 1 else -1) if n % 2 else (1 if n % 4 == 0 else -1)
@@ -114,12 +117,12 @@ def edges_result(
         p = P()
         if theta and ys is not None:
             pi = arb.pi()
-            half = arb(n) / 2
+            half = arb(n) * _HALF  # exact, and no arb-with-int operation
             Ts = [(y + (n - 1) * pi / 2) / (pi * p.w) for y in ys]
             ds = [(y - pi / 2) / (pi * p.w) + half * p.dinv for y in ys]
         elif theta:
             pi = arb.pi()
-            half = arb(n) / 2
+            half = arb(n) * _HALF  # exact, and no arb-with-int operation
             pw = pi * p.w
             Ts = [(half + th / pi) / p.w for th in (th_lo, th_hi)]
             ds = [th / pw for th in (th_lo, th_hi)]
@@ -135,7 +138,7 @@ def edges_result(
                 raise CertificationError(f"enclosure of T too wide: {T}")
     finally:
         ctx.prec = old
-    return balls_result(
+    return from_balls(  # balls_result's body: one layer of keyword arguments less
         Ts + ds,
         order=n,
         m=req.m,

@@ -47,6 +47,7 @@ from fractions import Fraction
 from functools import lru_cache
 
 import mpmath
+from flint import arb
 
 from analytic.system import PAPER, System, phase_regimes
 
@@ -206,7 +207,18 @@ def _one_minus(m, om):
     return 1 - m if om is None else om
 
 
+def _small(B: Backend) -> tuple:
+    """``0, 1, 2, 3`` as numbers of the back end where that is cheaper: exact ``arb`` balls (an
+    ``arb`` with an ``arb`` costs a fraction of an ``arb`` with a Python int, and gives the same
+    ball: the int is converted exactly first); plain ints elsewhere."""
+    return _ARB_SMALL if B.name == "arb" else (0, 1, 2, 3)
+
+
+_ARB_SMALL = tuple(arb(k) for k in range(4))
+
+
 def _undamped(m, B: Backend, om=None):
+    _, one, two, three = _small(B)
     if om is None and type(m) is Fraction:
         # the exact rationals from the integers of m = p/q (in lowest terms, and so are
         # 1 - m = (q - p)/q and (1 - m)(1 + m) = (q - p)(q + p)/q^2): rounded once each
@@ -218,14 +230,14 @@ def _undamped(m, B: Backend, om=None):
         om = _one_minus(m, om)
         s = _root(om * (1 + m), B)
         mb, omb = _lift(m, B), _lift(om, B)
-    ps = 1 + s
+    ps = one + s
     beta = mb / ps
     b2 = beta * beta
-    q = 1 + 3 * b2
-    r = beta * (3 + b2) / q
-    omb2 = 2 * s / ps
+    q = one + three * b2
+    r = beta * (three + b2) / q
+    omb2 = two * s / ps
     u = omb2 * omb2 * omb2 / (q * q)
-    w = B.sqrt(ps / 2) / s
+    w = B.sqrt(ps / two) / s
     bm = (omb + s) / ps  # 1 - m is exact or given: no cancellation
     return r, r * r, u, beta, w, bm
 
@@ -268,7 +280,7 @@ def normal_params(
     ):
         return _exact_rational(m, Q, B)
     r, r2, u, beta, w0, bm = _undamped(m, B, om)
-    zero = r * 0
+    zero = r * _small(B)[0]
     if Q is None:
         return _normal(r, r2, u, beta, w0, zero, w0, zero, bm)
     if damping == "paper":

@@ -52,7 +52,7 @@ def undamped(req: Request) -> Boundary:
     n, bits = req.order, bits_for_digits(req.digits + 2)
     f_math, f_arb, df_arb, fd_arb = _forms(n % 2 == 1)
     P = AtPrecision(lambda: normal_params(req.m, None, "exact", _ARB, req.system))
-    C = AtPrecision(lambda: arb.pi() * n / 2)
+    C = AtPrecision(lambda: arb.pi() * arb(n) * _HALF)  # n pi/2 (the halving is exact)
     # the parameters once, at the precision of the proof (quick_root's); the float start and
     # every lower precision of the Newton steps take them rounded from there
     top = bits + QUICK_GUARD
@@ -79,7 +79,7 @@ def undamped(req: Request) -> Boundary:
             ys=tuple(r.ball for r in ys),
         )
     r_f, beta_f = float(pt.r), float(pt.beta)
-    sgn = sgn_of(n)
+    sgn = _UNIT[sgn_of(n)]  # exact balls: an arb times an arb costs a third of an arb times an int
     rounded: dict[int, tuple] = {top: (ct, pt.r, pt.beta)}
 
     def args():
@@ -105,20 +105,20 @@ def undamped(req: Request) -> Boundary:
     def scale(t):
         return theta_scale(t, n, bits)
 
-    for eps in (1, -1):
+    for eps, k in _EDGES:
         start = float_edge(f_math, n, eps, r_f, beta_f)
 
-        def F(t, eps=eps):
+        def F(t, k=k):
             c, r, beta = args()
-            return f_arb(t, c, sgn, eps, r, beta)
+            return f_arb(t, c, sgn, k, r, beta)
 
-        def dF(t, eps=eps):
+        def dF(t, k=k):
             c, r, beta = args()
-            return df_arb(t, c, sgn, eps, r, beta)
+            return df_arb(t, c, sgn, k, r, beta)
 
-        def FD(t, eps=eps):
+        def FD(t, k=k):
             c, r, beta = args()
-            return fd_arb(t, c, sgn, eps, r, beta)
+            return fd_arb(t, c, sgn, k, r, beta)
 
         root = quick_root(FD, F, dF, start, bits=bits, floor=floor, bracket=window, scale=scale)
         if root is None:
@@ -142,6 +142,9 @@ def undamped(req: Request) -> Boundary:
 
 
 _WINDOW = (ball(-math.pi / 2), ball(math.pi / 2))
+_UNIT = {1: arb(1), -1: arb(-1)}
+_HALF = arb(0.5)
+_EDGES = ((1, _UNIT[1]), (-1, _UNIT[-1]))
 
 
 def near_one_edge(n: int, eps: int, P, C, bits: int) -> Root:
