@@ -79,7 +79,7 @@ def undamped(req: Request) -> Boundary:
             ys=tuple(r.ball for r in ys),
         )
     r_f, beta_f = float(pt.r), float(pt.beta)
-    sgn = _UNIT[sgn_of(n)]  # exact balls: an arb times an arb costs a third of an arb times an int
+    sgn = _UNIT[sgn_of(n)]  # exact balls (an arb times an int converts the int first)
     rounded: dict[int, tuple] = {top: (ct, pt.r, pt.beta)}
 
     def args():
