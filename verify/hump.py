@@ -29,7 +29,7 @@ import math
 from collections.abc import Callable
 from dataclasses import dataclass
 from fractions import Fraction
-from functools import partial
+from functools import cache, partial
 
 from flint import arb, ctx
 
@@ -120,8 +120,10 @@ def _unimodal_shape(h: _Hump, lo_root, hi_root, budget: int = 16) -> bool:
     most two zeros there, and none on the ``neg`` pieces.  The two enclosed zeros are therefore all
     of them, ``D > 0`` between them and ``D < 0`` on either side: the shape of
     :func:`_prove_shape`, and existence with it.  ``False`` where this is not proven."""
-    with ctx.workprec(64):
-        a, b = ball(h.a), ball(h.b)
+    old = ctx.prec  # set and restored here (a workprec context costs a sizeable part of this)
+    ctx.prec = 64
+    try:
+        a, b = arb(h.a), arb(h.b)  # floats: exact
         lo, hi = lo_root.ball, hi_root.ball
         if not (a < lo and lo < hi and hi < b):
             return False
@@ -131,8 +133,8 @@ def _unimodal_shape(h: _Hump, lo_root, hi_root, budget: int = 16) -> bool:
             count += 1
             if count > budget:
                 return False
-            mid = ((u + v) / 2).mid()
-            X = arb(mid, max(v - mid, mid - u).abs_upper())
+            X = u.union(v)  # u, v exact: a ball holding [u, v]
+            mid = X.mid()
             if h.d2D(X) < 0:
                 labels.append("cap")
                 continue
@@ -158,6 +160,8 @@ def _unimodal_shape(h: _Hump, lo_root, hi_root, budget: int = 16) -> bool:
             elif label == "up" and down:
                 return False
         return True
+    finally:
+        ctx.prec = old
 
 
 def _prove_shape(h: _Hump, lo_root, hi_root, unimodal: bool = True) -> bool:
@@ -401,6 +405,17 @@ def _params_at(m, Q, damping, m_box, make):
     return make(M, Qb, damping, _ARB) if damping is not None else make(M, Qb, _ARB)
 
 
+@cache
+def _normal_forms(parity: int) -> tuple:
+    """``D``, ``D'``, ``D''``, ``(D, D')`` and the undamped edge equation, compiled for arb."""
+    form = indicator(parity)
+    return (
+        *(form.compiled("arb", k) for k in (0, 1, 2)),
+        form.compiled("arb", (0, 1)),
+        edge_equation(parity).compiled("arb", 0),
+    )
+
+
 def hump_normal(
     n: int,
     m: Fraction,
@@ -420,8 +435,7 @@ def hump_normal(
     float stage is that of ``m`` (``float_stage``: computed already, a dict as
     :func:`verify.float_stage.normal_float_stage` returns, plus ``"bm"``)."""
     parity = -1 if n % 2 else 1  # the multiplier (analytic.stitching.Parity)
-    form = indicator(parity)
-    D0, D1, D2 = (form.compiled("arb", k) for k in (0, 1, 2))
+    D0, D1, D2, D01, E0 = _normal_forms(parity)
     if jet:  # parameters as jets in m over the range (for the mean-value form, hump_box)
 
         def jets():
@@ -432,11 +446,11 @@ def hump_normal(
 
         P = AtPrecision(jets, box_prec(m_box))
     else:
-        P = AtPrecision(
-            lambda: _params_at(m, Q, damping, m_box, partial(normal_params, system=system)),
-            box_prec(m_box) if m_box else 0,
-            rounded=True,
-        )
+        if m_box is None and system is PAPER:
+            make = lambda: normal_params(m, Q, damping, _ARB)  # noqa: E731
+        else:
+            make = partial(_params_at, m, Q, damping, m_box, partial(normal_params, system=system))
+        P = AtPrecision(make, box_prec(m_box) if m_box else 0, rounded=True)
     C = AtPrecision(lambda: arb.pi() * n / 2, rounded=True)
     near = None  # the parameters at the proof's precision (one point): used as they are below
     if float_stage is not None:
@@ -448,9 +462,13 @@ def hump_normal(
         # the parameters once, at the precision of the proof (quick_root's); the float stage
         # takes their midpoints (right to the last bit, also next to critical damping)
         top = max(80, bits + QUICK_GUARD)
-        with ctx.workprec(top):
+        old = ctx.prec  # set and restored (cheaper than a workprec context)
+        ctx.prec = top
+        try:
             pt = P()
             near = (top, pt, C())
+        finally:
+            ctx.prec = old
         fl, bm = normal_float_edges(n, pt), float(pt.bm)
 
     def params():
@@ -472,26 +490,32 @@ def hump_normal(
         return got
 
     # the bracket: a little outside the undamped-form roots, proven outside both
-    E0 = edge_equation(parity).compiled("arb", 0)
     sgn = sgn_of(n)
     span = max(fl["b"] - fl["a"], 1e-300)
     a = max(fl["a"] - max(span * 1e-6, abs(fl["a"]) * 1e-12, 1e-300), -math.pi / 2)
     b = min(fl["b"] + max(span * 1e-6, abs(fl["b"]) * 1e-12, 1e-300), math.pi / 2)
     if not jet:
-        A, B = ball(a), ball(b)
-        for prec in (64, 128):  # 64 bits nearly always decide it
-            with ctx.workprec(prec):
+        A, B = arb(a), arb(b)  # floats: exact
+        old = ctx.prec
+        try:
+            for prec in (64, 128):  # 64 bits nearly always decide it
+                ctx.prec = prec
                 p, c = params()
-                outside = all(E0(A, c, sgn, e, p.r, p.beta) < 0 for e in (1, -1)) and all(
-                    E0(B, c, sgn, e, p.r, p.beta) > 0 for e in (1, -1)
+                r, beta = p.r, p.beta
+                outside = (
+                    E0(A, c, sgn, 1, r, beta) < 0
+                    and E0(A, c, sgn, -1, r, beta) < 0
+                    and E0(B, c, sgn, 1, r, beta) > 0
+                    and E0(B, c, sgn, -1, r, beta) > 0
                 )
-            if outside:
-                break
+                if outside:
+                    break
+        finally:
+            ctx.prec = old
         if not outside:  # pragma: no cover - the float bracket is always this good
             a, b = -math.pi / 2, math.pi / 2
     if bm < NEAR_ONE:
         return _hump_near_one(n, P, fl, b, C, E0, check=not jet), P
-    D01 = form.compiled("arb", (0, 1))
     h = _Hump(
         D=lambda t: D0(t, *args()),
         dD=lambda t: D1(t, *args()),

@@ -319,6 +319,8 @@ def _exact_rational(m: Fraction, Q: Fraction, B: Backend) -> NormalParams:
         V = k nu1 + nu2 / k,  k = (1+m)/(1-m);   U = (Un/(1-m^2)^2) / V;   d = 4m/(1-m^2)
         beta = (8 m Q^2/(1-m^2)) / (nu1 + nu2)^2;   2Q/sqrt(1 +- m) = sqrt(nu_i^2 + 1)
     """
+    if B.name == "arb":
+        return _exact_arb(m, Q)
     u1, u2, k, Uq, dq, bq, q4, s2 = _exact_parts(m, Q)
     lift = B.num
     U1, U2, K = lift(u1), lift(u2), lift(k)
@@ -346,6 +348,45 @@ def _exact_rational(m: Fraction, Q: Fraction, B: Backend) -> NormalParams:
         w0,
         diff / (w * w0),
         2 * nu1 / nsum,
+    )
+
+
+def _exact_arb(m: Fraction, Q: Fraction) -> NormalParams:
+    """:func:`_exact_rational` in ``arb`` at the working precision, the same operations on the
+    same roundings, without the back end's indirections: the rational parts as integer pairs
+    cached by the integers of ``m`` and ``Q`` (a Fraction's hash costs more than the lookup), each
+    lifted by one rounded division, and the square roots as ``arb`` methods."""
+    parts = _exact_pairs(m.numerator, m.denominator, Q.numerator, Q.denominator)
+    U1, U2, K, Uq, d, bq, iq, s2 = (arb(p) / q if q != 1 else arb(p) for p, q in parts)
+    nu1, nu2 = U1.sqrt(), U2.sqrt()
+    V = K * nu1 + nu2 / K
+    U = Uq / V
+    dd = d * d
+    den = V * V + dd
+    r2 = (U * U + dd) / den
+    nsum = nu1 + nu2
+    w = nsum * iq
+    s = s2.sqrt()
+    w0 = ((1 + s) / 2).sqrt() / s  # omega_av/omega0 without friction (see omega_av)
+    diff = (1 / ((U1 + 1).sqrt() + nu1) + 1 / ((U2 + 1).sqrt() + nu2)) * iq
+    return _normal(
+        r2.sqrt(),
+        r2,
+        4 * nu1 * nu2 / den,
+        bq / (nsum * nsum),
+        w,
+        2 / nsum,
+        w0,
+        diff / (w * w0),
+        2 * nu1 / nsum,
+    )
+
+
+@lru_cache(maxsize=64)
+def _exact_pairs(mp: int, mq: int, qp: int, qq: int) -> tuple:
+    """:func:`_exact_parts` as ``(numerator, denominator)`` pairs, cached by the integers."""
+    return tuple(
+        (x.numerator, x.denominator) for x in _exact_parts(Fraction(mp, mq), Fraction(qp, qq))
     )
 
 
