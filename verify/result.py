@@ -11,11 +11,11 @@ from dataclasses import dataclass, field, fields
 from fractions import Fraction
 
 import mpmath
-from mpmath.libmp import to_str
+from mpmath.libmp import from_man_exp, to_str
 
 from analytic.system import PAPER, System
 
-from .certify import exact_mpf, to_mpf
+from .certify import _make_mpf, exact_mpf, to_mpf
 from .rounding import _POW10, _pow10, largest_bound, printed_bound
 
 __all__ = ["Boundary", "from_balls", "proven_text", "fraction_text"]
@@ -157,11 +157,15 @@ class Boundary:
             "upper": upper,
             "delta_lower": delta_lower,
             "delta_upper": delta_upper,
-            "radius": None if self.radius is None else _radius_text(self.radius),
+            "radius": self._radius_json,
             "error_bound": self._error_bound,
             "certified": self.certified,
             "notes": list(self.notes),
         }
+
+    @property
+    def _radius_json(self) -> str | None:
+        return None if self.radius is None else _radius_text(self.radius)
 
     def __repr__(self) -> str:
         """Every certified digit (the dataclass repr showed mpmath's 15-17)."""
@@ -247,6 +251,65 @@ class _FromBalls(Boundary):
     def upper_enclosure(self):
         return _ends(self.upper, self.radii[1])
 
+    @_once
+    def _raw(self) -> tuple:
+        """The raw mpf numbers ``(midpoints, radii)`` of the four balls, read from the balls'
+        exact mantissas and exponents (no mpmath numbers built: the printed decimals and their
+        bound need only these)."""
+        mids = []
+        rads = []
+        for x in self._balls:
+            man, exp = x.mid().man_exp()
+            mids.append(_raw_mpf(int(man), int(exp)))
+            man, exp = x.rad().man_exp()
+            rads.append(_raw_mpf(int(man), int(exp)))
+        return tuple(mids), tuple(rads)
+
+    @_once
+    def _printed(self) -> tuple:
+        """:meth:`Boundary._printed` from the balls' raw numbers (:attr:`_raw`): the same texts
+        and bound items; the general path (a zero midpoint or radius) converts the numbers."""
+        if "_balls" not in self.__dict__:  # a copy (``dataclasses.replace``): the numbers are set
+            return Boundary._printed.fn(self)
+        mids, rads = self._raw
+        digits = self.digits
+        enough = digits + 1e-9
+        texts = []
+        raw = []
+        for i, (xv, rv) in enumerate(zip(mids, rads, strict=True)):
+            if not (xv[1] and rv[1]):
+                value = (self.lower, self.upper, self.delta_lower, self.delta_upper)[i]
+                text, dk = _proven(value, self.radii[i], digits)
+            elif (xv[2] + xv[3] - rv[2] - rv[3] - 2) * _LOG10_2 > enough:
+                text, dk = _nstr(xv, digits)  # every digit usable (:func:`_proven`)
+            else:
+                text, dk = _proven_raw(xv, rv, digits)
+            texts.append(text)
+            if dk is None:
+                raw = None
+            elif raw is not None:
+                raw.append((dk, xv, rv))
+        return tuple(texts), raw
+
+    @_once
+    def _error_bound(self) -> str | None:
+        if "_balls" not in self.__dict__:
+            return Boundary._error_bound.fn(self)
+        if not self.certified:
+            return None
+        texts, raw = self._printed
+        if raw is not None:
+            return largest_bound(raw)
+        values = (self.lower, self.upper, self.delta_lower, self.delta_upper)
+        return printed_bound(zip(texts, values, self.radii, strict=True))
+
+    @property
+    def _radius_json(self) -> str:
+        if "_balls" not in self.__dict__:
+            return Boundary._radius_json.fget(self)
+        rv = _raw_max(self._raw[1])
+        return _nstr(rv, 3, strip=True)[0] if rv[1] else _radius_text(self.radius)
+
     def __eq__(self, other):
         if not isinstance(other, Boundary):
             return NotImplemented
@@ -256,6 +319,30 @@ class _FromBalls(Boundary):
 
 
 _COMPARED = tuple(f.name for f in fields(Boundary) if f.compare)
+
+
+def _raw_mpf(man: int, exp: int) -> tuple:
+    """The raw mpf ``man 2**exp`` (:func:`verify.certify.exact_mpf` without the mpmath number)."""
+    if man & 1:  # arb gives the odd mantissa: already mpmath's normal form
+        return (0, man, exp, man.bit_length()) if man > 0 else (1, -man, exp, (-man).bit_length())
+    return from_man_exp(man, exp)
+
+
+def _raw_max(rads: tuple) -> tuple:
+    """The largest of nonnegative raw mpf numbers (normal form: odd mantissas)."""
+    best = rads[0]
+    for r in rads[1:]:
+        if not r[1]:
+            continue
+        if not best[1]:
+            best = r
+            continue
+        top, btop = r[2] + r[3], best[2] + best[3]
+        if top > btop or (
+            top == btop and r[1] << max(best[3] - r[3], 0) > best[1] << max(r[3] - best[3], 0)
+        ):
+            best = r
+    return best
 
 
 def _ends(v, r) -> tuple:
@@ -316,17 +403,22 @@ def _proven(x, rad, digits: int) -> tuple[str, tuple[int, int] | None]:
     if xv is not None and rv is not None and xv[1] and rv[1]:
         # the common case, two finite nonzero mpmath numbers: the same estimate and the same
         # text as below, without mpmath's dispatch and comparisons
-        if (xv[2] + xv[3] - rv[2] - rv[3] - 2) * _LOG10_2 > digits + 1e-9:
-            # |x| / (2 rad) > 2**(that exponent) >= 10**digits: every digit asked for is usable
-            return _nstr(xv, digits)
-        est = (xv[2] - rv[2] - 1 + math.log2(xv[1]) - math.log2(rv[1])) * _LOG10_2
-        usable = math.floor(est)
-        if abs(est - round(est)) < 1e-6:
-            usable = _usable_exactly(x, rad)
-        if usable < 1:
-            return "0", (0, 0)
-        return _nstr(xv, min(digits, usable))
+        return _proven_raw(xv, rv, digits)
     return _proven_slow(x, rad, digits), None
+
+
+def _proven_raw(xv: tuple, rv: tuple, digits: int) -> tuple[str, tuple[int, int] | None]:
+    """:func:`_proven` of the raw mpf numbers of a finite nonzero ``x`` and ``rad``."""
+    if (xv[2] + xv[3] - rv[2] - rv[3] - 2) * _LOG10_2 > digits + 1e-9:
+        # |x| / (2 rad) > 2**(that exponent) >= 10**digits: every digit asked for is usable
+        return _nstr(xv, digits)
+    est = (xv[2] - rv[2] - 1 + math.log2(xv[1]) - math.log2(rv[1])) * _LOG10_2
+    usable = math.floor(est)
+    if abs(est - round(est)) < 1e-6:
+        usable = _usable_exactly(_make_mpf(xv), _make_mpf(rv))
+    if usable < 1:
+        return "0", (0, 0)
+    return _nstr(xv, min(digits, usable))
 
 
 def _proven_slow(x, rad, digits: int) -> str:
