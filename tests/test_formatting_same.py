@@ -187,9 +187,12 @@ def test_radius_text_as_before():
 KEYS = ("lower", "upper", "delta_lower", "delta_upper")
 
 
-def assert_row_as_before(b) -> None:
+def assert_row_as_before(b, balls: bool = True) -> None:
     """``b`` formatted afresh (as ``paramres table`` writes a row, and as ``str``) against the
-    reference: the four decimals, the bound of the print and the radius, byte for byte."""
+    reference: the four decimals, the bound of the print and the radius, byte for byte; with
+    ``balls``, also the same row made from balls (:func:`assert_balls_as_numbers`)."""
+    if balls:
+        assert_balls_as_numbers(b)
     fresh = dataclasses.replace(b)  # nothing formatted yet
     j = fresh.as_json()
     values = (b.lower, b.upper, b.delta_lower, b.delta_upper)
@@ -215,6 +218,44 @@ def assert_row_as_before(b) -> None:
     for t in texts:
         assert t is None or f"= {t}" in text
     assert bound is None or f"|printed - exact| < {bound}]" in text
+
+
+def assert_balls_as_numbers(b) -> None:
+    """The row made as the solver makes it (:func:`verify.result.from_balls`, formatted straight
+    from the balls' raw numbers, nothing converted before) from balls with ``b``'s midpoints and
+    radii, against a plain :class:`verify.result.Boundary` holding the balls' numbers exactly
+    (formatted by the general route, itself checked against the reference): the same dict and
+    the same text, byte for byte.  A zero radius or a zero midpoint takes the balls' general
+    path; ``dataclasses.replace`` of a from-balls result (which drops the balls) formats alike."""
+    from verify.certify import ball, exact_mpf, to_mpf
+    from verify.result import Boundary, from_balls
+
+    values = (b.lower, b.upper, b.delta_lower, b.delta_upper)
+    if not b.exists or b.radii is None or any(v is None for v in values):
+        return
+    balls = [ball(v, r) for v, r in zip(values, b.radii, strict=True)]
+    kw = {
+        k: getattr(b, k)
+        for k in ("order", "m", "Q", "damping", "digits", "method", "regime", "system", "notes")
+    }
+    radii = tuple(exact_mpf(x.rad()) for x in balls)
+    ref = Boundary(
+        exists=True,
+        lower=to_mpf(balls[0]),
+        upper=to_mpf(balls[1]),
+        delta_lower=to_mpf(balls[2]),
+        delta_upper=to_mpf(balls[3]),
+        radius=max(radii),
+        radii=radii,
+        certified=b.certified,
+        **kw,
+    )
+    assert_row_as_before(ref, balls=False)
+    assert from_balls(balls, certified=b.certified, **kw).as_json() == ref.as_json()
+    assert str(from_balls(balls, certified=b.certified, **kw)) == str(ref)
+    assert dataclasses.replace(from_balls(balls, certified=b.certified, **kw)).as_json() == (
+        ref.as_json()
+    )
 
 
 CONFIGS = [

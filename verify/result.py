@@ -260,9 +260,20 @@ class _FromBalls(Boundary):
         rads = []
         for x in self._balls:
             man, exp = x.mid().man_exp()
-            mids.append(_raw_mpf(int(man), int(exp)))
+            man = int(man)
+            if man & 1:  # arb gives the odd mantissa: already mpmath's normal form
+                if man > 0:
+                    mids.append((0, man, int(exp), man.bit_length()))
+                else:
+                    mids.append((1, -man, int(exp), (-man).bit_length()))
+            else:
+                mids.append(from_man_exp(man, int(exp)))
             man, exp = x.rad().man_exp()
-            rads.append(_raw_mpf(int(man), int(exp)))
+            man = int(man)
+            if man & 1:  # a radius is >= 0
+                rads.append((0, man, int(exp), man.bit_length()))
+            else:
+                rads.append(from_man_exp(man, int(exp)))
         return tuple(mids), tuple(rads)
 
     @_once
@@ -321,28 +332,20 @@ class _FromBalls(Boundary):
 _COMPARED = tuple(f.name for f in fields(Boundary) if f.compare)
 
 
-def _raw_mpf(man: int, exp: int) -> tuple:
-    """The raw mpf ``man 2**exp`` (:func:`verify.certify.exact_mpf` without the mpmath number)."""
-    if man & 1:  # arb gives the odd mantissa: already mpmath's normal form
-        return (0, man, exp, man.bit_length()) if man > 0 else (1, -man, exp, (-man).bit_length())
-    return from_man_exp(man, exp)
-
-
 def _raw_max(rads: tuple) -> tuple:
-    """The largest of nonnegative raw mpf numbers (normal form: odd mantissas)."""
-    best = rads[0]
-    for r in rads[1:]:
-        if not r[1]:
-            continue
-        if not best[1]:
-            best = r
-            continue
-        top, btop = r[2] + r[3], best[2] + best[3]
-        if top > btop or (
-            top == btop and r[1] << max(best[3] - r[3], 0) > best[1] << max(r[3] - best[3], 0)
-        ):
-            best = r
-    return best
+    """The largest of nonnegative raw mpf numbers (normal form: odd mantissas, or zero)."""
+    return max(rads, key=_magnitude)
+
+
+def _magnitude(r: tuple) -> tuple:
+    """A key ordering nonnegative raw mpf numbers by value: ``2**(top-1) <= r < 2**top`` first,
+    then the mantissa over ``2**bitcount`` (exactly; an integer for up to 4096 bits -- a radius
+    has 30)."""
+    if not r[1]:
+        return (-math.inf, 0)
+    if r[3] <= 4096:
+        return (r[2] + r[3], r[1] << (4096 - r[3]))
+    return (r[2] + r[3], Fraction(r[1], 1 << (r[3] - 4096)))
 
 
 def _ends(v, r) -> tuple:
