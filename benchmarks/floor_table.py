@@ -1,7 +1,7 @@
 """``table --digits 50``: formatting a row against solving it.
 
 Ours is the text of one row as ``paramres table`` writes it (the four proven decimals and the
-bound of the printed digits, :meth:`verify.result.Boundary.as_json`) for a fresh result: one built
+bound of the printed digits, :meth:`verify.result.Boundary.printed`) for a fresh result: one built
 by :func:`verify.result.from_balls`, the constructor the solver calls, from the solver's four
 balls -- nothing formatted and nothing converted from the balls yet, so formatting pays every
 conversion the printed text needs.  The floor is solving that row (:func:`verify.solve.boundary`).
@@ -29,7 +29,7 @@ def scenes(quick: bool) -> list[dict]:
 
     def fmt():
         for balls, kw, certified in made:
-            from_balls(balls, certified=certified, **kw).as_json()  # fresh: nothing converted
+            from_balls(balls, certified=certified, **kw).printed()  # fresh: nothing converted
 
     def solve():
         for m in ms:

@@ -195,6 +195,7 @@ def assert_row_as_before(b, balls: bool = True) -> None:
         assert_balls_as_numbers(b)
     fresh = dataclasses.replace(b)  # nothing formatted yet
     j = fresh.as_json()
+    assert dataclasses.replace(b).printed() == tuple(j[k] for k in (*KEYS, "error_bound"))
     values = (b.lower, b.upper, b.delta_lower, b.delta_upper)
     radii = (None,) * 4 if b.radii is None else b.radii
     texts = [
@@ -251,7 +252,11 @@ def assert_balls_as_numbers(b) -> None:
         **kw,
     )
     assert_row_as_before(ref, balls=False)
-    assert from_balls(balls, certified=b.certified, **kw).as_json() == ref.as_json()
+    j = ref.as_json()
+    assert from_balls(balls, certified=b.certified, **kw).as_json() == j
+    assert from_balls(balls, certified=b.certified, **kw).printed() == tuple(
+        j[k] for k in (*KEYS, "error_bound")
+    )
     assert str(from_balls(balls, certified=b.certified, **kw)) == str(ref)
     assert dataclasses.replace(from_balls(balls, certified=b.certified, **kw)).as_json() == (
         ref.as_json()
@@ -391,3 +396,37 @@ def test_largest_bound_as_before():
             ref.append(reference_error(text, x, r))
         assert largest_bound(raw) == (reference_bound(max(ref)) if ref else None)
     assert largest_bound([]) is None
+
+
+def test_raw_numbers_of_balls_exact():
+    """The raw numbers a from-balls result prints from (midpoints and radii read from the balls,
+    radii through doubles where that is exact) are the balls' exact values
+    (:func:`verify.certify.exact_mpf`, the reference conversion), at radii from 2**-3000 to
+    2**40, around 1 and around the least radius taken through a double (2**-990)."""
+    from flint import arb
+
+    from verify.certify import exact_mpf
+    from verify.result import from_balls
+
+    rng = random.Random(77)
+    exps = [-3000, -991, -990, -989, -200, -31, -30, -1, 0, 1, 40]
+    for e in exps:
+        for rman in (1, 2**29 + 1, 2**30 - 1, rng.randrange(1, 2**30)):
+            rad = _mpf(rman, e)
+            mid = _mpf(rng.choice([-1, 1]) * rng.randrange(1, 2**200), -199)
+            balls = [arb(mid.man_exp[0] * (-1 if mid < 0 else 1)) * arb(2) ** -199] * 4
+            balls = [arb(x.mid(), arb(rad)) for x in balls]
+            b = from_balls(
+                balls,
+                order=1,
+                m=Fraction(1, 2),
+                Q=None,
+                damping="none",
+                digits=50,
+                method="certified",
+                regime="",
+                system=boundary(1, Fraction(1, 2)).system,
+            )
+            mids, rads = b._raw
+            assert mids == tuple(exact_mpf(x.mid())._mpf_ for x in balls)
+            assert rads == tuple(exact_mpf(x.rad())._mpf_ for x in balls)

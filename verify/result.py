@@ -138,6 +138,11 @@ class Boundary:
         radii = (self.radius,) * 4 if self.radii is None else self.radii
         return printed_bound(zip(texts, values, radii, strict=True))
 
+    def printed(self) -> tuple:
+        """``(lower, upper, delta_lower, delta_upper, error_bound)`` as :meth:`as_json` writes
+        them (a row of ``paramres table``), without the rest of the dict."""
+        return (*self._printed[0], self._error_bound)
+
     def as_json(self) -> dict:
         """A JSON-ready dict; numbers as decimal strings with ``digits`` significant digits;
         ``error_bound`` bounds ``|printed - exact|`` for each of them (rounding included),
@@ -268,12 +273,14 @@ class _FromBalls(Boundary):
                     mids.append((1, -man, int(exp), (-man).bit_length()))
             else:
                 mids.append(from_man_exp(man, int(exp)))
-            man, exp = x.rad().man_exp()
-            man = int(man)
-            if man & 1:  # a radius is >= 0
-                rads.append((0, man, int(exp), man.bit_length()))
+            r = x.rad()
+            f = float(r)
+            if _TINY < f < _HUGE:  # exact: a radius has a 30-bit mantissa (arb's mag_t)
+                man, den = f.as_integer_ratio()  # man odd, den a power of two
+                rads.append((0, man, 1 - den.bit_length(), man.bit_length()))
             else:
-                rads.append(from_man_exp(man, int(exp)))
+                man, exp = r.man_exp()
+                rads.append(from_man_exp(int(man), int(exp)))
         return tuple(mids), tuple(rads)
 
     @_once
@@ -330,6 +337,11 @@ class _FromBalls(Boundary):
 
 
 _COMPARED = tuple(f.name for f in fields(Boundary) if f.compare)
+
+
+#: a radius strictly between these is a double exactly (30-bit mantissas, normal doubles) and
+#: not an integer (``as_integer_ratio`` gives the odd mantissa over a power of two)
+_TINY, _HUGE = 2.0**-990, 1.0
 
 
 def _raw_max(rads: tuple) -> tuple:

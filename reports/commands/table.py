@@ -131,8 +131,7 @@ def _certified(task):
         modulation=modulation,
         switch_time=S,
     )
-    j = b.as_json()
-    return (order, m, j["lower"], j["upper"], j["delta_lower"], j["delta_upper"], j["error_bound"])
+    return (order, m, *b.printed())
 
 
 def _tol_rows(orders, ms, Q, damping, tol, label, quiet=False):
@@ -143,9 +142,7 @@ def _tol_rows(orders, ms, Q, damping, tol, label, quiet=False):
 
     out = []
     for b in boundaries_tol(orders, ms, Q=Q, damping=damping, tol=tol, progress=prog):
-        j = b.as_json()
-        cells = [j[k] for k in ("lower", "upper", "delta_lower", "delta_upper", "error_bound")]
-        out.append((b.order, b.m, *cells, b.method))
+        out.append((b.order, b.m, *b.printed(), b.method))
     return out
 
 
