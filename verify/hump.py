@@ -135,7 +135,6 @@ def _unimodal_shape(h: _Hump, lo_root, hi_root, budget: int = 16) -> bool:
             if count > budget:
                 return False
             X = u.union(v)  # u, v exact: a ball holding [u, v]
-            mid = X.mid()
             if h.d2D(X) < 0:
                 labels.append("cap")
                 continue
@@ -146,6 +145,7 @@ def _unimodal_shape(h: _Hump, lo_root, hi_root, budget: int = 16) -> bool:
             if h.D(X) < 0:
                 labels.append("neg")
                 continue
+            mid = X.mid()
             stack.append((mid, v))
             stack.append((u, mid))
         while labels and labels[0] == "neg":
