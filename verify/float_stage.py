@@ -92,9 +92,11 @@ def bisect_newton(
     return x
 
 
-def _halley_edge(f012, lo: float, hi: float, x: float, increasing: bool, first) -> float:
-    """Safeguarded Halley iteration for the root of ``f`` in ``[lo, hi]`` (``f012(x) = (f, f',
-    f'')``; ``first`` = its value at the start ``x``), where ``f(lo) < 0 < f(hi)`` if
+def _halley_edge(
+    f012, lo: float, hi: float, x: float, increasing: bool, first, args: tuple = ()
+) -> float:
+    """Safeguarded Halley iteration for the root of ``f`` in ``[lo, hi]`` (``f012(x, *args) =
+    (f, f', f'')``; ``first`` = its value at the start ``x``), where ``f(lo) < 0 < f(hi)`` if
     ``increasing``, else the reverse; the stopping rule of :func:`float_edge`."""
     sign = 1.0 if increasing else -1.0
     f, d1, d2 = first
@@ -120,7 +122,7 @@ def _halley_edge(f012, lo: float, hi: float, x: float, increasing: bool, first) 
         if hi - lo <= 4e-16 * max(abs(xn), 1e-300):
             return xn
         x = xn
-        f, d1, d2 = f012(x)
+        f, d1, d2 = f012(x, *args)
     return x
 
 
@@ -166,7 +168,7 @@ def normal_float_stage(n: int, p) -> dict:
                 first = d012(x0, *args)
             else:
                 x0, first = end, at_end
-            ends.append(_halley_edge(lambda x: d012(x, *args), u0, v0, x0, inc, first))
+            ends.append(_halley_edge(d012, u0, v0, x0, inc, first, args))
         lo, hi = ends
     return {"a": a, "b": b, "top": top, "dtop": dtop, "lo": lo, "hi": hi}
 
@@ -179,26 +181,30 @@ def normal_float_edges(n: int, p) -> dict:
     there) it is :func:`normal_float_stage`.  What the certified solver needs of ``top`` is a
     point between the edges where ``D > 0``."""
     edge, d012, _ = _forms(n % 2 == 1)
-    r, r2, u, beta, g = (float(x) for x in (p.r, p.r2, p.u, p.beta, p.g))
+    r, beta = float(p.r), float(p.beta)
     t1 = float_edge(edge, n, 1, r, beta)
     t2 = float_edge(edge, n, -1, r, beta)
-    a, b = min(t1, t2), max(t1, t2)
-    args = (n * math.pi / 2, r2, u, beta, g)
+    a, b = (t1, t2) if t1 < t2 else (t2, t1)
+    args = (n * math.pi / 2, float(p.r2), float(p.u), beta, float(p.g))
     mid = 0.5 * (a + b)
-    at_mid = d012(mid, *args)
-    dm, d1, d2 = at_mid
+    dm, d1, d2 = d012(mid, *args)
     if not (dm > 0 and d2 < 0 and a < mid < b):
         return normal_float_stage(n, p)
     # the parabola dm + d1 t + d2 t^2/2: one root either side of t = 0 (dm > 0 > d2)
     disc = math.sqrt(d1 * d1 - 2.0 * d2 * dm)
     q = -0.5 * (d1 + math.copysign(disc, d1))  # the roots q/(d2/2) and dm/q, without cancellation
-    roots = sorted((q / (0.5 * d2), dm / q)) if q != 0 else (-math.inf, math.inf)
-    ends = []
-    for x0, inc, (u0, v0) in (
-        (mid + roots[0], True, (a, mid)),
-        (mid + roots[1], False, (mid, b)),
-    ):
-        if not u0 < x0 < v0:
-            x0 = 0.5 * (u0 + v0)
-        ends.append(_halley_edge(lambda x: d012(x, *args), u0, v0, x0, inc, d012(x0, *args)))
-    return {"a": a, "b": b, "top": mid, "dtop": dm, "lo": ends[0], "hi": ends[1]}
+    if q != 0:
+        r0, r1 = q / (0.5 * d2), dm / q
+        if r1 < r0:
+            r0, r1 = r1, r0
+    else:
+        r0, r1 = -math.inf, math.inf
+    x0 = mid + r0
+    if not a < x0 < mid:
+        x0 = 0.5 * (a + mid)
+    lo = _halley_edge(d012, a, mid, x0, True, d012(x0, *args), args)
+    x0 = mid + r1
+    if not mid < x0 < b:
+        x0 = 0.5 * (mid + b)
+    hi = _halley_edge(d012, mid, b, x0, False, d012(x0, *args), args)
+    return {"a": a, "b": b, "top": mid, "dtop": dm, "lo": lo, "hi": hi}

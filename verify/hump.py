@@ -77,6 +77,7 @@ __all__ = [
 
 _ARB = backend("arb")
 _MATH = backend("math")
+_EPS_BOTH = arb(0, 1)  # the ball [-1, 1]: both signs eps = +-1 at once (exact)
 
 
 @dataclass
@@ -134,7 +135,6 @@ def _unimodal_shape(h: _Hump, lo_root, hi_root, budget: int = 16) -> bool:
             if count > budget:
                 return False
             X = u.union(v)  # u, v exact: a ball holding [u, v]
-            mid = X.mid()
             if h.d2D(X) < 0:
                 labels.append("cap")
                 continue
@@ -145,6 +145,7 @@ def _unimodal_shape(h: _Hump, lo_root, hi_root, budget: int = 16) -> bool:
             if h.D(X) < 0:
                 labels.append("neg")
                 continue
+            mid = X.mid()
             stack.append((mid, v))
             stack.append((u, mid))
         while labels and labels[0] == "neg":
@@ -498,7 +499,15 @@ def hump_normal(
         A, B = arb(a), arb(b)  # floats: exact
         old = ctx.prec
         try:
-            for prec in (64, 128):  # 64 bits nearly always decide it
+            # the edge equation is affine in eps (one term): with eps the ball [-1, 1] one
+            # evaluation encloses both signs' values, so two evaluations nearly always decide it
+            ctx.prec = 64
+            p, c = params()
+            r, beta = p.r, p.beta
+            outside = (
+                E0(A, c, sgn, _EPS_BOTH, r, beta) < 0 and E0(B, c, sgn, _EPS_BOTH, r, beta) > 0
+            )
+            for prec in () if outside else (64, 128):  # each sign apart
                 ctx.prec = prec
                 p, c = params()
                 r, beta = p.r, p.beta
