@@ -1,7 +1,7 @@
 """Every certified edge lies in its own enclosure, and the enclosure is as tight as the radius.
 
 The enclosures are the proven ``(low, high)`` bounds of each edge (:class:`verify.result.Boundary`);
-they are the balls' exact ends (:func:`verify.enclosure.balls_result`), never the midpoint plus
+they are the balls' exact ends (:func:`verify.result.from_balls`), never the midpoint plus
 or minus the radius rounded to the ambient mpmath precision (which, at 53 bits, collapsed a
 30-digit enclosure to one point beside the edge)."""
 

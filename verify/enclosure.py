@@ -1,7 +1,7 @@
 """From proven balls of the unknown to the result: parameters at the working precision, the
 accuracy each unknown needs, and :func:`edges_result`, which turns the two enclosed roots into a
 :class:`verify.result.Boundary` (``T/T0`` and the offsets as balls, every radius proven; from
-such balls, however found, :func:`balls_result`)."""
+such balls, however found, :func:`verify.result.from_balls`)."""
 
 from __future__ import annotations
 
@@ -19,7 +19,6 @@ __all__ = [
     "theta_scale",
     "theta_floor",
     "edges_result",
-    "balls_result",
     "no_interval",
 ]
 
@@ -138,7 +137,7 @@ def edges_result(
                 raise CertificationError(f"enclosure of T too wide: {T}")
     finally:
         ctx.prec = old
-    return from_balls(  # balls_result's body: one layer of keyword arguments less
+    return from_balls(
         Ts + ds,
         order=n,
         m=req.m,
@@ -148,38 +147,6 @@ def edges_result(
         method=method,
         regime=regime,
         system=req.system,
-        notes=notes,
-        certified=certified,
-    )
-
-
-def balls_result(
-    balls,
-    *,
-    order,
-    m,
-    Q,
-    damping,
-    digits,
-    method,
-    regime,
-    system,
-    notes=(),
-    certified=True,
-) -> Boundary:
-    """The result from four balls: ``T/T0`` of the lower and the upper edge and their offsets
-    (:func:`verify.result.from_balls`: the numbers are the balls' midpoints, radii and ends,
-    converted exactly on first use)."""
-    return from_balls(
-        balls,
-        order=order,
-        m=m,
-        Q=Q,
-        damping=damping,
-        digits=digits,
-        method=method,
-        regime=regime,
-        system=system,
         notes=notes,
         certified=certified,
     )

@@ -340,7 +340,7 @@ class _Paths:
 def ramp_boundary(order, m, S, *, duty="1/2", digits=30, _jump_result=None) -> RampEdges:
     """The certified edges of the ``order``-th interval with linear ramps of duration ``S``
     (``0 <= S <= min(D, 1 - D) T`` at the lower edge; a longer ramp is refused)."""
-    from .enclosure import balls_result
+    from .result import from_balls
 
     n = as_order(order)
     sysv = as_system("pendulum", duty)
@@ -419,7 +419,7 @@ def ramp_boundary(order, m, S, *, duty="1/2", digits=30, _jump_result=None) -> R
     ]
     if lo.overlaps(hi):
         notes.append("the two edges could not be separated at this precision")
-    b = balls_result(
+    b = from_balls(
         (lo, hi, dl, du),
         order=n,
         m=mm,

@@ -369,7 +369,7 @@ def sine_boundary(order, m, *, digits=30):
     wave's tuning at the same depth, as for every modulation)."""
     from analytic.system import system as make_system
 
-    from .enclosure import balls_result
+    from .result import from_balls
 
     n = as_order(order)
     mm = exact_fraction(as_depth(m))
@@ -397,7 +397,7 @@ def sine_boundary(order, m, *, digits=30):
         # the square wave's tuning n T_av/2 = n pi/omega_av (the offsets' reference)
         w1, w2 = (arb(fmpq(w.numerator, w.denominator)).sqrt() for w in sysv.values(mm)[:2])
         half = n / (w1 + w2)
-        return balls_result(
+        return from_balls(
             (lo, hi, lo - half, hi - half),
             order=n,
             m=mm,
