@@ -379,6 +379,85 @@ def test_hard_rows_as_before(digits):
     assert_row_as_before(dataclasses.replace(b, radius=None, certified=False))
 
 
+def test_rows_of_random_balls_as_before():
+    """Rows made from balls with random midpoints and radii -- the cases above, four to a row:
+    ties, runs of nines, value/radius next to a power of ten, signs, precisions from 1 to 120
+    digits, exponents far out -- written straight from the balls (the one pass of
+    :func:`verify.result._row_of_balls`) and by the general route, against the reference
+    (:func:`assert_balls_as_numbers`); most rows take the one pass."""
+    from verify.certify import ball
+    from verify.result import _row_of_balls
+
+    # radii the one pass reads through doubles (between 2**-990 and 1: verify.result._TINY,
+    # _HUGE); the rest take the general route, compared all the same
+    cases = [c for c in _cases(31, 6000) if 2.0**-990 < float(c[1]) < 1.0][:2400]
+    cases += list(_cases(32, 400))
+    fast = 0
+    for i in range(0, len(cases), 4):
+        (x0, r0, digits), *rest = cases[i : i + 4]
+        xs = [x0] + [x for x, _, _ in rest]
+        rs = [r0] + [r for _, r, _ in rest]
+        b = _row(xs[0], digits, radii=tuple(rs), deltas=(xs[2], xs[3]))
+        b = dataclasses.replace(b, upper=xs[1])
+        assert_balls_as_numbers(b)
+        fast += _row_of_balls([ball(x, r) for x, r in zip(xs, rs, strict=True)], digits) is not None
+    assert fast > 450  # of 700 rows: the one pass is what is compared
+
+
+def _truncated_tie(N: int, E: int, dps: int, below: bool) -> mpmath.mpf:
+    """A binary number whose digits as mpmath truncates them (``to_digits_exp`` at ``dps + 3``
+    digits, the first step of ``nstr``) are exactly ``N`` (``dps`` digits), then ``5`` and zeros
+    (``below``: the truncated digits one unit less, ``...4999``); the leading digit stands for
+    ``10**E``."""
+    value = (10 * N + 5) * Fraction(10) ** (E - dps)
+    top = math.floor(math.log2(value)) + 1
+    while Fraction(2) ** top <= value:
+        top += 1
+    while Fraction(2) ** (top - 1) > value:
+        top -= 1
+    bitprec = int((dps + 3) * math.log(10, 2)) + 10
+    fixprec = bitprec - top
+    fixdps = int(fixprec / math.log(10, 2) + 0.5)
+    target = (10 * N + 5) * 10 ** (fixdps + E - dps) - below
+    q = -((-target << fixprec) // 10**fixdps)  # the least q with q 10**fixdps >> fixprec = target
+    return _mpf(q, -fixprec)
+
+
+@pytest.mark.parametrize("dps", [1, 2, 3, 15, 50, 100])
+def test_truncated_ties_from_balls_as_before(dps):
+    """Midpoints whose truncated digits end exactly in ``5000...`` (a tie of the rounding that
+    mpmath decides half up) and one unit below it (``4999...``), positive and negative, in fixed
+    point and with an exponent, and runs of nines that carry into the next power of ten: rows
+    from balls against the reference (:func:`assert_balls_as_numbers`)."""
+    from mpmath.libmp import to_digits_exp
+
+    rng = random.Random(dps)
+    hits = 0
+    for _ in range(6):
+        row = []
+        for E in (0, -1, rng.choice([-30, -7, 3])):
+            N = rng.randrange(10 ** (dps - 1), 10**dps)
+            for below in (False, True):
+                x = _truncated_tie(N, E, dps, below)
+                _, digits, exponent = to_digits_exp(x._mpf_, dps + 3)
+                tail = digits[dps:]
+                hits += tail == "5" + "0" * (len(tail) - 1) and exponent == E and not below
+                row.append(x)
+        nines = _truncated_tie(10**dps - 1, rng.choice([0, -2, 4]), dps, False)
+        row += [nines, -row[0], -row[1]]
+        for i in range(0, len(row) - 3, 2):
+            xs = row[i : i + 4]
+            r = _mpf(1, int(mpmath.floor(mpmath.log(abs(xs[0]), 2))) - int(dps * 3.33) - 60)
+            b = _row(xs[0], dps, radii=(r, r, r, r), deltas=(xs[2], xs[3]))
+            assert_balls_as_numbers(dataclasses.replace(b, upper=xs[1]))
+    # exact powers of ten: the truncated digits a power of ten themselves
+    tens = [mpmath.mpf(1), mpmath.mpf(10), mpmath.mpf(-100), mpmath.mpf(10) ** 5]
+    r = _mpf(1, -int(dps * 3.33) - 60)
+    b = _row(tens[0], dps, radii=(r, r, r, r), deltas=(tens[2], tens[3]))
+    assert_balls_as_numbers(dataclasses.replace(b, upper=tens[1]))
+    assert hits >= 12  # the exact ties were made
+
+
 def test_largest_bound_as_before():
     """:func:`verify.rounding.largest_bound` (the rows' raw items, on one scale) against the
     largest error in Fraction arithmetic."""

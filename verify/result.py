@@ -16,7 +16,7 @@ from mpmath.libmp import from_man_exp, to_str
 from analytic.system import PAPER, System
 
 from .certify import _make_mpf, exact_mpf, to_mpf
-from .rounding import _POW10, _pow10, largest_bound, printed_bound
+from .rounding import _POW10, _pow10, _scaled_bound_text, largest_bound, printed_bound
 
 __all__ = ["Boundary", "from_balls", "proven_text", "fraction_text"]
 
@@ -286,9 +286,17 @@ class _FromBalls(Boundary):
     @_once
     def _printed(self) -> tuple:
         """:meth:`Boundary._printed` from the balls' raw numbers (:attr:`_raw`): the same texts
-        and bound items; the general path (a zero midpoint or radius) converts the numbers."""
-        if "_balls" not in self.__dict__:  # a copy (``dataclasses.replace``): the numbers are set
+        and bound items; the general path (a zero midpoint or radius) converts the numbers.  A
+        row whose four numbers print every digit asked for (the common case) is written by
+        :func:`_row_of_balls` straight from the balls, its bound with it."""
+        d = self.__dict__
+        if "_balls" not in d:  # a copy (``dataclasses.replace``): the numbers are set
             return Boundary._printed.fn(self)
+        row = _row_of_balls(d["_balls"], self.digits)
+        if row is not None:
+            texts, bound = row
+            d["_error_bound"] = bound if self.certified else None
+            return texts, None
         mids, rads = self._raw
         digits = self.digits
         enough = digits + 1e-9
@@ -342,6 +350,150 @@ _COMPARED = tuple(f.name for f in fields(Boundary) if f.compare)
 #: a radius strictly between these is a double exactly (30-bit mantissas, normal doubles) and
 #: not an integer (``as_integer_ratio`` gives the odd mantissa over a power of two)
 _TINY, _HUGE = 2.0**-990, 1.0
+
+
+def _row_of_balls(balls, dps: int) -> tuple[tuple, str | None] | None:
+    """The four texts of a row and the bound of the printed digits
+    (:func:`verify.rounding.largest_bound`) straight from the balls, in one pass: each midpoint's
+    mantissa and exponent and each radius (a double, exactly) read once, and the digits of
+    :func:`_nstr` (mpmath's ``to_str``: truncated at ``dps + 3`` digits, rounded half up) taken
+    by one division on the scale of :func:`_digit_scale`.  A number whose radius does not support
+    every digit asked for is printed by :func:`_proven_raw`.  ``None`` (the general path) for a
+    zero midpoint, a radius outside ``(_TINY, _HUGE)`` or huge exponents."""
+    scales = _ROW_SCALES.get(dps)
+    if scales is None:
+        scales = _ROW_SCALES[dps] = {}
+    enough = dps + 1e-9
+    texts = []
+    items = []
+    b = a = 0  # the common scale 2**a 10**b of the errors
+    for x in balls:
+        man, exp = x.mid().man_exp()
+        man = int(man)
+        if not man:
+            return None
+        f = float(x.rad())
+        if not _TINY < f < _HUGE:
+            return None
+        rm, den = f.as_integer_ratio()  # exact: a radius has a 30-bit mantissa
+        re = 1 - den.bit_length()
+        exp = int(exp)
+        sign = man < 0
+        mag = -man if sign else man
+        bc = mag.bit_length()
+        top = exp + bc
+        rbc = rm.bit_length()
+        if (top - re - rbc - 2) * _LOG10_2 > enough:  # every digit usable (:func:`_proven`)
+            sc = scales.get(top)
+            if sc is None:
+                sc = _digit_scale(dps, top) or False
+                if len(scales) < 4096:
+                    scales[top] = sc
+            if sc:
+                shift, p10, fixprec, thr, ehi, cut, half, cut1, half1, low, tens = sc
+                if shift >= bc:
+                    n = (mag << (shift - bc)) * p10 >> fixprec
+                else:
+                    n = (mag >> (bc - shift)) * p10 >> fixprec
+                if n >= thr:
+                    exponent = ehi
+                else:  # one digit fewer
+                    exponent = ehi - 1
+                    cut = cut1
+                    half = half1
+                D, rem = divmod(n, cut)
+                if rem >= half:  # the first digit cut is 5 or more: round half up
+                    D += 1
+                    if D == tens:  # a run of nines carried into the next power of ten
+                        D //= 10
+                        exponent += 1
+                digits = str(D)
+                if low < exponent < dps:  # fixed point near unit magnitude
+                    if exponent < 0:
+                        text = (
+                            _ZEROS[-exponent] if exponent > -64 else "0." + "0" * (-exponent - 1)
+                        ) + digits
+                    else:
+                        text = f"{digits[: exponent + 1]}.{digits[exponent + 1 :]}"
+                elif exponent > 0:
+                    text = f"{digits[:1]}.{digits[1:]}e+{exponent}"
+                else:
+                    text = f"{digits[:1]}.{digits[1:]}e{exponent}"
+                k = exponent + 1 - dps
+                if sign:
+                    text = "-" + text
+                    D = -D
+            else:
+                text, dk = _nstr((sign, mag, exp, bc), dps)
+                if dk is None:  # huge exponents: mpmath's own path
+                    return None
+                D, k = dk
+        else:
+            text, dk = _proven_raw((sign, mag, exp, bc), (0, rm, re, rbc), dps)
+            if dk is None:
+                return None
+            D, k = dk
+        texts.append(text)
+        items.append((k, D, exp, man, re, rm))
+        if k < b:
+            b = k
+        if exp < a:
+            a = exp
+        if re < a:
+            a = re
+    # the largest |D 10**k - x| + r, all on the scale 2**a 10**b (verify.rounding.largest_bound)
+    scale10 = _POW10.get(-b) or _pow10(-b)
+    best = -1
+    for k, D, exp, man, re, rm in items:
+        A = (D if k == b else D * (_POW10.get(k - b) or _pow10(k - b))) << -a
+        num = abs(A - ((man * scale10) << (exp - a))) + ((rm * scale10) << (re - a))
+        if num > best:
+            best = num
+    return tuple(texts), _scaled_bound_text(best, a, b, 2)
+
+
+def _digit_scale(dps: int, top: int) -> tuple | None:
+    """What :func:`_row_of_balls` needs to print a number ``s`` with ``2**(top-1) <= |s| <
+    2**top`` as :func:`_nstr` does: the truncated digits are ``n = (|man| >> (bc - shift)) p10
+    >> fixprec`` (:func:`_scale`, ``shift = bitprec``: the same integer as :func:`_nstr`'s), and
+    ``n`` has ``c`` or ``c - 1`` digits, ``c`` those of ``2**top 10**fixdps``, told apart by
+    ``thr = 10**(c-1)``; ``ehi = c - fixdps - 1`` is the decimal exponent with ``c`` digits, ``cut
+    = 10**(c - dps)`` (half of it ``half``) what the last printed digit stands for (``cut1``,
+    ``half1`` with ``c - 1`` digits), ``low`` the least exponent printed in fixed point and
+    ``tens = 10**dps``.  ``None`` where :func:`_nstr`'s own steps serve: huge exponents, no
+    fixed-point scale, or fewer than ``dps + 1`` digits."""
+    scale = _scale(dps, top)
+    if scale is None:
+        return None
+    bitprec, fixprec, fixdps, p10, low = scale
+    if not fixprec:
+        return None
+    c = len(str((1 << top) * p10)) if top >= 0 else len(str(p10 >> -top))
+    # n >= 2**(top-1) 10**fixdps - 3 >= 10**(c-2) and n < 2**top 10**fixdps < 10**c: c - 1
+    # or c digits; the rounding needs at least dps + 1 of them
+    if c - 1 <= dps:
+        return None
+    return (
+        bitprec,
+        p10,
+        fixprec,
+        _pow10(c - 1),
+        c - fixdps - 1,
+        _pow10(c - dps),
+        _pow10(c - dps) // 2,
+        _pow10(c - 1 - dps),
+        _pow10(c - 1 - dps) // 2,
+        low,
+        _pow10(dps),
+    )
+
+
+#: the scales of :func:`_row_of_balls` by digits, then by ``exponent + bitcount`` (``False``
+#: where :func:`_nstr`'s own steps serve)
+_ROW_SCALES: dict[int, dict[int, tuple | bool]] = {}
+#: ``_ZEROS[j]``: the fixed-point head ``"0.0...0"`` (``j - 1`` zeros) of a number whose leading
+#: digit stands for ``10**-j``
+_ZEROS = ("",) + tuple("0." + "0" * i for i in range(63))
 
 
 def _raw_max(rads: tuple) -> tuple:

@@ -85,7 +85,7 @@ def largest_bound(items) -> str | None:
         num = (abs(A + B) if xs else abs(A - B)) + ((rm * scale10) << (re - a))
         if num > best:
             best = num
-    return None if best < 0 else _bound_text(best, scale10 << -a, 2)
+    return None if best < 0 else _scaled_bound_text(best, a, b, 2)
 
 
 def _error_parts(text, x, radius) -> tuple[int, int] | None:
@@ -138,19 +138,44 @@ def _bound_text(num: int, den: int, digits: int) -> str:
     """:func:`bound_text` of ``num / den`` (``num >= 0``, ``den > 0``, not necessarily reduced)."""
     if num == 0:
         return "0"
-    # the exponent e with 10**e <= bound < 10**(e+1): estimated from the bit lengths, then fixed
-    e = math.floor((num.bit_length() - den.bit_length()) * _LOG10_2)
-    while not (num >= den * _pow10(e) if e >= 0 else num * _pow10(-e) >= den):
-        e -= 1
-    while num >= den * _pow10(e + 1) if e >= -1 else num * _pow10(-e - 1) >= den:
-        e += 1
+    # e: 10**e <= num/den < 10**(e+1).  Start from e <= that one: num/den > 2**(d-1) with d the
+    # difference of the bit lengths, and 10**e' <= 2**(d-1) for the e' below; the true e is e'
+    # or e' + 1 (num/den < 2**(d+1), and 2 log10(2) < 1)
+    e = math.floor((num.bit_length() - den.bit_length() - 1) * _LOG10_2)
     s = digits - 1 - e
     if s >= 0:
-        mant = -((-num * _pow10(s)) // den)  # ceiling
+        mant = -((-num * (_POW10.get(s) or _pow10(s))) // den)  # ceiling
     else:
-        mant = -((-num) // (den * _pow10(-s)))
-    if mant >= _pow10(digits):  # rounded up to the next power of ten
-        mant //= 10
+        mant = -((-num) // (den * (_POW10.get(-s) or _pow10(-s))))
+    # too large by a factor 10 where e was one too small, and 10**digits where the ceiling
+    # carried into the next power of ten: ceil(ceil(y) / 10) = ceil(y / 10)
+    top = _POW10.get(digits) or _pow10(digits)
+    while mant >= top:
+        mant = -(-mant // 10)
+        e += 1
+    head = str(mant)
+    return f"{head[0]}.{head[1:]}e{e}" if digits > 1 else f"{head}e{e}"
+
+
+def _scaled_bound_text(num: int, a: int, b: int, digits: int) -> str:
+    """:func:`bound_text` of ``num 2**a 10**b`` (``num >= 0``): :func:`_bound_text` without the
+    long division where the bound is a few digits on the scale it was computed on."""
+    if num == 0:
+        return "0"
+    # e <= the exponent of the leading digit, and at most one or two below it: num 2**a 10**b >=
+    # 2**(bits-1+a) 10**b (the margin keeps a rounded product off the next integer)
+    e = math.floor((num.bit_length() - 1 + a) * _LOG10_2 - 1e-9) + b
+    t = b + digits - 1 - e  # the digits' scale: ceil(num 2**a 10**t)
+    if t >= 0:
+        X = num * (_POW10.get(t) or _pow10(t))
+        mant = X << a if a >= 0 else -((-X) >> -a)
+    elif a >= 0:
+        mant = -((-(num << a)) // (_POW10.get(-t) or _pow10(-t)))
+    else:
+        mant = -((-num) // ((_POW10.get(-t) or _pow10(-t)) << -a))
+    top = _POW10.get(digits) or _pow10(digits)
+    while mant >= top:  # e below the leading digit, or the ceiling carried: ceil(ceil(y)/10)
+        mant = -(-mant // 10)
         e += 1
     head = str(mant)
     return f"{head[0]}.{head[1:]}e{e}" if digits > 1 else f"{head}e{e}"
