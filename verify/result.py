@@ -317,6 +317,20 @@ class _FromBalls(Boundary):
                 raw.append((dk, xv, rv))
         return tuple(texts), raw
 
+    def printed(self) -> tuple:
+        """:meth:`Boundary.printed`; a fresh row is written by :func:`_row_of_balls` straight
+        away (the texts and the bound kept, as :attr:`_printed` and :attr:`_error_bound` keep
+        them)."""
+        d = self.__dict__
+        if "_printed" not in d and "_balls" in d:
+            row = _row_of_balls(d["_balls"], d["digits"])
+            if row is not None:
+                texts, bound = row
+                d["_printed"] = (texts, None)
+                d["_error_bound"] = bound = bound if d["certified"] else None
+                return (*texts, bound)
+        return (*self._printed[0], self._error_bound)
+
     @_once
     def _error_bound(self) -> str | None:
         if "_balls" not in self.__dict__:
@@ -363,7 +377,6 @@ def _row_of_balls(balls, dps: int) -> tuple[tuple, str | None] | None:
     scales = _ROW_SCALES.get(dps)
     if scales is None:
         scales = _ROW_SCALES[dps] = {}
-    enough = dps + 1e-9
     texts = []
     items = []
     b = a = 0  # the common scale 2**a 10**b of the errors
@@ -382,55 +395,49 @@ def _row_of_balls(balls, dps: int) -> tuple[tuple, str | None] | None:
         mag = -man if sign else man
         bc = mag.bit_length()
         top = exp + bc
+        sc = scales.get(top)
+        if sc is None:
+            sc = _digit_scale(dps, top) or False
+            if len(scales) < 4096:
+                scales[top] = sc
         rbc = rm.bit_length()
-        if (top - re - rbc - 2) * _LOG10_2 > enough:  # every digit usable (:func:`_proven`)
-            sc = scales.get(top)
-            if sc is None:
-                sc = _digit_scale(dps, top) or False
-                if len(scales) < 4096:
-                    scales[top] = sc
-            if sc:
-                shift, p10, fixprec, thr, ehi, cut, half, cut1, half1, low, tens = sc
-                if shift >= bc:
-                    n = (mag << (shift - bc)) * p10 >> fixprec
-                else:
-                    n = (mag >> (bc - shift)) * p10 >> fixprec
-                if n >= thr:
-                    exponent = ehi
-                else:  # one digit fewer
-                    exponent = ehi - 1
-                    cut = cut1
-                    half = half1
-                D, rem = divmod(n, cut)
-                if rem >= half:  # the first digit cut is 5 or more: round half up
-                    D += 1
-                    if D == tens:  # a run of nines carried into the next power of ten
-                        D //= 10
-                        exponent += 1
-                digits = str(D)
-                if low < exponent < dps:  # fixed point near unit magnitude
-                    if exponent < 0:
-                        text = (
-                            _ZEROS[-exponent] if exponent > -64 else "0." + "0" * (-exponent - 1)
-                        ) + digits
-                    else:
-                        text = f"{digits[: exponent + 1]}.{digits[exponent + 1 :]}"
-                elif exponent > 0:
-                    text = f"{digits[:1]}.{digits[1:]}e+{exponent}"
-                else:
-                    text = f"{digits[:1]}.{digits[1:]}e{exponent}"
-                k = exponent + 1 - dps
-                if sign:
-                    text = "-" + text
-                    D = -D
+        if sc and re + rbc <= sc[0]:  # every digit usable: |x| / (2 rad) > 2 10**dps
+            lim, shift, p10, fixprec, thr, ehi, cut, half, cut1, half1, low, tens = sc
+            if shift >= bc:
+                n = (mag << (shift - bc)) * p10 >> fixprec
             else:
-                text, dk = _nstr((sign, mag, exp, bc), dps)
-                if dk is None:  # huge exponents: mpmath's own path
-                    return None
-                D, k = dk
-        else:
+                n = (mag >> (bc - shift)) * p10 >> fixprec
+            if n >= thr:
+                exponent = ehi
+            else:  # one digit fewer
+                exponent = ehi - 1
+                cut = cut1
+                half = half1
+            D, rem = divmod(n, cut)
+            if rem >= half:  # the first digit cut is 5 or more: round half up
+                D += 1
+                if D == tens:  # a run of nines carried into the next power of ten
+                    D //= 10
+                    exponent += 1
+            digits = str(D)
+            if low < exponent < dps:  # fixed point near unit magnitude
+                if exponent < 0:
+                    text = (
+                        _ZEROS[-exponent] if exponent > -64 else "0." + "0" * (-exponent - 1)
+                    ) + digits
+                else:
+                    text = f"{digits[: exponent + 1]}.{digits[exponent + 1 :]}"
+            elif exponent > 0:
+                text = f"{digits[:1]}.{digits[1:]}e+{exponent}"
+            else:
+                text = f"{digits[:1]}.{digits[1:]}e{exponent}"
+            k = exponent + 1 - dps
+            if sign:
+                text = "-" + text
+                D = -D
+        else:  # fewer digits, or no kept scale: :func:`_proven_raw` (its own test first)
             text, dk = _proven_raw((sign, mag, exp, bc), (0, rm, re, rbc), dps)
-            if dk is None:
+            if dk is None:  # huge exponents: mpmath's own path
                 return None
             D, k = dk
         texts.append(text)
@@ -454,7 +461,8 @@ def _row_of_balls(balls, dps: int) -> tuple[tuple, str | None] | None:
 
 def _digit_scale(dps: int, top: int) -> tuple | None:
     """What :func:`_row_of_balls` needs to print a number ``s`` with ``2**(top-1) <= |s| <
-    2**top`` as :func:`_nstr` does: the truncated digits are ``n = (|man| >> (bc - shift)) p10
+    2**top`` as :func:`_nstr` does: the largest binary exponent of a radius that leaves every
+    digit usable, then the truncated digits are ``n = (|man| >> (bc - shift)) p10
     >> fixprec`` (:func:`_scale`, ``shift = bitprec``: the same integer as :func:`_nstr`'s), and
     ``n`` has ``c`` or ``c - 1`` digits, ``c`` those of ``2**top 10**fixdps``, told apart by
     ``thr = 10**(c-1)``; ``ehi = c - fixdps - 1`` is the decimal exponent with ``c`` digits, ``cut
@@ -474,6 +482,9 @@ def _digit_scale(dps: int, top: int) -> tuple | None:
     if c - 1 <= dps:
         return None
     return (
+        # re + rbc <= lim (a radius below 2**lim): |x| / (2 rad) > 2**(top - 2 - lim) >= 2
+        # 10**dps, every digit usable (and :func:`_proven`'s own test passes)
+        top - 3 - math.ceil(dps * _LOG2_10),
         bitprec,
         p10,
         fixprec,
