@@ -1,4 +1,4 @@
-"""The one-function paths for certified edges of few digits give the very balls of the general path.
+"""The one-function paths for certified edges give the very balls of the general path.
 
 :func:`verify.undamped._lean` (no friction) and :func:`verify.hump._lean_normal` (the normal form
 with friction) fold the float start, the one interval Newton test and the result into one
@@ -37,7 +37,7 @@ def _same(fast, slow):
         assert _balls(fast) == _balls(slow)
 
 
-@pytest.mark.parametrize("digits", [5, 12, 15, 20, 26])
+@pytest.mark.parametrize("digits", [5, 12, 15, 20, 26, 50, 120, 400])
 @pytest.mark.parametrize("order", [1, 2, 3, 6])
 def test_undamped_lean_is_general(monkeypatch, order, digits):
     for m in DEPTHS:
@@ -49,7 +49,7 @@ def test_undamped_lean_is_general(monkeypatch, order, digits):
 
 
 @pytest.mark.parametrize("damping", ["exact", "paper"])
-@pytest.mark.parametrize("digits", [5, 15, 26])
+@pytest.mark.parametrize("digits", [5, 15, 26, 50, 120])
 @pytest.mark.parametrize("order", [1, 2, 3, 4])
 def test_friction_lean_is_general(monkeypatch, order, digits, damping):
     for m in ("0.05", "3/10", "0.6", "0.9", "0.999"):
@@ -82,6 +82,7 @@ def test_lean_paths_are_taken(monkeypatch):
             return out
 
         monkeypatch.setattr(mod, name, spy)
-    boundary(3, "3/10", digits=15)
-    boundary(3, "3/10", Q=7, digits=15)
-    assert used == [("_lean", True), ("_lean_normal", True)]
+    for digits in (15, 120):
+        boundary(3, "3/10", digits=digits)
+        boundary(3, "3/10", Q=7, digits=digits)
+    assert used == [("_lean", True), ("_lean_normal", True)] * 2

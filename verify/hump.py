@@ -664,23 +664,23 @@ def _hump_near_one(n, P, fl, b, C, E0, check: bool = True) -> _Hump:
     )
 
 
-#: up to this many bits the float edges already hold the half of the accuracy that the one
-#: interval Newton test doubles (:func:`verify.certify.quick_root` takes no midpoint step)
-_LEAN_BITS = 94
+#: up to this many bits the friction edges go through :func:`_lean_normal` (above, Python's
+#: bookkeeping is a negligible part of the work)
+_LEAN_BITS = 4096
 _START_BITS = 50  # quick_root's start_bits
 
 
 def _lean_normal(req: Request, bits: int) -> Boundary | None:
-    """The normal form with friction for a request of few digits (``bits <= _LEAN_BITS``, the
-    paper's system) in one function: the steps of :func:`hump_normal` and :func:`_solve_hump`
-    where everything succeeds at once -- the bracket proven by the two evaluations with both
-    signs, both float edges proven by the one interval Newton test of
-    :func:`verify.certify.quick_root` (the same balls), the shape by ``D'' < 0`` on the whole
-    bracket (the first test of :func:`_unimodal_shape`) -- and the arithmetic of
-    :func:`verify.enclosure.edges_result`.  ``None`` where a step does not succeed at once; the
+    """The normal form with friction (``bits <= _LEAN_BITS``, the paper's system) in one
+    function: the steps of :func:`hump_normal` and :func:`_solve_hump` where everything succeeds
+    at once -- the bracket proven by the two evaluations with both signs, both float edges
+    refined and proven by the steps of :func:`verify.certify.quick_root` (the same balls: the
+    parameters at each precision as ``hump_normal``'s ``args`` gives them), the shape by ``D''
+    < 0`` on the whole bracket (the first test of :func:`_unimodal_shape`) -- and the arithmetic
+    of :func:`verify.enclosure.edges_result`.  ``None`` where a step does not succeed at once; the
     caller then runs the general path, which repeats these steps and goes on from there."""
     n = req.order
-    D0, D1, D2, _, E0 = _normal_forms(-1 if n % 2 else 1)
+    D0, D1, D2, D01, E0 = _normal_forms(-1 if n % 2 else 1)
     work = bits + QUICK_GUARD
     top = work if work > 80 else 80
     old = ctx.prec
@@ -699,54 +699,77 @@ def _lean_normal(req: Request, bits: int) -> Boundary | None:
         a = max(fa - max(span * 1e-6, abs(fa) * 1e-12, 1e-300), -_HALF_PI)
         b = min(fb + max(span * 1e-6, abs(fb) * 1e-12, 1e-300), _HALF_PI)
         A, B = arb(a), arb(b)  # floats: exact
+        near = (c, pt.r2, pt.u, pt.beta, pt.g)
+        cache = {}
+
+        def args(prec):
+            """``(c, r2, u, beta, g)`` at ``prec`` bits, as hump_normal's ``args``: those of the
+            proof's precision as they are, or rounded from there (AtPrecision, rounded=True)."""
+            got = cache.get(prec)
+            if got is None:
+                if top <= 2 * prec + 64:
+                    got = near
+                else:
+                    ctx.prec = prec + 12
+                    p = _rounded_params(pt, prec)
+                    got = (+c, p.r2, p.u, p.beta, p.g)
+                cache[prec] = got
+            return got
+
+        c64, _, _, beta, _ = low = args(64)
+        r = pt.r if low is near else _rounded_params(pt, 64).r
         ctx.prec = 64
         sgn = _UNIT[sgn_of(n)]  # exact: the same balls as with the int
-        r, beta = pt.r, pt.beta
-        if not (E0(A, c, sgn, _EPS_BOTH, r, beta) < 0 and E0(B, c, sgn, _EPS_BOTH, r, beta) > 0):
+        if not (
+            E0(A, c64, sgn, _EPS_BOTH, r, beta) < 0 and E0(B, c64, sgn, _EPS_BOTH, r, beta) > 0
+        ):
             return None
         lo, hi, tp = fl["lo"], fl["hi"], fl["top"]
         if not (fl["dtop"] > 0 and a < lo < tp < hi < b):  # (NaN compares false)
             return None
-        args = (c, pt.r2, pt.u, beta, pt.g)
         floor = theta_floor(bits, n)
-        rad = _RAD
         tol = pow2(-bits)
         shift = n * math.pi / 2
-        ctx.prec = work
+        need = (bits + 4) // 2 + 1
+        Tp = arb(tp)
+        balls = []
         # the lower edge: a zero of D; the upper one: of -D (quick_root's F and F')
-        x = arb(lo)
-        size = abs(x)
-        if floor > size:
-            size = floor
-        X = arb(x, (size * rad).abs_upper())
-        dX = D1(X, *args)
-        if dX.contains(0) or not dX.is_finite():
-            return None
-        N1 = x - D0(x, *args) / dX
-        if (
-            not X.contains_interior(N1)
-            or not N1.rad()
-            <= (arb(max(min(abs(lo), abs(lo + shift)), floor, 1e-300)) * tol).abs_lower()
-        ):
-            return None
-        x = arb(hi)
-        size = abs(x)
-        if floor > size:
-            size = floor
-        X = arb(x, (size * rad).abs_upper())
-        dX = -D1(X, *args)
-        if dX.contains(0) or not dX.is_finite():
-            return None
-        N2 = x - (-D0(x, *args)) / dX
-        if (
-            not X.contains_interior(N2)
-            or not N2.rad()
-            <= (arb(max(min(abs(hi), abs(hi + shift)), floor, 1e-300)) * tol).abs_lower()
-        ):
-            return None
+        for x0, upper, left, right in ((lo, False, A, Tp), (hi, True, Tp, B)):
+            x = arb(x0)
+            acc = _START_BITS
+            while acc < need:
+                acc = min(2 * acc - 8, need + 8)
+                prec = acc + 12
+                at = args(prec)
+                ctx.prec = prec
+                f, d = D01(x, *at)
+                if upper:
+                    f, d = -f, -d
+                if not (d.is_finite() and f.is_finite()) or d.contains(0):
+                    return None
+                x = (x - f / d).mid()
+                if not left < x < right:
+                    return None
+            ctx.prec = work
+            size = abs(x)
+            if floor > size:
+                size = floor
+            X = arb(x, (size * pow2(4 - acc)).abs_upper())
+            dX = -D1(X, *near) if upper else D1(X, *near)
+            if dX.contains(0) or not dX.is_finite():
+                return None
+            N = x - (-D0(x, *near) if upper else D0(x, *near)) / dX
+            if not X.contains_interior(N):
+                return None
+            t = float(x)
+            want = arb(max(min(abs(t), abs(t + shift)), floor, 1e-300))
+            if not N.rad() <= (want * tol).abs_lower():
+                return None
+            balls.append(N)
+        N1, N2 = balls
         # the shape: D'' < 0 on all of [a, b] (_unimodal_shape's first test)
         ctx.prec = 64
-        if not (A < N1 and N1 < N2 and N2 < B and D2(A.union(B), *args) < 0):
+        if not (A < N1 and N1 < N2 and N2 < B and D2(A.union(B), *low) < 0):
             return None
         # edges_result at the roots' precision: the parameters as they are at the proof's
         # precision, else rounded from there (AtPrecision with rounded=True)
@@ -789,7 +812,6 @@ def _rounded_params(pt, prec: int):
 
 
 _HALF_PI = math.pi / 2
-_RAD = pow2(4 - _START_BITS)
 _UNIT = {1: arb(1), -1: arb(-1)}
 _HALF = arb(0.5)
 

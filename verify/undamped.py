@@ -83,7 +83,7 @@ def undamped(req: Request) -> Boundary:
     r_f, beta_f = float(pt.r), float(pt.beta)
     sgn = _UNIT[sgn_of(n)]  # exact balls (an arb times an int converts the int first)
     if bits <= _LEAN_BITS:
-        lean = _lean(req, n, bits, top, pt, ct, sgn, f_math, f_arb, df_arb, r_f, beta_f)
+        lean = _lean(req, n, bits, top, pt, ct, sgn, f_math, fd_arb, f_arb, df_arb, r_f, beta_f)
         if lean is not None:
             return lean
     rounded: dict[int, tuple] = {top: (ct, pt.r, pt.beta)}
@@ -147,35 +147,53 @@ def undamped(req: Request) -> Boundary:
     )
 
 
-#: up to this many bits the float start already holds the half of the accuracy that the one
-#: interval Newton test doubles (:func:`verify.certify.quick_root` then takes no midpoint step)
-_LEAN_BITS = 2 * _START_BITS - 6
+#: up to this many bits the edges go through :func:`_lean` (above, Python's bookkeeping is a
+#: negligible part of the work)
+_LEAN_BITS = 4096
 
 
-def _lean(req, n, bits, top, pt, ct, sgn, f_math, f_arb, df_arb, r_f, beta_f):
-    """Both edges for a request of few digits (``bits <= _LEAN_BITS``) in one function: the float
-    start, the one interval Newton test of :func:`verify.certify.quick_root` (the same balls,
-    without its general steps) and the result of :func:`verify.enclosure.edges_result` (the same
-    arithmetic).  ``None`` where a test does not succeed at once; the caller then runs the general
-    path, which repeats these steps and goes on from there."""
+def _lean(req, n, bits, top, pt, ct, sgn, f_math, fd_arb, f_arb, df_arb, r_f, beta_f):
+    """Both edges (``bits <= _LEAN_BITS``) in one function: the float start, the steps of
+    :func:`verify.certify.quick_root` -- Newton on midpoints doubling the accuracy at a precision
+    just above it, then one interval Newton test at the full precision -- on the same balls
+    (the parameters rounded from the proof's precision as :func:`undamped`'s ``args`` does it),
+    without its general steps, and the result of :func:`verify.enclosure.edges_result` (the same
+    arithmetic).  ``None`` where a step does not succeed at once; the caller then runs the
+    general path, which repeats these steps and goes on from there."""
     floor = theta_floor(bits, n)
-    rad = pow2(4 - _START_BITS)
     tol = pow2(-bits)
-    r, beta = pt.r, pt.beta
+    need = (bits + 4) // 2 + 1
+    lo_w, hi_w = _WINDOW
+    rounded = {}
     old = ctx.prec
-    ctx.prec = top
     try:
         th = []
         for eps, k in _EDGES:
             x = arb(float_edge(f_math, n, eps, r_f, beta_f))
+            acc = _START_BITS
+            while acc < need:
+                acc = min(2 * acc - 8, need + 8)
+                prec = acc + 12
+                a = rounded.get(prec)
+                if a is None:
+                    ctx.prec = prec + 12
+                    a = rounded[prec] = (+ct, +pt.r, +pt.beta)
+                ctx.prec = prec
+                f, d = fd_arb(x, a[0], sgn, k, a[1], a[2])
+                if not (d.is_finite() and f.is_finite()) or d.contains(0):
+                    return None
+                x = (x - f / d).mid()
+                if not lo_w < x < hi_w:
+                    return None
+            ctx.prec = top
             size = abs(x)
             if floor > size:
                 size = floor
-            X = arb(x, (size * rad).abs_upper())
-            dX = df_arb(X, ct, sgn, k, r, beta)
+            X = arb(x, (size * pow2(4 - acc)).abs_upper())
+            dX = df_arb(X, ct, sgn, k, pt.r, pt.beta)
             if dX.contains(0) or not dX.is_finite():
                 return None
-            N = x - f_arb(x, ct, sgn, k, r, beta) / dX
+            N = x - f_arb(x, ct, sgn, k, pt.r, pt.beta) / dX
             if not X.contains_interior(N):
                 return None
             if not N.rad() <= (arb(theta_scale(float(x), n, bits)) * tol).abs_lower():
