@@ -160,8 +160,9 @@ def test_near_thresholds():
 
 def test_the_benchmark_case_takes_the_fast_path(monkeypatch):
     """Order 3, m = 0.3, Q = 7: the shape is proven by unimodality (one call, no sign proof on
-    sub-intervals); at 15 digits by the short path's first test of it (``D'' < 0`` on the whole
-    bracket, :func:`verify.hump._lean_normal`)."""
+    sub-intervals): by the short path's first test of it (``D'' < 0`` on the whole bracket,
+    :func:`verify.hump._lean_normal`), and with the short path off by
+    :func:`verify.hump._unimodal_shape`."""
     calls = {"unimodal": [], "signs": 0, "lean": []}
     real = hump._unimodal_shape
     real_lean = hump._lean_normal
@@ -185,4 +186,9 @@ def test_the_benchmark_case_takes_the_fast_path(monkeypatch):
     for digits in (15, 50):
         b = boundary(3, "3/10", Q=7, digits=digits)
         assert b.exists and b.certified
-    assert calls["lean"] == [True] and calls["unimodal"] == [True] and calls["signs"] == 0
+    assert calls["lean"] == [True, True] and calls["unimodal"] == [] and calls["signs"] == 0
+    monkeypatch.setattr(hump, "_LEAN_BITS", 0)
+    for digits in (15, 50):
+        b = boundary(3, "3/10", Q=7, digits=digits)
+        assert b.exists and b.certified
+    assert calls["unimodal"] == [True, True] and calls["signs"] == 0
