@@ -509,3 +509,21 @@ def test_raw_numbers_of_balls_exact():
             mids, rads = b._raw
             assert mids == tuple(exact_mpf(x.mid())._mpf_ for x in balls)
             assert rads == tuple(exact_mpf(x.rad())._mpf_ for x in balls)
+
+
+def test_many_thousand_digits_print():
+    """5000 digits and more (the certified limit is 100000): the texts are those of the reference
+    (``mpmath.nstr``, Python's limit on integer-to-text conversion lifted for it), and printing
+    does not run into that limit itself."""
+    b = boundary(3, "3/10", digits=5000)
+    texts = b.printed()
+    assert str(b).count("\n") == 3 and b.error_bound() == texts[4]
+    limit = sys.get_int_max_str_digits()
+    sys.set_int_max_str_digits(0)
+    try:
+        values = (b.lower, b.upper, b.delta_lower, b.delta_upper)
+        for k, (x, r) in enumerate(zip(values, b.radii, strict=True)):
+            assert texts[k] == reference_text(x, r, 5000)
+    finally:
+        sys.set_int_max_str_digits(limit)
+    assert len(texts[0]) == 5001  # 5000 digits and the point

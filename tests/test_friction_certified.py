@@ -160,13 +160,21 @@ def test_near_thresholds():
 
 def test_the_benchmark_case_takes_the_fast_path(monkeypatch):
     """Order 3, m = 0.3, Q = 7: the shape is proven by unimodality (one call, no sign proof on
-    sub-intervals)."""
-    calls = {"unimodal": [], "signs": 0}
+    sub-intervals): by the short path's first test of it (``D'' < 0`` on the whole bracket,
+    :func:`verify.hump._lean_normal`), and with the short path off by
+    :func:`verify.hump._unimodal_shape`."""
+    calls = {"unimodal": [], "signs": 0, "lean": []}
     real = hump._unimodal_shape
+    real_lean = hump._lean_normal
 
     def unimodal(*a, **k):
         calls["unimodal"].append(real(*a, **k))
         return calls["unimodal"][-1]
+
+    def lean(*a, **k):
+        out = real_lean(*a, **k)
+        calls["lean"].append(out is not None)
+        return out
 
     def signs(*a, **k):  # pragma: no cover - must not be reached
         calls["signs"] += 1
@@ -174,6 +182,12 @@ def test_the_benchmark_case_takes_the_fast_path(monkeypatch):
 
     monkeypatch.setattr(hump, "_unimodal_shape", unimodal)
     monkeypatch.setattr(hump, "prove_sign", signs)
+    monkeypatch.setattr(hump, "_lean_normal", lean)
+    for digits in (15, 50):
+        b = boundary(3, "3/10", Q=7, digits=digits)
+        assert b.exists and b.certified
+    assert calls["lean"] == [True, True] and calls["unimodal"] == [] and calls["signs"] == 0
+    monkeypatch.setattr(hump, "_LEAN_BITS", 0)
     for digits in (15, 50):
         b = boundary(3, "3/10", Q=7, digits=digits)
         assert b.exists and b.certified

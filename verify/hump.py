@@ -42,6 +42,7 @@ from .certify import (
     ball,
     bits_for_digits,
     certified_root,
+    pow2,
     prove_sign,
     quick_root,
 )
@@ -58,7 +59,7 @@ from .enclosure import AtPrecision, edges_result, no_interval, sgn_of, theta_flo
 from .float_stage import normal_float_edges, normal_float_stage
 from .params import NEAR_ONE, NormalParams, normal_params, trace_params
 from .request import Request
-from .result import Boundary
+from .result import Boundary, from_balls
 from .system_params import normal_jets
 
 __all__ = [
@@ -663,8 +664,164 @@ def _hump_near_one(n, P, fl, b, C, E0, check: bool = True) -> _Hump:
     )
 
 
+#: up to this many bits the friction edges go through :func:`_lean_normal` (above, Python's
+#: bookkeeping is a negligible part of the work)
+_LEAN_BITS = 4096
+_START_BITS = 50  # quick_root's start_bits
+
+
+def _lean_normal(req: Request, bits: int) -> Boundary | None:
+    """The normal form with friction (``bits <= _LEAN_BITS``, the paper's system) in one
+    function: the steps of :func:`hump_normal` and :func:`_solve_hump` where everything succeeds
+    at once -- the bracket proven by the two evaluations with both signs, both float edges
+    refined and proven by the steps of :func:`verify.certify.quick_root` (the same balls: the
+    parameters at each precision as ``hump_normal``'s ``args`` gives them), the shape by ``D''
+    < 0`` on the whole bracket (the first test of :func:`_unimodal_shape`) -- and the arithmetic
+    of :func:`verify.enclosure.edges_result`.  ``None`` where a step does not succeed at once; the
+    caller then runs the general path, which repeats these steps and goes on from there."""
+    n = req.order
+    D0, D1, D2, D01, E0 = _normal_forms(-1 if n % 2 else 1)
+    work = bits + QUICK_GUARD
+    top = work if work > 80 else 80
+    old = ctx.prec
+    try:
+        # the parameters and c = n pi/2 at the proof's precision, as hump_normal's AtPrecision
+        # objects compute them (12 bits above it)
+        ctx.prec = top + 12
+        pt = normal_params(req.m, req.Q, req.damping, _ARB)
+        c = arb.pi() * n / 2
+        if float(pt.bm) < NEAR_ONE:
+            return None
+        fl = normal_float_edges(n, pt)
+        # the bracket (hump_normal's)
+        fa, fb = fl["a"], fl["b"]
+        span = max(fb - fa, 1e-300)
+        a = max(fa - max(span * 1e-6, abs(fa) * 1e-12, 1e-300), -_HALF_PI)
+        b = min(fb + max(span * 1e-6, abs(fb) * 1e-12, 1e-300), _HALF_PI)
+        A, B = arb(a), arb(b)  # floats: exact
+        near = (c, pt.r2, pt.u, pt.beta, pt.g)
+        cache = {}
+
+        def args(prec):
+            """``(c, r2, u, beta, g)`` at ``prec`` bits, as hump_normal's ``args``: those of the
+            proof's precision as they are, or rounded from there (AtPrecision, rounded=True)."""
+            got = cache.get(prec)
+            if got is None:
+                if top <= 2 * prec + 64:
+                    got = near
+                else:
+                    ctx.prec = prec + 12
+                    p = _rounded_params(pt, prec)
+                    got = (+c, p.r2, p.u, p.beta, p.g)
+                cache[prec] = got
+            return got
+
+        c64, _, _, beta, _ = low = args(64)
+        r = pt.r if low is near else _rounded_params(pt, 64).r
+        ctx.prec = 64
+        sgn = _UNIT[sgn_of(n)]  # exact: the same balls as with the int
+        if not (
+            E0(A, c64, sgn, _EPS_BOTH, r, beta) < 0 and E0(B, c64, sgn, _EPS_BOTH, r, beta) > 0
+        ):
+            return None
+        lo, hi, tp = fl["lo"], fl["hi"], fl["top"]
+        if not (fl["dtop"] > 0 and a < lo < tp < hi < b):  # (NaN compares false)
+            return None
+        floor = theta_floor(bits, n)
+        tol = pow2(-bits)
+        shift = n * math.pi / 2
+        need = (bits + 4) // 2 + 1
+        Tp = arb(tp)
+        balls = []
+        # the lower edge: a zero of D; the upper one: of -D (quick_root's F and F')
+        for x0, upper, left, right in ((lo, False, A, Tp), (hi, True, Tp, B)):
+            x = arb(x0)
+            acc = _START_BITS
+            while acc < need:
+                acc = min(2 * acc - 8, need + 8)
+                prec = acc + 12
+                at = args(prec)
+                ctx.prec = prec
+                f, d = D01(x, *at)
+                if upper:
+                    f, d = -f, -d
+                if not (d.is_finite() and f.is_finite()) or d.contains(0):
+                    return None
+                x = (x - f / d).mid()
+                if not left < x < right:
+                    return None
+            ctx.prec = work
+            size = abs(x)
+            if floor > size:
+                size = floor
+            X = arb(x, (size * pow2(4 - acc)).abs_upper())
+            dX = -D1(X, *near) if upper else D1(X, *near)
+            if dX.contains(0) or not dX.is_finite():
+                return None
+            N = x - (-D0(x, *near) if upper else D0(x, *near)) / dX
+            if not X.contains_interior(N):
+                return None
+            t = float(x)
+            want = arb(max(min(abs(t), abs(t + shift)), floor, 1e-300))
+            if not N.rad() <= (want * tol).abs_lower():
+                return None
+            balls.append(N)
+        N1, N2 = balls
+        # the shape: D'' < 0 on all of [a, b] (_unimodal_shape's first test)
+        ctx.prec = 64
+        if not (A < N1 and N1 < N2 and N2 < B and D2(A.union(B), *low) < 0):
+            return None
+        # edges_result at the roots' precision: the parameters as they are at the proof's
+        # precision, else rounded from there (AtPrecision with rounded=True)
+        ctx.prec = work
+        p = pt if work == top else _rounded_params(pt, work)
+        pi = arb.pi()
+        half = arb(n) * _HALF
+        w = p.w
+        pw = pi * w
+        hd = half * p.dinv
+        Ts = [(half + N1 / pi) / w, (half + N2 / pi) / w]
+        ds = [N1 / pw + hd, N2 / pw + hd] if not p.dinv.is_zero() else [N1 / pw, N2 / pw]
+        for T in Ts:
+            if not T.rad() <= T.abs_lower() * tol:  # pragma: no cover - guard
+                return None
+    finally:
+        ctx.prec = old
+    return from_balls(
+        Ts + ds,
+        order=n,
+        m=req.m,
+        Q=req.Q,
+        damping=req.damping,
+        digits=req.digits,
+        method="certified",
+        regime="normal form with friction",
+        system=req.system,
+    )
+
+
+def _rounded_params(pt, prec: int):
+    """``pt`` rounded to ``prec`` bits as :class:`verify.enclosure.AtPrecision` does it for a
+    lower precision (12 bits above it)."""
+    old = ctx.prec
+    ctx.prec = prec + 12
+    try:
+        return type(pt)(**{k: (+x if type(x) is arb else x) for k, x in vars(pt).items()})
+    finally:
+        ctx.prec = old
+
+
+_HALF_PI = math.pi / 2
+_UNIT = {1: arb(1), -1: arb(-1)}
+_HALF = arb(0.5)
+
+
 def normal_damped(req: Request) -> Boundary:
     bits = bits_for_digits(req.digits + 2)
+    if bits <= _LEAN_BITS and req.system is PAPER:
+        lean = _lean_normal(req, bits)
+        if lean is not None:
+            return lean
     h, P = hump_normal(req.order, req.m, req.Q, req.damping, bits, system=req.system)
     regime = "normal form with friction"
     exists, lo_root, hi_root, shape = _solve_hump(req, h, bits)

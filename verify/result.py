@@ -11,6 +11,7 @@ from dataclasses import dataclass, field, fields
 from fractions import Fraction
 
 import mpmath
+from flint import fmpz
 from mpmath.libmp import from_man_exp, to_str
 
 from analytic.system import PAPER, System
@@ -632,7 +633,7 @@ def _nstr(s: tuple, dps: int, strip: bool = False) -> tuple[str, tuple[int, int]
         n = ((man << shift) if shift >= 0 else (man >> -shift)) * p10 >> fixprec
     else:
         n = (man << exp) if exp >= 0 else (man >> -exp)
-    digits = str(n)
+    digits = _decimal(n)
     size = len(digits)
     exponent = size - fixdps - 1
     if size > dps:
@@ -642,7 +643,7 @@ def _nstr(s: tuple, dps: int, strip: bool = False) -> tuple[str, tuple[int, int]
             digits = digits[:dps]
         else:  # round half up (mpmath's rule, on its truncated digits)
             D = n // cut + 1
-            digits = str(D)
+            digits = _decimal(D)
             if len(digits) > dps:  # a run of nines carried into the next power of ten
                 digits = digits[:dps]
                 D //= 10
@@ -670,6 +671,12 @@ def _nstr(s: tuple, dps: int, strip: bool = False) -> tuple[str, tuple[int, int]
     if exponent == 0:
         return text, (D, k)
     return (f"{text}e+{exponent}" if exponent > 0 else f"{text}e{exponent}"), (D, k)
+
+
+def _decimal(n: int) -> str:
+    """The decimal digits of the integer ``n`` (``str(n)``, which Python refuses above 4300
+    digits; FLINT's conversion for long integers, subquadratic as well)."""
+    return str(n) if n.bit_length() < 14000 else fmpz(n).str()
 
 
 #: ``(bitprec, fixprec, fixdps, 10**fixdps, min_fixed)`` of :func:`_nstr` by

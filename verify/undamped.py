@@ -19,18 +19,20 @@ from functools import cache
 
 from flint import arb, ctx
 
-from .certify import QUICK_GUARD, Root, ball, bits_for_digits, certified_root, quick_root
+from .certify import QUICK_GUARD, Root, ball, bits_for_digits, certified_root, pow2, quick_root
 from .derived import backend, edge_equation, near_one_forms, order1_forms
 from .enclosure import AtPrecision, edges_result, sgn_of, theta_floor, theta_scale
 from .float_stage import float_edge
 from .inputs import as_depth, as_order
 from .params import NEAR_ONE, exact_fraction, normal_params
 from .request import Request
-from .result import Boundary
+from .result import Boundary, from_balls
 
 __all__ = ["undamped", "float_edges", "near_one_edge"]
 
 _ARB = backend("arb")
+#: the accuracy (bits) of the float start (:func:`verify.certify.quick_root`'s ``start_bits``)
+_START_BITS = 50
 _MATH = backend("math")
 
 
@@ -80,6 +82,10 @@ def undamped(req: Request) -> Boundary:
         )
     r_f, beta_f = float(pt.r), float(pt.beta)
     sgn = _UNIT[sgn_of(n)]  # exact balls (an arb times an int converts the int first)
+    if bits <= _LEAN_BITS:
+        lean = _lean(req, n, bits, top, pt, ct, sgn, f_math, fd_arb, f_arb, df_arb, r_f, beta_f)
+        if lean is not None:
+            return lean
     rounded: dict[int, tuple] = {top: (ct, pt.r, pt.beta)}
 
     def args():
@@ -138,6 +144,85 @@ def undamped(req: Request) -> Boundary:
         bits,
         "per-edge equations",
         max(lo_root.prec, hi_root.prec),
+    )
+
+
+#: up to this many bits the edges go through :func:`_lean` (above, Python's bookkeeping is a
+#: negligible part of the work)
+_LEAN_BITS = 4096
+
+
+def _lean(req, n, bits, top, pt, ct, sgn, f_math, fd_arb, f_arb, df_arb, r_f, beta_f):
+    """Both edges (``bits <= _LEAN_BITS``) in one function: the float start, the steps of
+    :func:`verify.certify.quick_root` -- Newton on midpoints doubling the accuracy at a precision
+    just above it, then one interval Newton test at the full precision -- on the same balls
+    (the parameters rounded from the proof's precision as :func:`undamped`'s ``args`` does it),
+    without its general steps, and the result of :func:`verify.enclosure.edges_result` (the same
+    arithmetic).  ``None`` where a step does not succeed at once; the caller then runs the
+    general path, which repeats these steps and goes on from there."""
+    floor = theta_floor(bits, n)
+    tol = pow2(-bits)
+    need = (bits + 4) // 2 + 1
+    lo_w, hi_w = _WINDOW
+    rounded = {}
+    old = ctx.prec
+    try:
+        th = []
+        for eps, k in _EDGES:
+            x = arb(float_edge(f_math, n, eps, r_f, beta_f))
+            acc = _START_BITS
+            while acc < need:
+                acc = min(2 * acc - 8, need + 8)
+                prec = acc + 12
+                a = rounded.get(prec)
+                if a is None:
+                    ctx.prec = prec + 12
+                    a = rounded[prec] = (+ct, +pt.r, +pt.beta)
+                ctx.prec = prec
+                f, d = fd_arb(x, a[0], sgn, k, a[1], a[2])
+                if not (d.is_finite() and f.is_finite()) or d.contains(0):
+                    return None
+                x = (x - f / d).mid()
+                if not lo_w < x < hi_w:
+                    return None
+            ctx.prec = top
+            size = abs(x)
+            if floor > size:
+                size = floor
+            X = arb(x, (size * pow2(4 - acc)).abs_upper())
+            dX = df_arb(X, ct, sgn, k, pt.r, pt.beta)
+            if dX.contains(0) or not dX.is_finite():
+                return None
+            N = x - f_arb(x, ct, sgn, k, pt.r, pt.beta) / dX
+            if not X.contains_interior(N):
+                return None
+            if not N.rad() <= (arb(theta_scale(float(x), n, bits)) * tol).abs_lower():
+                return None
+            th.append(N)
+        if float(th[1].mid()) < float(th[0].mid()):
+            th.reverse()
+        # edges_result (theta given, no friction: no dinv), at the proof's precision
+        pi = arb.pi()
+        half = arb(n) * _HALF
+        w = pt.w
+        pw = pi * w
+        Ts = [(half + t / pi) / w for t in th]
+        ds = [t / pw for t in th]
+        for T in Ts:
+            if not T.rad() <= T.abs_lower() * tol:  # pragma: no cover - guard
+                return None
+    finally:
+        ctx.prec = old
+    return from_balls(
+        Ts + ds,
+        order=n,
+        m=req.m,
+        Q=req.Q,
+        damping=req.damping,
+        digits=req.digits,
+        method="certified",
+        regime="per-edge equations",
+        system=req.system,
     )
 
 

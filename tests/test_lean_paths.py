@@ -1,0 +1,88 @@
+"""The one-function paths for certified edges give the very balls of the general path.
+
+:func:`verify.undamped._lean` (no friction) and :func:`verify.hump._lean_normal` (the normal form
+with friction) fold the float start, the one interval Newton test and the result into one
+function where the general path (:func:`verify.certify.quick_root`, :func:`verify.hump._solve_hump`,
+:func:`verify.enclosure.edges_result`) takes the same steps through more calls.  The reference is
+the general path itself, with the short path switched off: every ball (midpoint and radius, bit
+for bit), every printed text and the error bound must be the same.  Where a step of the short path
+does not succeed at once it hands over to the general path, so the cases include depths next to
+``m = 1`` and ``m -> 0``, closings, and friction near a threshold.
+"""
+
+from __future__ import annotations
+
+import pytest
+
+import verify.hump as hump
+import verify.undamped as undamped
+from verify.solve import boundary
+
+DEPTHS = ("1e-12", "1e-6", "0.05", "3/10", "3/5", "0.77", "0.9", "0.999", "0.999999")
+
+
+def _balls(b):
+    """Midpoints and radii of the four balls as exact integer pairs."""
+    out = []
+    for x in b._balls:
+        out.append(tuple(int(v) for v in x.mid().man_exp()))
+        out.append(tuple(int(v) for v in x.rad().man_exp()) if x.rad() != 0 else (0, 0))
+    return tuple(out)
+
+
+def _same(fast, slow):
+    assert fast.as_json() == slow.as_json()
+    assert str(fast) == str(slow)
+    if "_balls" in fast.__dict__ and "_balls" in slow.__dict__:
+        assert _balls(fast) == _balls(slow)
+
+
+@pytest.mark.parametrize("digits", [5, 12, 15, 20, 26, 50, 120, 400])
+@pytest.mark.parametrize("order", [1, 2, 3, 6])
+def test_undamped_lean_is_general(monkeypatch, order, digits):
+    for m in DEPTHS:
+        fast = boundary(order, m, digits=digits)
+        with monkeypatch.context() as mp:
+            mp.setattr(undamped, "_LEAN_BITS", 0)
+            slow = boundary(order, m, digits=digits)
+        _same(fast, slow)
+
+
+@pytest.mark.parametrize("damping", ["exact", "paper"])
+@pytest.mark.parametrize("digits", [5, 15, 26, 50, 120])
+@pytest.mark.parametrize("order", [1, 2, 3, 4])
+def test_friction_lean_is_general(monkeypatch, order, digits, damping):
+    for m in ("0.05", "3/10", "0.6", "0.9", "0.999"):
+        for Q in ("3/5", "2", "7", "30", "1000"):
+            try:
+                fast = boundary(order, m, Q=Q, damping=damping, digits=digits)
+            except ArithmeticError as exc:  # too close to a threshold: both paths refuse alike
+                fast = repr(exc)
+            with monkeypatch.context() as mp:
+                mp.setattr(hump, "_LEAN_BITS", 0)
+                try:
+                    slow = boundary(order, m, Q=Q, damping=damping, digits=digits)
+                except ArithmeticError as exc:
+                    slow = repr(exc)
+            if isinstance(fast, str) or isinstance(slow, str):
+                assert fast == slow
+            else:
+                _same(fast, slow)
+
+
+def test_lean_paths_are_taken(monkeypatch):
+    """The short paths run where they are meant to (else the tests above compare nothing)."""
+    used = []
+    for mod, name in ((undamped, "_lean"), (hump, "_lean_normal")):
+        real = getattr(mod, name)
+
+        def spy(*a, real=real, name=name):
+            out = real(*a)
+            used.append((name, out is not None))
+            return out
+
+        monkeypatch.setattr(mod, name, spy)
+    for digits in (15, 120):
+        boundary(3, "3/10", digits=digits)
+        boundary(3, "3/10", Q=7, digits=digits)
+    assert used == [("_lean", True), ("_lean_normal", True)] * 2
