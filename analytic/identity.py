@@ -26,6 +26,7 @@ __all__ = [
     "exponential_polynomial",
     "factor_between",
     "prove_multiple",
+    "vanishes",
     "random_points",
     "DOMAIN",
 ]
@@ -391,6 +392,12 @@ def _symbolic_zero(expr: sp.Expr) -> bool:
         return (elems[0] == 0) if elems is not None else sp.cancel(z) == 0
     except (TypeError, ValueError, NotImplementedError, sp.PolynomialError):  # pragma: no cover
         return False
+
+
+def vanishes(expr: sp.Expr) -> bool:
+    """Whether ``expr`` vanishes identically, decided exactly by the symbolic route of
+    :func:`prove_zero` alone (``False`` where that route does not reach zero; no numeric look)."""
+    return _symbolic_zero(sp.sympify(expr))
 
 
 def random_points(symbols, count: int, seed: int = 20130101):

@@ -352,7 +352,8 @@ def stationary_initial_condition(kind: EdgeKind) -> sp.Expr:
     """
     seg1 = edge_system(EdgeKind(kind)).segments[0]
     ratio = seg1.dphi.subs(S.t, 0) / seg1.phi.subs(S.t, 0)
-    return sp.simplify(ratio)
+    # the amplitude cancels; sin/cos of one argument becomes tan (or 1/tan)
+    return sp.trigsimp(sp.cancel(ratio))
 
 
 def _initial_conditions() -> Chain:

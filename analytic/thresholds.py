@@ -94,13 +94,15 @@ def _scaled_model(n, damping: str, system=None) -> dict[str, sp.Expr]:
     par = {k.name: v for k, v in parameters(damping).items()}
     sub = {Q_SYM: 1 / (LAM * S.m**p)}
     N, _ = order_form(_nsym(n), _parity(n))
-    env = {r2: par["r^2"], S.beta: par["beta"], S.g: par["g"]}
     # r^2, beta, g and Q do not depend on theta: differentiate the short normal form first and
-    # substitute after (the same function as the derivative of the substituted N, far cheaper)
-    dN = sp.diff(N, S.theta).subs(env).subs(sub)
-    N = N.subs(env).subs(sub)
+    # substitute after (the same function as the derivative of the substituted N, far cheaper).
+    # Symbols replaced by expressions: ``xreplace`` (one walk, no pattern matching), with ``Q``
+    # replaced inside the parameters first -- the composition of the two substitutions
+    env = {k: v.xreplace(sub) for k, v in ((r2, par["r^2"]), (S.beta, par["beta"]), (S.g, par["g"]))}
+    dN = sp.diff(N, S.theta).xreplace(env).xreplace(sub)
+    N = N.xreplace(env).xreplace(sub)
     x = _nsym(n) * sp.pi / 2 + S.theta
-    T0 = (x / (sp.pi * par["w"])).subs(sub)
+    T0 = (x / (sp.pi * par["w"])).xreplace(sub)
     w_undamped = {k.name: v for k, v in parameters(Damping.NONE).items()}["w"]
     return {
         "N": N,
