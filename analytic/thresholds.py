@@ -98,7 +98,8 @@ def _scaled_model(n, damping: str, system=None) -> dict[str, sp.Expr]:
     # substitute after (the same function as the derivative of the substituted N, far cheaper).
     # Symbols replaced by expressions: ``xreplace`` (one walk, no pattern matching), with ``Q``
     # replaced inside the parameters first -- the composition of the two substitutions
-    env = {k: v.xreplace(sub) for k, v in ((r2, par["r^2"]), (S.beta, par["beta"]), (S.g, par["g"]))}
+    env = {r2: par["r^2"], S.beta: par["beta"], S.g: par["g"]}
+    env = {k: v.xreplace(sub) for k, v in env.items()}
     dN = sp.diff(N, S.theta).xreplace(env).xreplace(sub)
     N = N.xreplace(env).xreplace(sub)
     x = _nsym(n) * sp.pi / 2 + S.theta
@@ -215,7 +216,7 @@ class _Tangency:
     """The tangency ``N = dN/dtheta = 0`` solved for ``(lam(m), u(m))``, order by order."""
 
     def __init__(self, n, damping: str, system):
-        self.p = p = _power(n, system)
+        self.p = _power(n, system)
         self.ring = ring = LaurentRing(_gens(n, (), system))
         self.model = _scaled_model(n, damping, system)
         A, B = _leading_balance(n, damping, ring, system)
