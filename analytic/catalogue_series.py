@@ -11,6 +11,8 @@ gives the engine's next term, which the paper does not have.
 
 from __future__ import annotations
 
+from functools import lru_cache
+
 import sympy as sp
 
 from .catalogue import Row, row
@@ -57,12 +59,18 @@ def compare_through(printed: sp.Expr, derived: sp.Expr, var: sp.Symbol, order: i
     return True, None, None, None, verdicts
 
 
+@lru_cache(maxsize=256)
+def _simplified(c: sp.Expr) -> sp.Expr:
+    """``simplify(c)``, once per coefficient (rows ask for the same next terms)."""
+    return sp.simplify(c)
+
+
 def next_term(expr: sp.Expr, var: sp.Symbol, after: int) -> sp.Expr:
     """The lowest non-zero term of ``expr`` beyond ``var**after``."""
     e = sp.expand(expr)
     deg = sp.Poly(e, var).degree()
     for k in range(after + 1, deg + 1):
-        c = sp.simplify(e.coeff(var, k))
+        c = _simplified(e.coeff(var, k))
         if c != 0:
             return c * var**k
     return sp.Integer(0)
@@ -501,7 +509,8 @@ def _near_compare(n: int, printed_Tav: sp.Expr, order: int):
     sub = {m_min: m * nu ** sp.Rational(1, p_)}
     texts, verdicts, ok_all = [], [], True
     for name, sign in (("lower", -1), ("upper", 1)):
-        pr = sp.simplify(_with_sign(printed_Tav, sign).subs(sub))
+        # expanded, the radicand is m^(2p) s^2 and its root m^p s (m, s positive)
+        pr = sp.expand(_with_sign(printed_Tav, sign).subs(sub))
         pr = sp.expand(sp.powdenest(pr, force=True))
         ok, k, a, b, vs = compare_through(pr, d[name]["Tav"], m, order)
         verdicts += vs

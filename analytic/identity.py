@@ -26,6 +26,7 @@ __all__ = [
     "exponential_polynomial",
     "factor_between",
     "prove_multiple",
+    "vanishes",
     "random_points",
     "DOMAIN",
 ]
@@ -82,6 +83,21 @@ class Verdict:
 _TRIG = (sp.sin, sp.cos, sp.tan, sp.sinh, sp.cosh, sp.tanh)
 
 
+@functools.lru_cache(maxsize=4096)
+def _trig_as_exponentials(f: sp.Expr) -> sp.Expr:
+    """One trigonometric or hyperbolic function value rewritten as exponentials."""
+    return f.rewrite(_TRIG, sp.exp)
+
+
+def _as_exponentials(e: sp.Expr) -> sp.Expr:
+    """``e.rewrite(_TRIG, exp)``: each function value of ``_TRIG`` rewritten once (remembered
+    across expressions) and put in place by one ``xreplace`` -- the same expression."""
+    found = e.atoms(*_TRIG)
+    if not found:
+        return e
+    return e.xreplace({f: _trig_as_exponentials(f) for f in found})
+
+
 def _z_mapping(exprs):
     """The expressions as polynomials in fresh symbols for the exponentials, and the map back
     (see :func:`exponential_polynomial`)."""
@@ -92,11 +108,12 @@ def _z_mapping(exprs):
 def _z_mapping_of(exprs: tuple):
     """:func:`_z_mapping` of a tuple of sympy expressions, remembered: a check looks at the same
     pair first for a structural screen, then for the exact factor."""
-    rewritten = [e.rewrite(_TRIG, sp.exp) for e in exprs]
+    rewritten = [_as_exponentials(e) for e in exprs]
     exps = set().union(*(e.atoms(sp.exp) for e in rewritten))
+    terms = {ex: sp.Add.make_args(sp.expand(ex.args[0])) for ex in exps}
     monos: dict[sp.Expr, list[sp.Rational]] = {}
     for ex in exps:
-        for term in sp.Add.make_args(sp.expand(ex.args[0])):
+        for term in terms[ex]:
             c, rest = term.as_coeff_Mul()
             monos.setdefault(rest, []).append(sp.Rational(c))
     zs = {}
@@ -110,7 +127,7 @@ def _z_mapping_of(exprs: tuple):
     rep = {}
     for ex in exps:
         val = sp.Integer(1)
-        for term in sp.Add.make_args(sp.expand(ex.args[0])):
+        for term in terms[ex]:
             c, rest = term.as_coeff_Mul()
             z, lcm = zs[rest]
             val *= z ** (c * lcm)
@@ -391,6 +408,12 @@ def _symbolic_zero(expr: sp.Expr) -> bool:
         return (elems[0] == 0) if elems is not None else sp.cancel(z) == 0
     except (TypeError, ValueError, NotImplementedError, sp.PolynomialError):  # pragma: no cover
         return False
+
+
+def vanishes(expr: sp.Expr) -> bool:
+    """Whether ``expr`` vanishes identically, decided exactly by the symbolic route of
+    :func:`prove_zero` alone (``False`` where that route does not reach zero; no numeric look)."""
+    return _symbolic_zero(sp.sympify(expr))
 
 
 def random_points(symbols, count: int, seed: int = 20130101):

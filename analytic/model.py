@@ -206,7 +206,9 @@ def physical(expr: sp.Expr, *, damping: bool = True) -> sp.Expr:
     dq = derived_quantities()
     subs = dict(dq)
     subs.update(damped_frequency_relations())
-    expr = expr.subs(subs)
+    # symbols replaced by expressions free of the replaced symbols: one simultaneous walk each
+    # (the same as ``subs``, without its pattern matching)
+    expr = sp.sympify(expr).xreplace(subs)
     base = {
         S.omega0: 2 * sp.pi,
         S.omega1: 2 * sp.pi / sp.sqrt(1 + S.m),
@@ -216,7 +218,7 @@ def physical(expr: sp.Expr, *, damping: bool = True) -> sp.Expr:
     }
     if damping:
         base[S.gamma] = sp.pi / S.Q
-    return expr.subs(base)
+    return expr.xreplace(base)
 
 
 def derived_quantities() -> dict[sp.Symbol, sp.Expr]:

@@ -92,7 +92,8 @@ def substitute_abbreviations(expr: sp.Expr, keep: tuple = ()) -> sp.Expr:
     33), leaving the primary symbols ``omega_i, gamma, T, m``; abbreviations in ``keep`` stay (an
     identity that holds with them as free symbols holds for their values too)."""
     dq = {k: v for k, v in derived_quantities().items() if k not in keep}
-    return sp.sympify(expr).subs(dq)
+    # symbols replaced by expressions free of them: one simultaneous walk
+    return sp.sympify(expr).xreplace(dq)
 
 
 def _residual(eq) -> sp.Expr:
@@ -352,7 +353,8 @@ def stationary_initial_condition(kind: EdgeKind) -> sp.Expr:
     """
     seg1 = edge_system(EdgeKind(kind)).segments[0]
     ratio = seg1.dphi.subs(S.t, 0) / seg1.phi.subs(S.t, 0)
-    return sp.simplify(ratio)
+    # the amplitude cancels; sin/cos of one argument becomes tan (or 1/tan)
+    return sp.trigsimp(sp.cancel(ratio))
 
 
 def _initial_conditions() -> Chain:

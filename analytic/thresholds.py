@@ -94,13 +94,16 @@ def _scaled_model(n, damping: str, system=None) -> dict[str, sp.Expr]:
     par = {k.name: v for k, v in parameters(damping).items()}
     sub = {Q_SYM: 1 / (LAM * S.m**p)}
     N, _ = order_form(_nsym(n), _parity(n))
-    env = {r2: par["r^2"], S.beta: par["beta"], S.g: par["g"]}
     # r^2, beta, g and Q do not depend on theta: differentiate the short normal form first and
-    # substitute after (the same function as the derivative of the substituted N, far cheaper)
-    dN = sp.diff(N, S.theta).subs(env).subs(sub)
-    N = N.subs(env).subs(sub)
+    # substitute after (the same function as the derivative of the substituted N, far cheaper).
+    # Symbols replaced by expressions: ``xreplace`` (one walk, no pattern matching), with ``Q``
+    # replaced inside the parameters first -- the composition of the two substitutions
+    env = {r2: par["r^2"], S.beta: par["beta"], S.g: par["g"]}
+    env = {k: v.xreplace(sub) for k, v in env.items()}
+    dN = sp.diff(N, S.theta).xreplace(env).xreplace(sub)
+    N = N.xreplace(env).xreplace(sub)
     x = _nsym(n) * sp.pi / 2 + S.theta
-    T0 = (x / (sp.pi * par["w"])).subs(sub)
+    T0 = (x / (sp.pi * par["w"])).xreplace(sub)
     w_undamped = {k.name: v for k, v in parameters(Damping.NONE).items()}["w"]
     return {
         "N": N,
@@ -193,35 +196,82 @@ class ThresholdSeries:
         }
 
 
-@cache
 def _threshold_raw(n, damping: str, prec: int, system=None) -> tuple[Series, Series]:
-    """``(lam(m), u(m))`` at the tangency through ``m**prec``."""
-    p = _power(n, system)
-    ring = LaurentRing(_gens(n, (), system))
-    model = _scaled_model(n, damping, system)
-    A, B = _leading_balance(n, damping, ring, system)
-    lam0 = ring.root(ring.mul(A, ring.inverse(B)), 1, 2)
-    # leading Jacobian of (N/m^2p, N_theta/m^p) in (lam, u): diag(2 B lam0, 2)
-    j11_inv = ring.inverse(ring.scale(ring.mul(B, lam0), 2))
-    lam = Series.constant(ring, lam0, 0)
-    u = Series.constant(ring, ring.zero, 0)
-    # one order at a time: each step with the leading Jacobian gains (at least) one order, so
-    # the residuals are needed only through the order being fixed (through m^L at level L)
-    for L in range(prec + 1):
+    """``(lam(m), u(m))`` at the tangency through ``m**prec``.
+
+    The solution is built one order at a time and each order depends only on the lower ones, so
+    one solver per order and model is kept (:func:`_tangency`) and extended when a later call asks
+    for more terms: the series through ``m**prec`` is the same whichever precision was asked
+    first."""
+    lam, u = _tangency(n, damping, system).solve(prec)
+    return lam.truncate(prec), u.truncate(prec)
+
+
+@cache
+def _tangency(n, damping: str, system=None) -> _Tangency:
+    return _Tangency(n, damping, system)
+
+
+class _Tangency:
+    """The tangency ``N = dN/dtheta = 0`` solved for ``(lam(m), u(m))``, order by order."""
+
+    def __init__(self, n, damping: str, system):
+        self.p = _power(n, system)
+        self.ring = ring = LaurentRing(_gens(n, (), system))
+        self.model = _scaled_model(n, damping, system)
+        A, B = _leading_balance(n, damping, ring, system)
+        lam0 = ring.root(ring.mul(A, ring.inverse(B)), 1, 2)
+        # leading Jacobian of (N/m^2p, N_theta/m^p) in (lam, u): diag(2 B lam0, 2)
+        self.j11_inv = ring.inverse(ring.scale(ring.mul(B, lam0), 2))
+        self.lam = Series.constant(ring, lam0, 0)
+        self.u = Series.constant(ring, ring.zero, 0)
+        self.done = -1  # the highest order fixed so far
+        self.pending = None  # the residuals of (lam, u), evaluated through the next order
+
+    def _residuals(self, L: int, fixed: dict) -> tuple[Series, Series]:
+        """``(N/m^2p, N_theta/m^p)`` at the current polynomials, through ``m**L``."""
+        p, ring = self.p, self.ring
         hi = L + 2 * p
-        for _ in range(8):
-            # the iterates are polynomials: padded, the residuals are exact through m^L
-            lam, u = lam.padded(L), u.padded(L)
-            env = {LAM: lam.padded(hi), S.theta: u.shift(p).padded(hi)}
-            F1 = _eval(model["N"], env, ring, hi).shift(-2 * p)
-            F2 = _eval(model["dN"], env, ring, L + p).shift(-p)
-            if all(not a for a in F1.c) and all(not a for a in F2.c):
-                break
-            lam = (lam - F1.scale_coeff(j11_inv)).truncate(L)
-            u = (u - F2 * sp.Rational(1, 2)).truncate(L)
-        else:  # pragma: no cover
-            raise ArithmeticError("threshold series did not converge")
-    return lam, u
+        lam, u = self.lam.padded(hi), self.u.shift(p).padded(hi)
+        env = {LAM: lam, S.theta: u}
+        F1 = _eval(self.model["N"], env, ring, hi, dict(fixed)).shift(-2 * p)
+        F2 = _eval(self.model["dN"], env, ring, L + p, dict(fixed)).shift(-p)
+        return F1, F2
+
+    def solve(self, prec: int) -> tuple[Series, Series]:
+        if prec <= self.done:
+            return self.lam, self.u
+        p, ring = self.p, self.ring
+        # the parts of N and dN free of lam and theta, evaluated once for this extension
+        fixed = fixed_parts(
+            [self.model["N"], self.model["dN"]],
+            {S.n: "n", **{sp.Symbol(g): g for g in _ANGLE_GENS}},
+            ring,
+            prec + 2 * p,
+            var=S.m,
+            vary={LAM, S.theta},
+        )
+        # one order at a time: each step with the leading Jacobian gains (at least) one order,
+        # so the residuals are needed only through the order being fixed (through m^L at level
+        # L).  The residuals that confirm level L are evaluated one order further and are the
+        # first residuals of level L + 1 (the iterates are the same polynomials, padded).
+        for L in range(self.done + 1, prec + 1):
+            top = min(L + 1, prec)
+            for _ in range(8):
+                # the iterates are polynomials: padded, the residuals are exact through m^L
+                self.lam, self.u = self.lam.padded(L), self.u.padded(L)
+                if self.pending is None or self.pending[0].prec < L:
+                    self.pending = self._residuals(top, fixed)
+                F1, F2 = (x.truncate(L) for x in self.pending)
+                if all(not a for a in F1.c) and all(not a for a in F2.c):
+                    break
+                self.lam = (self.lam - F1.scale_coeff(self.j11_inv)).truncate(L)
+                self.u = (self.u - F2 * sp.Rational(1, 2)).truncate(L)
+                self.pending = self._residuals(top, fixed)
+            else:  # pragma: no cover
+                raise ArithmeticError("threshold series did not converge")
+            self.done = L
+        return self.lam, self.u
 
 
 def _check_terms(terms):
