@@ -100,6 +100,12 @@ def _how_agrees(verdicts: list[Verdict], extra: str = "") -> str:
     return text + (" " + extra if extra else "")
 
 
+def _decided(verdicts: list[Verdict]) -> str:
+    """How a row's checks were decided: symbolically only if every one of them was."""
+    num = [v for v in verdicts if v.route != "symbolic"]
+    return "decided symbolically." if not num else num[0].describe() + "."
+
+
 def _how_differs(pe: sp.Equality, de: sp.Equality) -> str:
     flipped = sp.Eq(-de.lhs, -de.rhs, evaluate=False)
     parts = min(difference(pe, de), difference(pe, flipped), key=len)
@@ -153,7 +159,7 @@ def _eq1() -> Row:
         _latex(pr),
         _latex(derived),
         "The limit $m \\to 0$ of the exact tuning condition (6), $T = nT_{av}/2$ with "
-        "$T_{av} \\to T_0$; " + ("decided symbolically." if ok else "the limits differ."),
+        "$T_{av} \\to T_0$; " + (_decided(v) if ok else "the limits differ."),
         "Naive resonance condition",
     )
 
@@ -171,10 +177,12 @@ def _eq23() -> Row:
     om0 = sp.sqrt(gr / l0)
     w1 = sp.sqrt(om2.subs(l, l0 * (1 + S.m)))
     w2 = sp.sqrt(om2.subs(l, l0 * (1 - S.m)))
+    # both frequencies are positive, so equal squares mean equal frequencies (the squares are
+    # rational in the symbols: an exact identity, where the roots themselves are not reduced)
     checks = [
         prove_zero(gam.diff(l)),  # damping constant independent of the length
-        prove_zero(w1 - om0 / sp.sqrt(1 + S.m)),
-        prove_zero(w2 - om0 / sp.sqrt(1 - S.m)),
+        prove_zero(w1**2 - om0**2 / (1 + S.m)),
+        prove_zero(w2**2 - om0**2 / (1 - S.m)),
     ]
     ok = all(x.holds for x in checks)
     derived = (
@@ -192,7 +200,7 @@ def _eq23() -> Row:
         r"Derived from $J\ddot\varphi = $ torque with $J = Ml^2$, the torque of gravity "
         r"$-Mgl\sin\varphi$ and of the drag $-cl^2\dot\varphi$ on the bob: $2\gamma = c/M$ does "
         r"not depend on $l$ (the same in both halves), $\omega_i^2 = g/l_i$ with "
-        r"$l_{1,2} = l_0(1 \pm m)$; decided symbolically.",
+        r"$l_{1,2} = l_0(1 \pm m)$; " + _decided(checks),
         "Equations of motion in each half",
     )
 
@@ -246,7 +254,7 @@ def _shape_row(labels: tuple[str, str], kind: EdgeKind, title: str, amp: dict) -
         how = (
             f"The printed segment is the engine's edge shape {kind.value} and its printed "
             "velocity is the "
-            "time derivative of the printed angle; decided symbolically."
+            "time derivative of the printed angle; " + _decided([same, consistent])
             if ok
             else f"shape: {same.describe()}; velocity: {consistent.describe()}"
         )
@@ -405,8 +413,9 @@ def _eq2830() -> Row:
         "agrees" if ok else "differs",
         _latex(pr),
         _latex(derived),
-        "The printed segments are the engine's 'paper' damping model; decided symbolically. As "
-        "the text "
+        "The printed segments are the engine's 'paper' damping model; "
+        + _decided(vs)
+        + " As the text "
         "says, the printed velocity is not the derivative of the angle: it drops "
         f"${sp.latex(dropped)}$ "
         "(valid for $\\gamma \\ll \\omega$). The 'exact' model keeps it.",
@@ -438,7 +447,7 @@ def _eq31() -> Row:
         _latex((c3.equation, c4.equation)),
         "The anti-periodicity conditions the engine builds for odd orders (angle, and angular "
         "momentum across "
-        "t = T/2); decided symbolically.",
+        "t = T/2); " + _decided(vs),
         "Periodicity conditions, odd orders with friction",
     )
 

@@ -98,3 +98,22 @@ def test_difference_locates_smallest_subexpressions():
     a, b, c = sp.symbols("a b c")
     assert difference(a * sp.cos(b) + c, a * sp.sin(b) + c) == [(sp.cos(b), sp.sin(b))]
     assert difference(a + b, a + b) == []
+
+
+def test_a_row_says_decided_symbolically_only_when_every_check_was():
+    # a check that fell back to random points must be described as numeric, not as symbolic
+    from analytic.catalogue_rows import _decided
+    from analytic.identity import Verdict
+
+    assert _decided([Verdict(True, "symbolic"), Verdict(True, "symbolic")]) == (
+        "decided symbolically."
+    )
+    mixed = _decided([Verdict(True, "symbolic"), Verdict(True, "numeric", 24, 40, 1e-41)])
+    assert "symbolically" not in mixed.replace("sympy did not", "") and "24 random points" in mixed
+
+
+def test_equations_of_motion_row_is_an_exact_identity(rows):
+    # eqs. (2)-(3): the frequencies are compared through their squares (both positive), which
+    # sympy reduces to zero exactly; the row says so only because every check was symbolic
+    row = rows["2-3"]
+    assert row.status == "agrees" and row.how.endswith("decided symbolically.")
