@@ -234,7 +234,7 @@ def first_order_defect() -> sp.Matrix:
     A = system_matrix(lt, _g)
     ramp = A.applyfunc(lambda e: sp.integrate(e, (s, -_S / 2, _S / 2)))
     jump = (system_matrix(_la, _g) + system_matrix(_lb, _g)) * _S / 2
-    return (ramp - jump).applyfunc(lambda e: sp.factor(sp.simplify(e / _S)))
+    return (ramp - jump).applyfunc(lambda e: sp.factor(e / _S))
 
 
 @cache

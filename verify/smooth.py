@@ -288,27 +288,30 @@ _LOW_BITS = 64
 
 
 def _secant(F, x1: arb, x2: arb, f1: arb, goal: arb, iters: int):
-    """Secant steps on ball midpoints; returns ``(x_last, x_before, f_last, f_before)``, the
-    ``f`` the midpoints of ``F`` there (``f_last`` is ``None`` when the last step converged
-    before ``F`` was evaluated at ``x_last``)."""
+    """Secant steps on ball midpoints from ``x1`` (where ``F`` is ``f1``) and ``x2``; returns
+    ``(x, slope)``: the last iterate, computed but not evaluated, and the slope of the secant
+    through the last two points evaluated.  Stops when a step is below ``goal`` (relative)."""
     f2 = F(x2).mid()
     for _ in range(iters):
         if f2 == f1:
             break
-        x3 = (x2 - f2 * (x2 - x1) / (f2 - f1)).mid()
+        slope = (f2 - f1) / (x2 - x1)
+        x3 = (x2 - f2 / slope).mid()
+        if abs(x3 - x2) < goal * abs(x3):
+            return x3, slope
         x1, f1 = x2, f2
         x2 = x3
-        if abs(x2 - x1) < goal * abs(x2):
-            return x2, x1, None, f1
         f2 = F(x2).mid()
-    return x2, x1, f2, f1
+    return x2, ((f2 - f1) / (x2 - x1) if x2 != x1 and f2 != f1 else None)
 
 
-def _refine(m: Fraction, e: int, x0: float, bits: int) -> arb:
-    """The zero of entry ``e`` of ``G`` near ``x0`` to about ``2^-(bits - 8)`` (relative): the
-    secant method on ball midpoints at :data:`_LOW_BITS` bits first, then (usually) two
-    evaluations at ``bits``, started from the low-precision zero and slope.  Returns the
-    midpoint (not proven: :func:`_enclose` proves the zero)."""
+def _refine(m: Fraction, e: int, x0: float, bits: int) -> tuple[arb, arb | None]:
+    """The zero of entry ``e`` of ``G`` near ``x0`` to about ``2^-(bits - 8)`` (relative), and
+    the slope of the entry there (a secant's): the secant method on ball midpoints at
+    :data:`_LOW_BITS` bits first, then (above ``_LOW_BITS + 12`` bits) Newton and secant steps
+    at ``bits``, started from the low-precision zero and slope (usually two evaluations).
+    Returns midpoints (not proven: :func:`_enclose` proves the zero, and moves a zero that is
+    not yet accurate enough)."""
     with ctx.workprec(_LOW_BITS):
 
         def F_low(T: arb) -> arb:
@@ -316,10 +319,9 @@ def _refine(m: Fraction, e: int, x0: float, bits: int) -> arb:
 
         x1 = arb(x0)
         f1 = F_low(x1).mid()
-        x, xp, fx, fxp = _secant(F_low, x1, arb(x0 * (1 + 1e-9)), f1, arb(2) ** -50, 12)
-        if fx is None and x != xp:  # the values at the last two points, one already known
-            fx = F_low(x).mid()
-        slope = (fx - fxp) / (x - xp) if x != xp else None
+        x, slope = _secant(F_low, x1, arb(x0 * (1 + 1e-9)), f1, arb(2) ** -50, 12)
+    if bits <= _LOW_BITS + 12:
+        return x, slope
     with ctx.workprec(bits):
 
         def F(T: arb) -> arb:
@@ -329,7 +331,8 @@ def _refine(m: Fraction, e: int, x0: float, bits: int) -> arb:
         x1 = arb(x.mid())
         f1 = F(x1).mid()
         if slope is None or slope == 0:
-            return _secant(F, x1, arb((x1 * (1 + arb(2) ** -40)).mid()), f1, goal, 40)[0]
+            x2 = arb((x1 * (1 + arb(2) ** -40)).mid())
+            return _secant(F, x1, x2, f1, goal, 40)
         d_prev = None
         for _ in range(20):
             # a Newton step with the low-precision slope, then secant steps: from 1e-17 off,
@@ -337,30 +340,69 @@ def _refine(m: Fraction, e: int, x0: float, bits: int) -> arb:
             x2 = (x1 - f1 / slope).mid()
             d = abs(x2 - x1)
             if d < goal * abs(x2):
-                return x2
+                return x2, slope
             # a secant step's error is about (the last two steps' product)/|x|
             if d_prev is not None and d * d_prev < goal * abs(x2) * abs(x2) * arb(2) ** -8:
-                return x2
+                return x2, slope
             f2 = F(x2).mid()
             if f2 == f1:
-                return x2
+                return x2, slope
             slope = (f2 - f1) / (x2 - x1)
             x1, f1, d_prev = x2, f2, d
-        return x1
+        return x1, slope
 
 
-def _enclose(m: Fraction, e: int, x: arb, bits: int) -> arb:
-    """A ball around ``x`` at whose ends entry ``e`` of ``G`` has proven opposite signs (so it
-    holds a zero), as narrow as the precision allows."""
+def _opposite(fa: arb, fb: arb) -> bool:
+    return (fa < 0 and fb > 0) or (fa > 0 and fb < 0)
+
+
+def _same(fa: arb, fb: arb) -> bool:
+    return (fa < 0 and fb < 0) or (fa > 0 and fb > 0)
+
+
+def _enclose(m: Fraction, entries: tuple, x: arb, bits: int) -> arb:
+    """A ball around ``x`` at whose ends each entry in ``entries`` of ``G`` has proven opposite
+    signs (so it holds a zero of each), as narrow as the precision allows: half-width
+    ``|x| 2^-(bits - 24)`` first.  Where one entry has the same proven sign at both ends, its
+    zero lies outside: ``x`` moves to the secant's zero through the two ends (twice at most)
+    before the ball is widened."""
     with ctx.workprec(bits):
         for k in range(bits - 24, 8, -8):
             d = abs(x) * arb(2) ** (-k)
-            a, b = (x - d).mid(), (x + d).mid()
-            fa = sine_half_map(m, a)[e]
-            fb = sine_half_map(m, b)[e]
-            if (fa < 0 and fb > 0) or (fa > 0 and fb < 0):
-                return arb.union(a, b)
+            for _ in range(3):
+                a, b = (x - d).mid(), (x + d).mid()
+                Ga, Gb = sine_half_map(m, a), sine_half_map(m, b)
+                if all(_opposite(Ga[e], Gb[e]) for e in entries):
+                    return arb.union(a, b)
+                moved = next((e for e in entries if _same(Ga[e], Gb[e])), None)
+                if moved is None:
+                    break  # a sign not proven at this precision: a wider ball
+                fa, fb = Ga[moved].mid(), Gb[moved].mid()
+                if fa == fb:
+                    break
+                x = (a - fa * (b - a) / (fb - fa)).mid()
     raise CertificationError("no sign change of the edge equation could be proven")
+
+
+def _edges(m: Fraction, n: int, names: tuple, bits: int) -> list:
+    """The enclosures of the zeros of the two entries ``names`` of ``G`` on the edges of order
+    ``n`` at ``bits`` bits.  For an even order the two zeros are tried in one ball first (the
+    even intervals of the sine modulation are closed: :func:`analytic.smooth.sine_closings`),
+    so that the same two evaluations prove both sign changes; where that fails, and for odd
+    orders, each zero is located and enclosed on its own."""
+    if n % 2 == 0:
+        e0, e1 = (_ENTRY[name] for name in names)
+        x, _ = _refine(m, e0, _guess(float(m), n, _COLUMN[names[0]]), bits)
+        try:
+            ball = _enclose(m, (e0, e1), x, bits)
+            return [ball, ball]
+        except CertificationError:
+            pass
+    out = []
+    for name in names:
+        x, _ = _refine(m, _ENTRY[name], _guess(float(m), n, _COLUMN[name]), bits)
+        out.append(_enclose(m, (_ENTRY[name],), x, bits))
+    return out
 
 
 def sine_boundary(order, m, *, digits=30):
@@ -376,11 +418,7 @@ def sine_boundary(order, m, *, digits=30):
     d = as_digits(digits)
     bits = bits_for_digits(d + 6)
     names = _pair(n)
-    balls = []
-    for name in names:
-        x0 = _guess(float(mm), n, _COLUMN[name])
-        x = _refine(mm, _ENTRY[name], x0, bits + 16)
-        balls.append(_enclose(mm, _ENTRY[name], x, bits + 16))
+    balls = _edges(mm, n, names, bits + 16)
     if balls[1] < balls[0]:
         balls, names = balls[::-1], names[::-1]
     lo, hi = balls
