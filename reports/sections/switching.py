@@ -132,7 +132,7 @@ def build(ctx: Context) -> Part:
         return inline(math(x, cfg))
 
     E12 = first_order_defect()[0, 1]
-    q = sp.simplify(hill_form(sine_length()).subs(sp.Symbol("gamma", nonnegative=True), 0))
+    q = sp.factor(hill_form(sine_length()).subs(sp.Symbol("gamma", nonnegative=True), 0))
     c_lo, c_hi = sine_first_width()
     m = sp.Symbol("m")
     out: list[Latex] = [
