@@ -133,13 +133,21 @@ class _Pendulum:
         self.zero = S == 0
         if self.zero:
             one, nil = arb(1), arb(0)
-            self.down = self.up = (one, nil, nil, one)
+            self.down = self._up = (one, nil, nil, one)
         else:
             self.down = tuple(f["ramp"](self.l1, self.l2, self.S, self.g, pi))
-            self.up = tuple(f["ramp"](self.l2, self.l1, self.S, self.g, pi))
+            self._up = None  # only the period map needs it (the edges need G alone)
         self.A1 = tuple(f["A"](self.l1, self.g))
         self.A2 = tuple(f["A"](self.l2, self.g))
         self._plateau = f["plateau"]
+
+    @property
+    def up(self):
+        """The ramp up's map (computed on first use)."""
+        if self._up is None:
+            pi = arb.pi()
+            self._up = tuple(_compiled()["ramp"](self.l2, self.l1, self.S, self.g, pi))
+        return self._up
 
     def U1(self, t):
         return tuple(self._plateau(t, self.l1, self.g))
@@ -467,16 +475,24 @@ def longest_ramp(order, m, *, duty="1/2", _jump_result=None, _followed=None) -> 
     paths = _paths(n, mm, D, jump) if _followed is None else _followed
     c = float(min(D, 1 - D))
     S = c * float(jump.lower)
+    prev = None  # (S, c T_lower(S) - S) of the last iterate: secant steps on that difference
     for _ in range(60):
         try:
             lo = paths.edges(Fraction(S))[0]
         except CertificationError:
             S *= 0.9
+            prev = None
             continue
         new = c * lo
         if abs(new - S) <= 1e-13 * S:
             return min(new, S)
-        S = new
+        step = new - S  # the fixed-point step, replaced by the secant's where that is sound
+        if prev is not None and prev[1] != step:
+            sec = -step * (S - prev[0]) / (step - prev[1])
+            if math.isfinite(sec) and abs(sec) <= 4 * abs(step):
+                step = sec
+        prev = (S, new - S)
+        S = S + step
     return S
 
 
