@@ -80,7 +80,15 @@ _NAMESPACE = {
 @cache
 def _compiled():
     """The arb functions of :func:`analytic.ramp.ramp_forms`: ``(ramp, plateau, A, E)``, each a
-    function returning four entries (row-major)."""
+    function returning four entries (row-major), from their stored texts
+    (:mod:`verify.switch_forms`)."""
+    from .switch_forms import load
+
+    return load("ramp", _NAMESPACE, _derived)
+
+
+def _derived():
+    """The functions of :func:`_compiled`, compiled now from the derivation (imports sympy)."""
     import sympy as sp
 
     from analytic.ramp import ramp_forms, symbols

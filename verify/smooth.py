@@ -69,9 +69,19 @@ _NAMESPACE = {
 
 @cache
 def _compiled():
-    """``A(t)`` of the sine modulation (in ``t, T, m, g, gamma, PI``) and of a linear length
-    ``l = la + c (t - ta)`` (in ``t, la, c, ta, g, gamma``), compiled for ``arb_series``/``acb``
-    arguments from :mod:`analytic.smooth`."""
+    """``A(t)`` of the sine modulation (in ``t, T, m, g, gamma, PI``), of a linear length
+    ``l = la + c (t - ta)`` (in ``t, la, c, ta, g, gamma``), and the sine's ``B`` and ``C`` of
+    (V3), compiled for ``arb_series``/``acb`` arguments from :mod:`analytic.smooth`; loaded from
+    their stored texts (:mod:`verify.switch_forms`)."""
+    from .switch_forms import load
+
+    f = load("smooth", _NAMESPACE, _derived)
+    return f["sine"], f["lin"], f["hill"], f["state"]
+
+
+def _derived():
+    """The functions of :func:`_compiled` by name, compiled now from the derivation (imports
+    sympy)."""
     import sympy as sp
 
     from analytic.smooth import sine_forms, sine_hill_forms, symbols, system_matrix
@@ -101,7 +111,7 @@ def _compiled():
     kw = {"modules": [_NAMESPACE], "printer": _printer(), "cse": True, "docstring_limit": 0}
     hill = sp.lambdify(args, list(B), **kw)
     state = sp.lambdify(args, list(C), **kw)
-    return sine, lin, hill, state
+    return {"sine": sine, "lin": lin, "hill": hill, "state": state}
 
 
 def _A(x: Fraction) -> arb:
