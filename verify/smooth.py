@@ -300,14 +300,17 @@ _LOW_BITS = 64
 def _secant(F, x1: arb, x2: arb, f1: arb, goal: arb, iters: int):
     """Secant steps on ball midpoints from ``x1`` (where ``F`` is ``f1``) and ``x2``; returns
     ``(x, slope)``: the last iterate, computed but not evaluated, and the slope of the secant
-    through the last two points evaluated.  Stops when a step is below ``goal`` (relative)."""
+    through the last two points evaluated.  Stops when a step is below ``goal`` (relative), or
+    when the new iterate's error, about the product of its distances to the last two points
+    over ``|x|`` (the secant's error), is below ``goal/256``."""
     f2 = F(x2).mid()
     for _ in range(iters):
         if f2 == f1:
             break
         slope = (f2 - f1) / (x2 - x1)
         x3 = (x2 - f2 / slope).mid()
-        if abs(x3 - x2) < goal * abs(x3):
+        d = abs(x3 - x2)
+        if d < goal * abs(x3) or d * abs(x3 - x1) < goal * abs(x3) * abs(x3) * arb(2) ** -8:
             return x3, slope
         x1, f1 = x2, f2
         x2 = x3
