@@ -38,13 +38,12 @@ RAMP_CLOSING = (3, Fraction(1, 100), "0.6", "0.62", "1e-10")
 
 
 def _compute():
-    from verify.ramp import jump_validity, ramp_boundary
+    from verify.ramp import jump_validity, ramp_chart
     from verify.smooth import sine_boundary
 
     edges = np.full((len(ORDERS), 2, len(FIG_S)), np.nan)
     for k, n in enumerate(ORDERS):
-        for j, S in enumerate(FIG_S):
-            r = ramp_boundary(n, FIG_M, S, digits=DIGITS)
+        for j, r in enumerate(ramp_chart(n, FIG_M, FIG_S, digits=DIGITS)):
             edges[k, 0, j], edges[k, 1, j] = float(r.lower.mid()), float(r.upper.mid())
     sine = [sine_boundary(n, FIG_M, digits=SINE_DIGITS) for n in ORDERS]
     validity = [[jump_validity(n, m, VALIDITY_TOL) for m in VALIDITY_M] for n in ORDERS]
