@@ -109,9 +109,15 @@ def _hill_coefficient(l) -> sp.Expr:
     u = sp.Function("u")(_t)
     phi = u / l
     lhs = sp.diff(l**2 * sp.diff(phi, _t), _t) + 2 * _gamma * l**2 * sp.diff(phi, _t)
-    lhs = sp.expand((lhs + _g * l * phi) / l)
-    # lhs = u'' + 2 gamma u' + q u: read q off as the coefficient of u
-    return lhs.coeff(u)
+    lhs = (lhs + _g * l * phi) / l
+    # lhs = u'' + 2 gamma u' + q u, linear in u, u', u'': with these three as symbols, q is the
+    # derivative in the symbol for u (no expansion needed); the other two coefficients are
+    # checked to be 1 and 2 gamma
+    u0, u1, u2 = sp.symbols("u0 u1 u2")
+    lin = lhs.subs(sp.Derivative(u, (_t, 2)), u2).subs(sp.Derivative(u, _t), u1).subs(u, u0)
+    if sp.cancel(sp.diff(lin, u2)) != 1 or sp.cancel(sp.diff(lin, u1)) != 2 * _gamma:
+        raise AssertionError("(V1)/l is not u'' + 2 gamma u' + q u")  # pragma: no cover
+    return sp.diff(lin, u0)
 
 
 def _period_integral(expr, x) -> sp.Expr:
