@@ -372,7 +372,7 @@ def ramp_chart(order, m, S_values, *, duty="1/2", digits=30) -> list[RampEdges]:
     jump = _jump(n, mm, D, max(d, 20) + 5)
     paths = _paths(n, mm, D, jump)
     return [
-        ramp_boundary(n, mm, S, duty=D, digits=d, _jump_result=jump)
+        ramp_boundary(n, mm, S, duty=D, digits=d, _jump_result=jump, _followed=paths)
         for S in S_values
     ]
 
