@@ -232,9 +232,10 @@ def first_order_defect() -> sp.Matrix:
     s = sp.Symbol("s", real=True)
     lt = _la + (_lb - _la) * (s + _S / 2) / _S
     A = system_matrix(lt, _g)
-    ramp = A.applyfunc(lambda e: sp.integrate(e, (s, -_S / 2, _S / 2)))
+    # rational integrands: sympy's rational integration, without the Risch algorithm's setup
+    ramp = A.applyfunc(lambda e: sp.integrate(e, (s, -_S / 2, _S / 2), risch=False))
     jump = (system_matrix(_la, _g) + system_matrix(_lb, _g)) * _S / 2
-    return (ramp - jump).applyfunc(lambda e: sp.factor(sp.simplify(e / _S)))
+    return (ramp - jump).applyfunc(lambda e: sp.factor(e / _S))
 
 
 @cache

@@ -506,3 +506,19 @@ def test_ramp_closing_moves_off_the_jump_closing():
     for x, ref in zip(M, (-1, 0, 0, -1), strict=True):
         assert abs(float(x.mid()) - ref) < 1e-7
     assert ar.crossing_is_a_closing() == sp.zeros(2, 2)
+
+
+def test_ramp_chart_gives_the_edges_of_ramp_boundary():
+    """Reference: ramp_boundary at each S (every edge followed from S = 0 on its own); the chart
+    continues one path per edge through the S values, and encloses the same zeros."""
+    from verify.ramp import ramp_chart
+
+    S_values = [F(0), F(1, 200), F(3, 100), F(1, 10)]
+    chart = ramp_chart(2, "3/10", S_values, digits=15)
+    assert [r.S for r in chart] == S_values
+    for r, S in zip(chart, S_values, strict=True):
+        ref = ramp_boundary(2, "3/10", S, digits=15)
+        assert r.factors == ref.factors
+        for a, b in ((r.lower, ref.lower), (r.upper, ref.upper)):
+            assert a.overlaps(b)
+            assert float(a.rad()) < 1e-15 and float(b.rad()) < 1e-15

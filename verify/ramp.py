@@ -54,6 +54,7 @@ __all__ = [
     "ramp_monodromy_arb",
     "ramp_half_map",
     "ramp_boundary",
+    "ramp_chart",
     "leading_shift",
     "RampEdges",
     "jump_validity",
@@ -80,7 +81,15 @@ _NAMESPACE = {
 @cache
 def _compiled():
     """The arb functions of :func:`analytic.ramp.ramp_forms`: ``(ramp, plateau, A, E)``, each a
-    function returning four entries (row-major)."""
+    function returning four entries (row-major), from their stored texts
+    (:mod:`verify.switch_forms`)."""
+    from .switch_forms import load
+
+    return load("ramp", _NAMESPACE, _derived)
+
+
+def _derived():
+    """The functions of :func:`_compiled`, compiled now from the derivation (imports sympy)."""
     import sympy as sp
 
     from analytic.ramp import ramp_forms, symbols
@@ -133,13 +142,21 @@ class _Pendulum:
         self.zero = S == 0
         if self.zero:
             one, nil = arb(1), arb(0)
-            self.down = self.up = (one, nil, nil, one)
+            self.down = self._up = (one, nil, nil, one)
         else:
             self.down = tuple(f["ramp"](self.l1, self.l2, self.S, self.g, pi))
-            self.up = tuple(f["ramp"](self.l2, self.l1, self.S, self.g, pi))
+            self._up = None  # only the period map needs it (the edges need G alone)
         self.A1 = tuple(f["A"](self.l1, self.g))
         self.A2 = tuple(f["A"](self.l2, self.g))
         self._plateau = f["plateau"]
+
+    @property
+    def up(self):
+        """The ramp up's map (computed on first use)."""
+        if self._up is None:
+            pi = arb.pi()
+            self._up = tuple(_compiled()["ramp"](self.l2, self.l1, self.S, self.g, pi))
+        return self._up
 
     def U1(self, t):
         return tuple(self._plateau(t, self.l1, self.g))
@@ -319,11 +336,18 @@ class _Paths:
 
     def __init__(self, n, mm, D, jump, names):
         self.args = (mm, D)
+        self.names = tuple(names)
         self.spacing = float(jump.upper) / n
         self.starts = ((_ENTRY[names[0]], float(jump.lower)), (_ENTRY[names[1]], float(jump.upper)))
         self.known = ([], [])  # per edge: (s, T, slope), s ascending
 
     def edges(self, S: Fraction) -> tuple[float, float]:
+        """The two followed zeros at ``S``, ascending."""
+        out = self.each(S)
+        return min(out), max(out)
+
+    def each(self, S: Fraction) -> list[float]:
+        """The followed zeros of the entries :attr:`names` at ``S``, in that order."""
         mm, D = self.args
         out = []
         for (e, T0), known in zip(self.starts, self.known, strict=True):
@@ -334,12 +358,32 @@ class _Paths:
             start = max(below, key=lambda k: k[0]) if below else None
             out.append(_follow(mm, S, D, e, T0, self.spacing, start=start, trail=known))
             known.sort(key=lambda k: k[0])
-        return min(out), max(out)
+        return out
 
 
-def ramp_boundary(order, m, S, *, duty="1/2", digits=30, _jump_result=None) -> RampEdges:
+def ramp_chart(order, m, S_values, *, duty="1/2", digits=30) -> list[RampEdges]:
+    """:func:`ramp_boundary` at each switching time of ``S_values``, the jump model's edges
+    computed once and each edge followed in ``S`` once (each ``S`` continues from the largest
+    one already reached below it)."""
+    n = as_order(order)
+    D = as_system("pendulum", duty).duty
+    mm = exact_fraction(as_depth(m))
+    d = as_digits(digits)
+    jump = _jump(n, mm, D, max(d, 20) + 5)
+    paths = _paths(n, mm, D, jump)
+    return [
+        ramp_boundary(n, mm, S, duty=D, digits=d, _jump_result=jump, _followed=paths)
+        for S in S_values
+    ]
+
+
+def ramp_boundary(
+    order, m, S, *, duty="1/2", digits=30, _jump_result=None, _followed=None
+) -> RampEdges:
     """The certified edges of the ``order``-th interval with linear ramps of duration ``S``
-    (``0 <= S <= min(D, 1 - D) T`` at the lower edge; a longer ramp is refused)."""
+    (``0 <= S <= min(D, 1 - D) T`` at the lower edge; a longer ramp is refused).  ``_followed``:
+    the followed edges of the same jump result (:class:`_Paths`), continued to ``S`` instead of
+    following each edge from ``S = 0``."""
     from .result import from_balls
 
     n = as_order(order)
@@ -355,7 +399,7 @@ def ramp_boundary(order, m, S, *, duty="1/2", digits=30, _jump_result=None) -> R
     c = min(D, 1 - D)
     if SS > c * Fraction(float(jump.lower)) / 2:
         # a long ramp: first make sure it fits a phase at the lower edge (where T is least)
-        S_fit = longest_ramp(n, mm, duty=D, _jump_result=jump)
+        S_fit = longest_ramp(n, mm, duty=D, _jump_result=jump, _followed=_followed)
         if SS > Fraction(S_fit) * (1 + Fraction(1, 10**9)):
             raise InputError(
                 f"switching time S = {_text(SS)} is longer than a phase: at the lower edge of "
@@ -368,14 +412,17 @@ def ramp_boundary(order, m, S, *, duty="1/2", digits=30, _jump_result=None) -> R
         p0 = _Pendulum(mm, Fraction(0), D)
         names = _factors(p0, n, T_lo0, T_hi0)
     spacing = float(T_scale) / n
-    approx = [
-        _follow(mm, SS, D, _ENTRY[names[0]], float(jump.lower), spacing)
-        if SS
-        else float(jump.lower),
-        _follow(mm, SS, D, _ENTRY[names[1]], float(jump.upper), spacing)
-        if SS
-        else float(jump.upper),
-    ]
+    if _followed is not None and _followed.names == tuple(names) and SS:
+        approx = _followed.each(SS)
+    else:
+        approx = [
+            _follow(mm, SS, D, _ENTRY[names[0]], float(jump.lower), spacing)
+            if SS
+            else float(jump.lower),
+            _follow(mm, SS, D, _ENTRY[names[1]], float(jump.upper), spacing)
+            if SS
+            else float(jump.upper),
+        ]
     roots = []
     p_cache = {}
 
@@ -467,16 +514,24 @@ def longest_ramp(order, m, *, duty="1/2", _jump_result=None, _followed=None) -> 
     paths = _paths(n, mm, D, jump) if _followed is None else _followed
     c = float(min(D, 1 - D))
     S = c * float(jump.lower)
+    prev = None  # (S, c T_lower(S) - S) of the last iterate: secant steps on that difference
     for _ in range(60):
         try:
             lo = paths.edges(Fraction(S))[0]
         except CertificationError:
             S *= 0.9
+            prev = None
             continue
         new = c * lo
         if abs(new - S) <= 1e-13 * S:
             return min(new, S)
-        S = new
+        step = new - S  # the fixed-point step, replaced by the secant's where that is sound
+        if prev is not None and prev[1] != step:
+            sec = -step * (S - prev[0]) / (step - prev[1])
+            if math.isfinite(sec) and abs(sec) <= 4 * abs(step):
+                step = sec
+        prev = (S, new - S)
+        S = S + step
     return S
 
 
@@ -669,7 +724,7 @@ def jump_validity(order, m, tol, *, duty="1/2", digits=15) -> Validity:
         )
     T0s = (float(jump.lower), float(jump.upper))
     paths = _paths(n, mm, D, jump, names)
-    S_fit = longest_ramp(n, mm, duty=D, _jump_result=jump, _followed=paths)
+    S_fit = longest_ramp(n, mm, duty=D, _jump_result=jump)
     tolf = float(tt)
 
     def excess(S: float) -> float:
@@ -702,7 +757,7 @@ def jump_validity(order, m, tol, *, duty="1/2", digits=15) -> Validity:
     crossing = lo_S if hi_S is None else hi_S
 
     def certified(S: Fraction):
-        r = ramp_boundary(n, mm, S, duty=D, digits=d, _jump_result=jump)
+        r = ramp_boundary(n, mm, S, duty=D, digits=d, _jump_result=jump, _followed=paths)
         a, b = r.shifts
         by_name = dict(zip(r.factors, (a, b), strict=True))
         jl, ju = r.jump_lower, r.jump_upper

@@ -69,9 +69,19 @@ _NAMESPACE = {
 
 @cache
 def _compiled():
-    """``A(t)`` of the sine modulation (in ``t, T, m, g, gamma, PI``) and of a linear length
-    ``l = la + c (t - ta)`` (in ``t, la, c, ta, g, gamma``), compiled for ``arb_series``/``acb``
-    arguments from :mod:`analytic.smooth`."""
+    """``A(t)`` of the sine modulation (in ``t, T, m, g, gamma, PI``), of a linear length
+    ``l = la + c (t - ta)`` (in ``t, la, c, ta, g, gamma``), and the sine's ``B`` and ``C`` of
+    (V3), compiled for ``arb_series``/``acb`` arguments from :mod:`analytic.smooth`; loaded from
+    their stored texts (:mod:`verify.switch_forms`)."""
+    from .switch_forms import load
+
+    f = load("smooth", _NAMESPACE, _derived)
+    return f["sine"], f["lin"], f["hill"], f["state"]
+
+
+def _derived():
+    """The functions of :func:`_compiled` by name, compiled now from the derivation (imports
+    sympy)."""
     import sympy as sp
 
     from analytic.smooth import sine_forms, sine_hill_forms, symbols, system_matrix
@@ -101,7 +111,7 @@ def _compiled():
     kw = {"modules": [_NAMESPACE], "printer": _printer(), "cse": True, "docstring_limit": 0}
     hill = sp.lambdify(args, list(B), **kw)
     state = sp.lambdify(args, list(C), **kw)
-    return sine, lin, hill, state
+    return {"sine": sine, "lin": lin, "hill": hill, "state": state}
 
 
 def _A(x: Fraction) -> arb:
@@ -221,31 +231,78 @@ def sine_rotation(m: float, T: float, column: int, steps: int = 400) -> float:
     (double precision; strictly increasing in ``T``)."""
     g = 4 * math.pi**2
     k = T * T * g
-
-    def f(s, th):
-        l = 1 + m * math.sin(2 * math.pi * s)
-        c, sn = math.cos(th), math.sin(th)
-        return c * c / (l * l) + k * l * sn * sn
-
+    cos, sin = math.cos, math.sin
     th0 = math.pi / 2 if column == 0 else 0.0
     th = th0
     h = 0.5 / steps
+    h2, h6 = h / 2, h / 6
+    for a0, b0, a1, b1, a2, b2 in _rotation_nodes(m, steps):
+        # the right side at a node with 1/l^2 = a, l = b
+        c, sn = cos(th), sin(th)
+        k1 = c * c * a0 + k * b0 * sn * sn
+        t = th + h2 * k1
+        c, sn = cos(t), sin(t)
+        k2 = c * c * a1 + k * b1 * sn * sn
+        t = th + h2 * k2
+        c, sn = cos(t), sin(t)
+        k3 = c * c * a1 + k * b1 * sn * sn
+        t = th + h * k3
+        c, sn = cos(t), sin(t)
+        k4 = c * c * a2 + k * b2 * sn * sn
+        th += h6 * (k1 + 2 * k2 + 2 * k3 + k4)
+    return th - th0
+
+
+@cache
+def _rotation_nodes(m: float, steps: int) -> tuple:
+    """``(1/l^2, l)`` at the start, middle and end of each RK4 step of :func:`sine_rotation`
+    (they do not depend on ``T``)."""
+
+    def node(s: float) -> tuple[float, float]:
+        l = 1 + m * math.sin(2 * math.pi * s)
+        return 1 / (l * l), l
+
+    out = []
+    h = 0.5 / steps
     s = 0.25
     for _ in range(steps):
-        k1 = f(s, th)
-        k2 = f(s + h / 2, th + h / 2 * k1)
-        k3 = f(s + h / 2, th + h / 2 * k2)
-        k4 = f(s + h, th + h * k3)
-        th += h / 6 * (k1 + 2 * k2 + 2 * k3 + k4)
+        out.append((*node(s), *node(s + h / 2), *node(s + h)))
         s += h
-    return th - th0
+    return tuple(out)
 
 
 def _guess(m: float, n: int, column: int) -> float:
     """The ``T`` at which the rotation is ``n pi/2``: bracketed on the monotone rotation, then
-    the Illinois (regula falsi) iteration on it (double precision)."""
-    target = n * math.pi / 2
+    the Illinois (regula falsi) iteration on it (double precision); then the same zero with
+    twice the RK4 steps (secant steps from the first), and Richardson's extrapolation of the
+    two (RK4's error is ``O(h^4)``): a start that the secant refinement needs fewer evaluations
+    from."""
     steps = 200 + 120 * n
+    x1 = _rotation_zero(m, n, column, steps)
+    target = n * math.pi / 2
+
+    def f(T: float) -> float:
+        return sine_rotation(m, T, column, 2 * steps) - target
+
+    a, b = x1, x1 * (1 + 1e-7)
+    fa, fb = f(a), f(b)
+    for _ in range(6):
+        if fb == fa:
+            break
+        a, b, fa = b, b - fb * (b - a) / (fb - fa), fb
+        if abs(b - a) < 1e-14 * abs(b):
+            break
+        fb = f(b)
+    x2 = b
+    extrapolated = x2 + (x2 - x1) / 15
+    # keep the extrapolation only where it is a small correction (else the RK4 zero itself)
+    return extrapolated if abs(x2 - x1) < 1e-4 * abs(x2) else x2
+
+
+def _rotation_zero(m: float, n: int, column: int, steps: int) -> float:
+    """The ``T`` at which the rotation with ``steps`` RK4 steps is ``n pi/2``: bracketed on the
+    monotone rotation, then the Illinois (regula falsi) iteration on it."""
+    target = n * math.pi / 2
 
     def f(T: float) -> float:
         return sine_rotation(m, T, column, steps) - target
@@ -288,27 +345,33 @@ _LOW_BITS = 64
 
 
 def _secant(F, x1: arb, x2: arb, f1: arb, goal: arb, iters: int):
-    """Secant steps on ball midpoints; returns ``(x_last, x_before, f_last, f_before)``, the
-    ``f`` the midpoints of ``F`` there (``f_last`` is ``None`` when the last step converged
-    before ``F`` was evaluated at ``x_last``)."""
+    """Secant steps on ball midpoints from ``x1`` (where ``F`` is ``f1``) and ``x2``; returns
+    ``(x, slope)``: the last iterate, computed but not evaluated, and the slope of the secant
+    through the last two points evaluated.  Stops when a step is below ``goal`` (relative), or
+    when the new iterate's error, about the product of its distances to the last two points
+    over ``|x|`` (the secant's error), is below ``goal/256``."""
     f2 = F(x2).mid()
     for _ in range(iters):
         if f2 == f1:
             break
-        x3 = (x2 - f2 * (x2 - x1) / (f2 - f1)).mid()
+        slope = (f2 - f1) / (x2 - x1)
+        x3 = (x2 - f2 / slope).mid()
+        d = abs(x3 - x2)
+        if d < goal * abs(x3) or d * abs(x3 - x1) < goal * abs(x3) * abs(x3) * arb(2) ** -8:
+            return x3, slope
         x1, f1 = x2, f2
         x2 = x3
-        if abs(x2 - x1) < goal * abs(x2):
-            return x2, x1, None, f1
         f2 = F(x2).mid()
-    return x2, x1, f2, f1
+    return x2, ((f2 - f1) / (x2 - x1) if x2 != x1 and f2 != f1 else None)
 
 
-def _refine(m: Fraction, e: int, x0: float, bits: int) -> arb:
-    """The zero of entry ``e`` of ``G`` near ``x0`` to about ``2^-(bits - 8)`` (relative): the
-    secant method on ball midpoints at :data:`_LOW_BITS` bits first, then (usually) two
-    evaluations at ``bits``, started from the low-precision zero and slope.  Returns the
-    midpoint (not proven: :func:`_enclose` proves the zero)."""
+def _refine(m: Fraction, e: int, x0: float, bits: int) -> tuple[arb, arb | None]:
+    """The zero of entry ``e`` of ``G`` near ``x0`` to about ``2^-(bits - 8)`` (relative), and
+    the slope of the entry there (a secant's): the secant method on ball midpoints at
+    :data:`_LOW_BITS` bits first, then (above ``_LOW_BITS + 12`` bits) Newton and secant steps
+    at ``bits``, started from the low-precision zero and slope (usually two evaluations).
+    Returns midpoints (not proven: :func:`_enclose` proves the zero, and moves a zero that is
+    not yet accurate enough)."""
     with ctx.workprec(_LOW_BITS):
 
         def F_low(T: arb) -> arb:
@@ -316,10 +379,9 @@ def _refine(m: Fraction, e: int, x0: float, bits: int) -> arb:
 
         x1 = arb(x0)
         f1 = F_low(x1).mid()
-        x, xp, fx, fxp = _secant(F_low, x1, arb(x0 * (1 + 1e-9)), f1, arb(2) ** -50, 12)
-        if fx is None and x != xp:  # the values at the last two points, one already known
-            fx = F_low(x).mid()
-        slope = (fx - fxp) / (x - xp) if x != xp else None
+        x, slope = _secant(F_low, x1, arb(x0 * (1 + 1e-9)), f1, arb(2) ** -50, 12)
+    if bits <= _LOW_BITS + 12:
+        return x, slope
     with ctx.workprec(bits):
 
         def F(T: arb) -> arb:
@@ -329,7 +391,8 @@ def _refine(m: Fraction, e: int, x0: float, bits: int) -> arb:
         x1 = arb(x.mid())
         f1 = F(x1).mid()
         if slope is None or slope == 0:
-            return _secant(F, x1, arb((x1 * (1 + arb(2) ** -40)).mid()), f1, goal, 40)[0]
+            x2 = arb((x1 * (1 + arb(2) ** -40)).mid())
+            return _secant(F, x1, x2, f1, goal, 40)
         d_prev = None
         for _ in range(20):
             # a Newton step with the low-precision slope, then secant steps: from 1e-17 off,
@@ -337,30 +400,69 @@ def _refine(m: Fraction, e: int, x0: float, bits: int) -> arb:
             x2 = (x1 - f1 / slope).mid()
             d = abs(x2 - x1)
             if d < goal * abs(x2):
-                return x2
+                return x2, slope
             # a secant step's error is about (the last two steps' product)/|x|
             if d_prev is not None and d * d_prev < goal * abs(x2) * abs(x2) * arb(2) ** -8:
-                return x2
+                return x2, slope
             f2 = F(x2).mid()
             if f2 == f1:
-                return x2
+                return x2, slope
             slope = (f2 - f1) / (x2 - x1)
             x1, f1, d_prev = x2, f2, d
-        return x1
+        return x1, slope
 
 
-def _enclose(m: Fraction, e: int, x: arb, bits: int) -> arb:
-    """A ball around ``x`` at whose ends entry ``e`` of ``G`` has proven opposite signs (so it
-    holds a zero), as narrow as the precision allows."""
+def _opposite(fa: arb, fb: arb) -> bool:
+    return (fa < 0 and fb > 0) or (fa > 0 and fb < 0)
+
+
+def _same(fa: arb, fb: arb) -> bool:
+    return (fa < 0 and fb < 0) or (fa > 0 and fb > 0)
+
+
+def _enclose(m: Fraction, entries: tuple, x: arb, bits: int) -> arb:
+    """A ball around ``x`` at whose ends each entry in ``entries`` of ``G`` has proven opposite
+    signs (so it holds a zero of each), as narrow as the precision allows: half-width
+    ``|x| 2^-(bits - 24)`` first.  Where one entry has the same proven sign at both ends, its
+    zero lies outside: ``x`` moves to the secant's zero through the two ends (twice at most)
+    before the ball is widened."""
     with ctx.workprec(bits):
         for k in range(bits - 24, 8, -8):
             d = abs(x) * arb(2) ** (-k)
-            a, b = (x - d).mid(), (x + d).mid()
-            fa = sine_half_map(m, a)[e]
-            fb = sine_half_map(m, b)[e]
-            if (fa < 0 and fb > 0) or (fa > 0 and fb < 0):
-                return arb.union(a, b)
+            for _ in range(3):
+                a, b = (x - d).mid(), (x + d).mid()
+                Ga, Gb = sine_half_map(m, a), sine_half_map(m, b)
+                if all(_opposite(Ga[e], Gb[e]) for e in entries):
+                    return arb.union(a, b)
+                moved = next((e for e in entries if _same(Ga[e], Gb[e])), None)
+                if moved is None:
+                    break  # a sign not proven at this precision: a wider ball
+                fa, fb = Ga[moved].mid(), Gb[moved].mid()
+                if fa == fb:
+                    break
+                x = (a - fa * (b - a) / (fb - fa)).mid()
     raise CertificationError("no sign change of the edge equation could be proven")
+
+
+def _edges(m: Fraction, n: int, names: tuple, bits: int) -> list:
+    """The enclosures of the zeros of the two entries ``names`` of ``G`` on the edges of order
+    ``n`` at ``bits`` bits.  For an even order the two zeros are tried in one ball first (the
+    even intervals of the sine modulation are closed: :func:`analytic.smooth.sine_closings`),
+    so that the same two evaluations prove both sign changes; where that fails, and for odd
+    orders, each zero is located and enclosed on its own."""
+    if n % 2 == 0:
+        e0, e1 = (_ENTRY[name] for name in names)
+        x, _ = _refine(m, e0, _guess(float(m), n, _COLUMN[names[0]]), bits)
+        try:
+            ball = _enclose(m, (e0, e1), x, bits)
+            return [ball, ball]
+        except CertificationError:
+            pass
+    out = []
+    for name in names:
+        x, _ = _refine(m, _ENTRY[name], _guess(float(m), n, _COLUMN[name]), bits)
+        out.append(_enclose(m, (_ENTRY[name],), x, bits))
+    return out
 
 
 def sine_boundary(order, m, *, digits=30):
@@ -376,11 +478,7 @@ def sine_boundary(order, m, *, digits=30):
     d = as_digits(digits)
     bits = bits_for_digits(d + 6)
     names = _pair(n)
-    balls = []
-    for name in names:
-        x0 = _guess(float(mm), n, _COLUMN[name])
-        x = _refine(mm, _ENTRY[name], x0, bits + 16)
-        balls.append(_enclose(mm, _ENTRY[name], x, bits + 16))
+    balls = _edges(mm, n, names, bits + 16)
     if balls[1] < balls[0]:
         balls, names = balls[::-1], names[::-1]
     lo, hi = balls

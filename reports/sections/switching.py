@@ -27,6 +27,9 @@ ORDERS = (1, 2, 3)
 VALIDITY_M = ("0.1", "0.3", "0.6")
 VALIDITY_TOL = "1e-3"
 DIGITS = 15
+#: the sine's edges: the narrowest width shown (order 5 at m = 3/10, 2.8e-7 at T = 2.46) keeps
+#: its 6 printed digits when each edge is proven to 11 digits (balls of radius ~1e-15)
+SINE_DIGITS = 11
 #: the closings: the sine's orders and depths of the width table; the ramp closing searched
 #: (order, S, a depth bracket around the jump model's closing at m = 3/5, the bracket wanted)
 CLOSE_ORDERS = (1, 2, 3, 4, 5, 6)
@@ -35,15 +38,14 @@ RAMP_CLOSING = (3, Fraction(1, 100), "0.6", "0.62", "1e-10")
 
 
 def _compute():
-    from verify.ramp import jump_validity, ramp_boundary
+    from verify.ramp import jump_validity, ramp_chart
     from verify.smooth import sine_boundary
 
     edges = np.full((len(ORDERS), 2, len(FIG_S)), np.nan)
     for k, n in enumerate(ORDERS):
-        for j, S in enumerate(FIG_S):
-            r = ramp_boundary(n, FIG_M, S, digits=DIGITS)
+        for j, r in enumerate(ramp_chart(n, FIG_M, FIG_S, digits=DIGITS)):
             edges[k, 0, j], edges[k, 1, j] = float(r.lower.mid()), float(r.upper.mid())
-    sine = [sine_boundary(n, FIG_M, digits=20) for n in ORDERS]
+    sine = [sine_boundary(n, FIG_M, digits=SINE_DIGITS) for n in ORDERS]
     validity = [[jump_validity(n, m, VALIDITY_TOL) for m in VALIDITY_M] for n in ORDERS]
     return edges, sine, validity
 
@@ -59,7 +61,7 @@ def _closings(sine_at_fig_m):
     widths = {}
     for n in CLOSE_ORDERS:
         for m in CLOSE_M:
-            b = known.get((n, m)) or sine_boundary(n, m, digits=20)
+            b = known.get((n, m)) or sine_boundary(n, m, digits=SINE_DIGITS)
             disjoint = b.lower_enclosure[1] < b.upper_enclosure[0]
             lo = ball(b.lower, b.radii[0])
             hi = ball(b.upper, b.radii[1])
@@ -129,7 +131,7 @@ def build(ctx: Context) -> Part:
         return inline(math(x, cfg))
 
     E12 = first_order_defect()[0, 1]
-    q = sp.simplify(hill_form(sine_length()).subs(sp.Symbol("gamma", nonnegative=True), 0))
+    q = sp.factor(hill_form(sine_length()).subs(sp.Symbol("gamma", nonnegative=True), 0))
     c_lo, c_hi = sine_first_width()
     m = sp.Symbol("m")
     out: list[Latex] = [
