@@ -89,6 +89,49 @@ ORDER_COLOURS = (
 FRICTION_SHADES = ("#c6dbef", "#6baed6", "#2171b5", "#08306b")
 
 
+#: formula layouts one process keeps: matplotlib keeps 50 per renderer, and each figure written
+#: has a new renderer; the report's figures set about 130 distinct formulas (tick labels, axis
+#: labels), each in several figures, and parsing one takes a few milliseconds
+MATHTEXT_CACHE = 1024
+
+
+def _share_mathtext_layouts() -> None:
+    """Keep matplotlib's formula layouts across renderers, :data:`MATHTEXT_CACHE` of them.
+
+    A layout depends only on the kind of output (vector or raster), the formula, the font, the
+    size, the resolution, the glyph flags -- the key of matplotlib's own cache, less the
+    renderer's parser object -- and the settings of fonts and mathematics, which join the key
+    here, so the figures are the same.  Where matplotlib has no such cache (another version)
+    nothing changes."""
+    import functools
+
+    import matplotlib as mpl
+    from matplotlib import mathtext
+
+    cls = mathtext.MathTextParser
+    parse = getattr(cls.__dict__.get("_parse_cached"), "__wrapped__", None)
+    if parse is None:
+        return
+    settings = tuple(k for k in mpl.rcParams if k.startswith(("font.", "mathtext.", "text.")))
+    one: dict[str, object] = {}  # a parser per kind of output
+
+    @functools.lru_cache(MATHTEXT_CACHE)
+    def layout(kind, rc, s, dpi, prop, antialiased, load_glyph_flags):
+        return parse(one[kind], s, dpi, prop, antialiased, load_glyph_flags)
+
+    def _parse_cached(self, s, dpi, prop, antialiased, load_glyph_flags):
+        kind = getattr(self, "_output_type", None)
+        if kind is None:
+            return parse(self, s, dpi, prop, antialiased, load_glyph_flags)
+        one.setdefault(kind, self)
+        rc = tuple(repr(mpl.rcParams[k]) for k in settings)
+        return layout(kind, rc, s, dpi, prop, antialiased, load_glyph_flags)
+
+    cls._parse_cached = _parse_cached
+
+
+_share_mathtext_layouts()
+
 #: what changes for a language whose letters Computer Modern lacks: DejaVu Serif (shipped with
 #: matplotlib, Cyrillic included) for the text and, so that the two match, for the formulas
 LANGUAGE_RC = {"ru": {"font.serif": ["DejaVu Serif"], "mathtext.fontset": "dejavuserif"}}
