@@ -128,7 +128,7 @@ def _share_mathtext_layouts() -> None:
         rc = tuple(repr(mpl.rcParams[k]) for k in settings)
         return layout(kind, rc, s, dpi, prop, antialiased, load_glyph_flags)
 
-    cls._parse_cached = _parse_cached
+    setattr(cls, "_parse_cached", _parse_cached)  # noqa: B010 - not in the stubs
 
 
 _share_mathtext_layouts()
