@@ -19,7 +19,7 @@ import numpy as np
 from matplotlib.figure import Figure
 
 from . import figures
-from .figures import FORMATS, new_figure, style
+from .figures import FORMATS, new_figure, style, tight_layout
 from .i18n import say, tr
 
 __all__ = ["FAMILY_STYLE", "FORMATS", "pareto_figure", "save_figure"]
@@ -124,7 +124,7 @@ def pareto_figure(panels: Sequence[tuple[str, Sequence[dict]]], *, subtitle: str
             bottom = LEGEND_IN * ((len(handles) + 3) // 4) / fig.get_figheight()
         if subtitle:
             fig.suptitle(subtitle, fontsize=7)
-        fig.tight_layout(pad=0.4, rect=(0, bottom, 1, 1))
+        tight_layout(fig, pad=0.4, rect=(0, bottom, 1, 1))
     return fig
 
 

@@ -5,8 +5,11 @@ Compilation happens in a private temporary directory; only when it succeeds are 
 figures and the PDF moved into the output directory (:func:`reports.output.atomic_directory`), so
 a failed run -- a LaTeX error, an interrupted build -- leaves the previous report untouched.
 Without a TeX engine the source and figures are still written, and :func:`how_to_get_pdf` says
-what to install.  ``latexmk`` is preferred (it reruns as often as cross-references need); plain
-``pdflatex`` is run until the log stops asking for a rerun.
+what to install.  ``pdflatex`` is run until its auxiliary files (:data:`AUXILIARY`: labels, the
+contents, the lists of figures and tables, the bookmarks) come out of a pass as they went in --
+the fixed point ``latexmk`` also waits for, without its start-up and bookkeeping (about 1 s of
+CPU time a build) -- and as long as the log asks for a rerun; three passes for a fresh
+document.  ``latexmk`` is used where asked for (``find_engine("latexmk")``).
 """
 
 from __future__ import annotations
@@ -46,8 +49,13 @@ APT_PACKAGES = (
 #: what the Russian report needs in addition: Cyrillic fonts (T2A) and Russian hyphenation
 APT_PACKAGES_RU = ("texlive-lang-cyrillic", "cm-super")
 
-_MAX_PDFLATEX_RUNS = 4
+_MAX_PDFLATEX_RUNS = 5
 _TIMEOUT = 600
+#: the files a pdflatex pass writes and the next one reads: when none of them changes in a pass,
+#: the next pass would typeset the same document
+AUXILIARY = (".aux", ".toc", ".lof", ".lot", ".out")
+#: what the log says when a pass is not the last one
+_RERUN = re.compile(r"Rerun to get|Label\(s\) may have changed|Rerun LaTeX")
 
 
 class BuildError(RuntimeError):
@@ -77,9 +85,10 @@ class BuildResult:
 
 
 def find_engine(prefer: str | None = None) -> Engine | None:
-    """The TeX engine to use: ``latexmk`` if present (and ``pdflatex`` under it), else
-    ``pdflatex``; ``prefer`` restricts the choice to one of them.  ``None`` when none is found."""
-    names = ("latexmk", "pdflatex") if prefer is None else (prefer,)
+    """The TeX engine to use: ``pdflatex``, rerun by :func:`compile_pdf` until the document is
+    settled; ``prefer="latexmk"`` asks for ``latexmk`` (with ``pdflatex`` under it) instead.
+    ``None`` when none is found."""
+    names = ("pdflatex",) if prefer is None else (prefer,)
     if shutil.which("pdflatex") is None:
         return None
     for name in names:
@@ -144,6 +153,16 @@ def _run(cmd: list[str], cwd: Path) -> subprocess.CompletedProcess:
     )
 
 
+def _auxiliary(work: Path, stem: str) -> dict[str, bytes]:
+    """The contents of the auxiliary files of ``stem`` in ``work`` (:data:`AUXILIARY`)."""
+    out = {}
+    for suffix in AUXILIARY:
+        path = work / f"{stem}{suffix}"
+        if path.exists():
+            out[suffix] = path.read_bytes()
+    return out
+
+
 def compile_pdf(
     tex_name: str, files: Mapping[str, str | bytes], engine: Engine
 ) -> tuple[bytes, str]:
@@ -166,7 +185,8 @@ def compile_pdf(
         else:
             cmds = [[engine.path, *flags, tex_name]] * _MAX_PDFLATEX_RUNS
         log_path = work / f"{stem}.log"
-        for k, cmd in enumerate(cmds):
+        for cmd in cmds:
+            before = _auxiliary(work, stem)
             proc = _run(cmd, work)
             log = (
                 log_path.read_text(encoding="latin-1")
@@ -177,8 +197,8 @@ def compile_pdf(
                 raise BuildError(f"{engine.name} failed on {tex_name}:\n{_log_errors(log)}")
             if (
                 engine.name == "pdflatex"
-                and k >= 1
-                and not re.search(r"Rerun to get|Label\(s\) may have changed", log)
+                and _auxiliary(work, stem) == before
+                and not _RERUN.search(log)
             ):
                 break
         pdf = work / f"{stem}.pdf"

@@ -44,6 +44,7 @@ __all__ = [
     "error_figure",
     "draw_regions",
     "TEXT_WIDTH_IN",
+    "tight_layout",
 ]
 
 #: width of the LaTeX text block (A4, 2.3 cm margins), inches
@@ -89,6 +90,49 @@ ORDER_COLOURS = (
 FRICTION_SHADES = ("#c6dbef", "#6baed6", "#2171b5", "#08306b")
 
 
+#: formula layouts one process keeps: matplotlib keeps 50 per renderer, and each figure written
+#: has a new renderer; the report's figures set about 130 distinct formulas (tick labels, axis
+#: labels), each in several figures, and parsing one takes a few milliseconds
+MATHTEXT_CACHE = 1024
+
+
+def _share_mathtext_layouts() -> None:
+    """Keep matplotlib's formula layouts across renderers, :data:`MATHTEXT_CACHE` of them.
+
+    A layout depends only on the kind of output (vector or raster), the formula, the font, the
+    size, the resolution, the glyph flags -- the key of matplotlib's own cache, less the
+    renderer's parser object -- and the settings of fonts and mathematics, which join the key
+    here, so the figures are the same.  Where matplotlib has no such cache (another version)
+    nothing changes."""
+    import functools
+
+    import matplotlib as mpl
+    from matplotlib import mathtext
+
+    cls = mathtext.MathTextParser
+    parse = getattr(cls.__dict__.get("_parse_cached"), "__wrapped__", None)
+    if parse is None:
+        return
+    settings = tuple(k for k in mpl.rcParams if k.startswith(("font.", "mathtext.", "text.")))
+    one: dict[str, object] = {}  # a parser per kind of output
+
+    @functools.lru_cache(MATHTEXT_CACHE)
+    def layout(kind, rc, s, dpi, prop, antialiased, load_glyph_flags):
+        return parse(one[kind], s, dpi, prop, antialiased, load_glyph_flags)
+
+    def _parse_cached(self, s, dpi, prop, antialiased, load_glyph_flags):
+        kind = getattr(self, "_output_type", None)
+        if kind is None:
+            return parse(self, s, dpi, prop, antialiased, load_glyph_flags)
+        one.setdefault(kind, self)
+        rc = tuple(repr(mpl.rcParams[k]) for k in settings)
+        return layout(kind, rc, s, dpi, prop, antialiased, load_glyph_flags)
+
+    setattr(cls, "_parse_cached", _parse_cached)  # noqa: B010 - not in the stubs
+
+
+_share_mathtext_layouts()
+
 #: what changes for a language whose letters Computer Modern lacks: DejaVu Serif (shipped with
 #: matplotlib, Cyrillic included) for the text and, so that the two match, for the formulas
 LANGUAGE_RC = {"ru": {"font.serif": ["DejaVu Serif"], "mathtext.fontset": "dejavuserif"}}
@@ -112,6 +156,13 @@ def new_figure(
     FigureCanvasPdf(fig)
     axes = fig.subplots(1, ncols, sharey=sharey, squeeze=False)[0]
     return fig, (axes[0] if ncols == 1 else tuple(axes))
+
+
+def tight_layout(fig: Figure, **kw) -> None:
+    """Matplotlib's tight layout (``pad``, ``h_pad``, ``w_pad``, ``rect``), computed when the
+    figure is drawn, with the renderer that draws it: the same positions as
+    ``fig.tight_layout(**kw)`` before the drawing, without measuring every text twice."""
+    fig.set_layout_engine("tight", **kw)
 
 
 def pdf_bytes(fig: Figure, what: str = "report") -> bytes:
@@ -221,7 +272,7 @@ def intervals_figure(
         ax.set_xlim(0, hi)
         if title:
             ax.set_title(title)
-        fig.tight_layout(pad=0.4)
+        tight_layout(fig, pad=0.4)
     return fig
 
 
@@ -250,7 +301,7 @@ def family_figure(
             ax.set_xlabel(r"$T/T_0$")
             ax.set_title(name, fontsize=8, pad=12)
         axes[0].set_ylabel(say(r"modulation depth $m$", r"глубина модуляции $m$"))
-        fig.tight_layout(pad=0.4)
+        tight_layout(fig, pad=0.4)
     return fig
 
 
@@ -284,7 +335,7 @@ def friction_figure(
             ax.set_ylim(0, float(np.nanmax(m)))
         axes[0].set_ylabel(say(r"modulation depth $m$", r"глубина модуляции $m$"))
         axes[-1].legend(loc="upper right")
-        fig.tight_layout(pad=0.4, w_pad=1.8)
+        tight_layout(fig, pad=0.4, w_pad=1.8)
     return fig
 
 
@@ -332,7 +383,7 @@ def island_figure(
             ax.set_title(title)
             ax.set_xlabel(r"$T/T_0$")
         axes[0].set_ylabel(say(r"modulation depth $m$", r"глубина модуляции $m$"))
-        fig.tight_layout(pad=0.4, w_pad=1.8)
+        tight_layout(fig, pad=0.4, w_pad=1.8)
     return fig
 
 
@@ -362,7 +413,7 @@ def error_figure(
             ax.legend(loc="lower right")
             ax.grid(True, which="major", lw=0.3, color="0.85")
         axes[0].set_ylabel(ylabel)
-        fig.tight_layout(pad=0.4)
+        tight_layout(fig, pad=0.4)
     return fig
 
 

@@ -165,6 +165,33 @@ def _second_process(conn, counter, config: Config, directory, packages, names, q
         conn.close()
 
 
+def _start_method() -> str:
+    """How the second process starts: a fork of this one where the system has it and this process
+    runs no other thread (the child then finds the libraries imported, about 2 s of CPU time
+    saved), else a fresh interpreter."""
+    import multiprocessing
+    import threading
+
+    if "fork" in multiprocessing.get_all_start_methods() and threading.active_count() == 1:
+        return "fork"
+    return "spawn"
+
+
+def _preload(names) -> None:
+    """Import what both processes need before the fork, so that it is imported once: the section
+    modules, matplotlib (every process draws figures), the numeric namespaces of sympy's
+    ``lambdify`` and the units package ``sympy.simplify`` imports on its first call."""
+    import sympy
+
+    from . import figures  # noqa: F401 -- matplotlib
+
+    for name in names:
+        load(name)
+    for module in ("numpy", "mpmath"):
+        sympy.lambdify((), 0, modules=module)
+    import sympy.physics.units  # noqa: F401
+
+
 class _Second:
     """The second process, the counter of the shared list of sections and the pipe its results
     come back through."""
@@ -179,7 +206,10 @@ class _Second:
         base = cache_dir()
         if base is not None:
             Cache(base / "analytic").ensure_key()
-        mp = multiprocessing.get_context("spawn")
+        method = _start_method()
+        if method == "fork":
+            _preload(names + queue)
+        mp = multiprocessing.get_context(method)
         self.queue = queue
         self.counter = mp.Value("i", 0)
         self.conn, child = mp.Pipe(duplex=False)
