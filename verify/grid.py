@@ -451,8 +451,11 @@ class _Plan:
         _check_kernel(self)
         self.order = np.array([i for _e, i in rows])
         self.sign = np.array([e for e, _i in rows])
-        # the rows of the order-1 edge that goes to x = pi/2 + theta -> 0 (solved in x after)
-        self.x_rows = [k for k, (e, i) in enumerate(rows) if orders[i] == 1 and e == 0]
+        # the rows of the order-1 edge that goes to x = pi/2 + theta -> 0 (solved in x after,
+        # without friction; with friction that root brackets the lower edge: solved here)
+        self.x_rows = [
+            k for k, (e, i) in enumerate(rows) if orders[i] == 1 and e == 0 and friction is None
+        ]
         tables = _start_tables(system, orders, friction)
         self.table = np.stack([tables[i][e] for e, i in rows])
 
@@ -1527,18 +1530,11 @@ def _damped_brackets(orders, P, om, system, friction):
     """The undamped roots ``(theta_eps=+1, theta_eps=-1)`` (each ``(len(orders), N)``) for the
     parameters ``P`` of the damped normal form, as :func:`normal_edges` gives them: from
     :func:`_frictionless_theta` with the start tables of ``friction = (Q, damping)`` (a function
-    of the key alone), except the order-1 root with ``x = pi/2 + theta`` below ``ORDER1_X / 2``,
-    which that pass leaves to a solve in ``x``: that one from :func:`normal_edges` on the whole
-    grid, as before (next to ``m = 1`` the friction path takes the lower edge of order 1 from its
-    solve in ``x``, :func:`_order1_lower`, and this root only brackets it)."""
+    of the key alone), every root to convergence in ``theta`` (next to ``m = 1`` the friction
+    path takes the lower edge of order 1 from its solve in ``x``, :func:`_order1_lower`, and the
+    root with ``x = pi/2 + theta -> 0`` only brackets it)."""
     theta = np.empty((len(orders), 2, om.size))
     _frictionless_theta(orders.tolist(), P, np.sqrt(om), system, theta, friction)
-    rows = np.nonzero(orders == 1)[0]
-    if rows.size:
-        cols = np.nonzero(~(_HALF_PI + theta[rows[0], 0] >= 0.5 * ORDER1_X + 1e-3))[0]
-        if cols.size:
-            t1 = normal_edges(np.array([[1]]), P)[0][0]
-            theta[rows[:, None], 0, cols] = t1[cols]
     return theta[:, 0], theta[:, 1]
 
 
