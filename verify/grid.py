@@ -20,17 +20,30 @@ Method (all orders and depths at once):
   cached table of roots per order (2048 depths uniform in ``sqrt(1 - m)``, the cubic through
   the four nearest), and takes the first Halley step of every order at once in work arrays kept
   between calls (:func:`_frictionless_theta`), so that it allocates almost nothing per call;
-* friction, normal form: the undamped-form roots (same ``r``, ``beta``) bracket the interval
-  (``D <= D0`` and ``D0 < 0`` outside them), in a grid of at least 256 depths from the same pass
-  as without friction with start tables per ``(system, order, Q, damping model)``
-  (:func:`_damped_brackets`); one compiled call gives ``D``, its first three
-  derivatives and its rounding bound (:func:`verify.derived.with_term_sizes`).  From the values
-  at the undamped roots, the cubic through ``D'`` and ``D''`` there gives the maximiser of ``D``
-  and a guess of ``D`` there; where the guess is positive, both edges at once (Householder steps
-  of order 3 safeguarded by bisection, the first from the values at the undamped roots), kept
-  where they converge to zeros with the edges' slopes on either side of that split; elsewhere
-  the maximiser (Halley steps on ``D'`` where it changes sign) and, where ``D`` is positive
-  there, the edges left and right of it.  Every iteration runs only on the points still moving;
+* friction, normal form, a grid of at least 256 depths away from ``m = 1``: the edges and the
+  maximiser of the indicator ``D`` from start tables of their own per ``(system, order, Q,
+  damping model)`` (2048 depths uniform in ``sqrt(1 - m)``, the cubic through the four nearest;
+  :func:`_table_friction`): one step from there (Householder of order 3 on ``D`` for each edge,
+  Halley on ``D'`` for the maximiser), an entry taken where that proves what the bracketed path
+  below proves -- both edges converged to zeros of ``D`` inside the window with the edges'
+  slopes (``D <= D0 < 0`` there outside the undamped roots: they lie between them), or a
+  maximum of ``D`` below minus its rounding bound at a point between the undamped roots (``D0
+  > 0`` there);
+  every other entry (next to ``m = 1``, next to a threshold, a maximiser at an end of the
+  undamped interval) goes to the bracketed path;
+* friction, normal form, bracketed: the undamped-form roots (same ``r``, ``beta``) bracket the
+  interval (``D <= D0`` and ``D0 < 0`` outside them), in a grid of at least 256 depths from the
+  same pass as without friction with start tables per ``(system, order, Q, damping model)``
+  (:func:`_damped_brackets`); one compiled call gives ``D``, its first four derivatives and its
+  rounding bound (:func:`verify.derived.with_term_sizes`).  From the values at the undamped
+  roots, the cubic through ``D'`` and ``D''`` there gives the maximiser of ``D`` and a guess of
+  ``D`` there; where the guess is positive, both edges at once (Householder steps of order 3
+  safeguarded by bisection, the first from the values at the undamped roots), kept where they
+  converge to zeros with the edges' slopes on either side of that split; elsewhere the
+  maximiser (Halley steps on ``D'`` where it changes sign) and, where ``D`` is positive there,
+  the edges left and right of it (started where the parabola through the maximiser vanishes
+  where the edges are a near-double root).  An edge stops on the error estimate of order 4 of
+  its step (:func:`_step`).  Every iteration runs only on the points still moving;
 * exact model with a critically or over-damped half: the same on the trace form in
   ``zeta = gamma T/2``, inside the window of the order (see :mod:`verify.solve`);
 * near ``m = 1`` (``1 - beta < NEAR_ONE``): Newton steps on the forms for ``m -> 1``
@@ -770,8 +783,12 @@ _TOP_STEP = 1e-5
 _EDGE_RTOL = 2e-16
 _EDGE_STEP = 1e-4
 
+#: the edges after the maximiser start where the parabola through it vanishes where its half
+#: width is below this (a near-double root)
+_PARABOLA_W = 1e-2
 
-def _damped_normal(n, P, edges=None, *, split=False):
+
+def _damped_normal(n, P, edges=None, *, split=False, pair=True):
     """:func:`damped_normal` with the grid's error estimates: also ``undecided`` (the sign of
     ``D`` at the maximiser is within the rounding bound of ``D``) and ``lo_doubt``, ``hi_doubt``
     (the edge's estimated relative error -- the rounding bound of ``D`` over its slope at the
@@ -810,6 +827,7 @@ def _damped_normal(n, P, edges=None, *, split=False):
         left = d1a <= 0
         top = np.where(left, a, b)
         dtop = np.where(left, at_a[0], at_b[0])
+        d2top = np.full(k, np.nan)
         tot = np.where(left, at_a[5], at_b[5])
         tsl = np.where(left, at_a[6], at_b[6])
         within = (d1a > 0) & (d1b < 0)
@@ -823,7 +841,7 @@ def _damped_normal(n, P, edges=None, *, split=False):
         if inside.size:
             ends = (a[inside], b[inside], d1a[inside], d1b[inside])
             x0, guess = _hermite_root(*ends, at_a[2][inside], at_b[2][inside], at_a[0][inside])
-        if inside.size and split:
+        if inside.size and split and pair:
             # where the cubic predicts D > 0 at its maximiser, the edges at once, in the
             # brackets split there; kept where both converge to simple zeros with the slopes of
             # the edges (D increasing through the lower, decreasing through the upper) on either
@@ -850,12 +868,17 @@ def _damped_normal(n, P, edges=None, *, split=False):
             sub = tuple(v[inside] for v in args)
             ends = (a[inside], b[inside], d1a[inside], d1b[inside])
             got = _maximiser(ev, sub, *ends, x0, split=split)
-            top[inside], dtop[inside], tot[inside], tsl[inside] = got
+            top[inside], dtop[inside], tot[inside], tsl[inside], d2top[inside] = got
         noise = NOISE_ULPS * 2.0**-53 * (np.abs(tot) + np.abs(cc + top) * np.abs(tsl))
         undecided = np.abs(dtop) <= noise
         sel = np.nonzero((dtop > 0) & ~solved)[0]
         if sel.size:
-            got = _edge_pair(ev, args, a, b, top[sel], at_a, at_b, sel)
+            # started where the parabola through the maximiser vanishes (right to O(w^2) where
+            # the edges are a near-double root, where steps from the bracket's ends are slow)
+            w = np.sqrt(-2.0 * dtop[sel] / d2top[sel])
+            w[~(w < _PARABOLA_W)] = np.nan  # (elsewhere a step from the ends is better)
+            starts = (top[sel] - w, top[sel] + w)
+            got = _edge_pair(ev, args, a, b, top[sel], at_a, at_b, sel, starts=starts)
             lo[sel], hi[sel], lo_doubt[sel], hi_doubt[sel] = got[:4]
     out = {"a": a, "b": b, "top": top, "dtop": dtop, "lo": lo, "hi": hi}
     out.update(undecided=undecided, lo_doubt=lo_doubt, hi_doubt=hi_doubt)
@@ -887,10 +910,11 @@ def _hermite_root(a, b, ya, yb, sa, sb, da=None):
 
 def _maximiser(ev, args, a, b, d1a, d1b, x0, *, split=False, iterations: int = 100):
     """The maximiser of ``D`` in ``[a, b]`` where ``D'(a) > 0 > D'(b)``, from ``x0``: ``(top,
-    D(top), sum |t_i|, sum |dt_i/dtheta|)`` (the sizes at the last iterate).  Halley steps on
-    ``D'``, a step out of the bracket replaced by bisection, each point dropped once its step is
-    below :data:`_TOP_STEP` (which says why that is enough).  ``split=True``: a point is also
-    dropped once ``D`` exceeds twice its rounding bound there (that point is returned).
+    D(top), sum |t_i|, sum |dt_i/dtheta|, D'')`` (the sizes and ``D''`` at the last iterate).
+    Halley steps on ``D'``, a step out of the bracket replaced by bisection, each point dropped
+    once its step is below :data:`_TOP_STEP` (which says why that is enough).  ``split=True``: a
+    point is also dropped once ``D`` exceeds twice its rounding bound there (that point is
+    returned).
     ``split=False`` (the float stage of the proofs, :mod:`verify.existence`, which start from the
     maximiser itself): each point is iterated until its step is below ``1e-12`` of ``max(c +
     (a + b)/2, 1)``, and ``D`` and the sizes are evaluated at the maximiser found."""
@@ -898,6 +922,7 @@ def _maximiser(ev, args, a, b, d1a, d1b, x0, *, split=False, iterations: int = 1
     tl = _TOP_STEP if split else 0.5e-12 * np.maximum(args[0] + 0.5 * (a + b), 1.0)
     lo, hi = a.copy(), b.copy()
     top, dtop = x.copy(), np.full(x.size, -np.inf)
+    d2top = np.full(x.size, np.nan)
     tot, tsl = np.zeros(x.size), np.zeros(x.size)
     idx = np.arange(x.size)
     sub = args
@@ -927,6 +952,7 @@ def _maximiser(ev, args, a, b, d1a, d1b, x0, *, split=False, iterations: int = 1
             top[idx[j]] = x[j] - sj
             dtop[idx[j]] = D[j] - sj * (D1[j] - sj * (0.5 * D2[j] - sj * D3[j] / 6.0))
             tot[idx[j]], tsl[idx[j]] = T0[j], T1[j]
+            d2top[idx[j]] = D2[j]
         if done.all() or last:
             break
         xn = np.where((xn > lo) & (xn < hi), xn, 0.5 * (lo + hi))
@@ -936,12 +962,12 @@ def _maximiser(ev, args, a, b, d1a, d1b, x0, *, split=False, iterations: int = 1
             tl = tl[keep]
         sub = tuple(v[keep] for v in sub)
     if not split:
-        D, _D1, _D2, _D3, _D4, tot, tsl = ev(top, *args)
+        D, _D1, d2top, _D3, _D4, tot, tsl = ev(top, *args)
         dtop = np.asarray(D, float)
-    return top, dtop, tot, tsl
+    return top, dtop, tot, tsl, d2top
 
 
-def _edge_pair(ev, args, a, b, top, at_a, at_b, sel, iterations: int = 100):
+def _edge_pair(ev, args, a, b, top, at_a, at_b, sel, iterations: int = 100, starts=None):
     """Both edges of the points ``sel`` in one iteration (:func:`_edges`): the lower in ``[a,
     top]`` from ``a``, the upper in ``[top, b]`` from ``b``, the first step of each from the
     values ``at_a``, ``at_b`` there (no new evaluation): ``(lower, upper, lower doubt, upper
@@ -953,6 +979,9 @@ def _edge_pair(ev, args, a, b, top, at_a, at_b, sel, iterations: int = 100):
         [e[sel] - _step(*(v[sel] for v in at[:4]))[0] for e, at in ((a, at_a), (b, at_b))]
     )
     brl, brh = np.concatenate([aa, top]), np.concatenate([top, bb])
+    if starts is not None:  # (where they are inside the brackets)
+        st = np.concatenate(starts)
+        x1 = np.where(np.isfinite(st) & (st > brl) & (st < brh), st, x1)
     x1 = np.where((x1 > brl) & (x1 < brh), x1, 0.5 * (brl + brh))
     sign = np.concatenate([np.ones(k), -np.ones(k)])
     scale = np.maximum(sub[0] + np.concatenate([aa, bb]), 1.0)
@@ -1215,7 +1244,8 @@ def _table_top(ev, parity, args, x):
             sj = s[j]
             t = x[j] - sj
             d = D[j] - sj * (D1[j] - sj * (0.5 * D2[j] - sj * D3[j] / 6.0))
-            noise = NOISE_ULPS * 2.0**-53 * (np.abs(T0[j]) + np.abs(sub[0][j] + x[j]) * np.abs(T1[j]))
+            at = np.abs(sub[0][j] + x[j])
+            noise = NOISE_ULPS * 2.0**-53 * (np.abs(T0[j]) + at * np.abs(T1[j]))
             top[idx[j]], dtop[idx[j]] = t, d
             ok[idx[j]] = (D2[j] < 0) & (d < -noise) & (np.abs(t) < _HALF_PI)
         keep = ~done & np.isfinite(s)
@@ -1729,9 +1759,8 @@ def _fill_normal(
             ri, ci = np.nonzero(~fast["done"][rows][:, need])
             if ri.size:  # the entries left, one by one (orders and depths flattened)
                 Ps = NormalParams(*(getattr(Pn, f.name)[ci] for f in fields(NormalParams)))
-                got = _damped_normal(
-                    orders_arr[rows][ri], Ps, edges=(t1[rows][ri, ci], t2[rows][ri, ci]), split=True
-                )
+                ends = (t1[rows][ri, ci], t2[rows][ri, ci])
+                got = _damped_normal(orders_arr[rows][ri], Ps, ends, split=True, pair=False)
                 for k in _RESULT_KEYS:
                     res[k][ri, need[ci]] = got[k]
         near = near_one_forms()[2]
