@@ -1257,7 +1257,7 @@ def _table_top(ev, parity, args, x):
     if sel.size:  # the undamped indicator there: D with u = g = 0 (the same derived form)
         c, r2, _u, beta, _g = (v[sel] for v in args)
         zero = np.zeros(sel.size)
-        d0 = _indicator_all(parity, False)(top[sel], c, r2, zero, beta, zero)[0]
+        d0 = indicator(parity).compiled("numpy", 0)(top[sel], c, r2, zero, beta, zero)
         ok[sel] = np.asarray(d0, float) > 1e-12
     return top, dtop, ok
 
