@@ -41,8 +41,7 @@ Method (all orders and depths at once):
   safeguarded by bisection, the first from the values at the undamped roots), kept where they
   converge to zeros with the edges' slopes on either side of that split; elsewhere the
   maximiser (Halley steps on ``D'`` where it changes sign) and, where ``D`` is positive there,
-  the edges left and right of it (started where the parabola through the maximiser vanishes
-  where the edges are a near-double root).  An edge stops on the error estimate of order 4 of
+  the edges left and right of it.  An edge stops on the error estimate of order 4 of
   its step (:func:`_step`).  Every iteration runs only on the points still moving;
 * exact model with a critically or over-damped half: the same on the trace form in
   ``zeta = gamma T/2``, inside the window of the order (see :mod:`verify.solve`);
@@ -783,10 +782,6 @@ _TOP_STEP = 1e-5
 _EDGE_RTOL = 2e-16
 _EDGE_STEP = 1e-4
 
-#: the edges after the maximiser start where the parabola through it vanishes where its half
-#: width is below this (a near-double root)
-_PARABOLA_W = 1e-2
-
 
 def _damped_normal(n, P, edges=None, *, split=False, pair=True):
     """:func:`damped_normal` with the grid's error estimates: also ``undecided`` (the sign of
@@ -827,7 +822,6 @@ def _damped_normal(n, P, edges=None, *, split=False, pair=True):
         left = d1a <= 0
         top = np.where(left, a, b)
         dtop = np.where(left, at_a[0], at_b[0])
-        d2top = np.full(k, np.nan)
         tot = np.where(left, at_a[5], at_b[5])
         tsl = np.where(left, at_a[6], at_b[6])
         within = (d1a > 0) & (d1b < 0)
@@ -868,17 +862,12 @@ def _damped_normal(n, P, edges=None, *, split=False, pair=True):
             sub = tuple(v[inside] for v in args)
             ends = (a[inside], b[inside], d1a[inside], d1b[inside])
             got = _maximiser(ev, sub, *ends, x0, split=split)
-            top[inside], dtop[inside], tot[inside], tsl[inside], d2top[inside] = got
+            top[inside], dtop[inside], tot[inside], tsl[inside] = got
         noise = NOISE_ULPS * 2.0**-53 * (np.abs(tot) + np.abs(cc + top) * np.abs(tsl))
         undecided = np.abs(dtop) <= noise
         sel = np.nonzero((dtop > 0) & ~solved)[0]
         if sel.size:
-            # started where the parabola through the maximiser vanishes (right to O(w^2) where
-            # the edges are a near-double root, where steps from the bracket's ends are slow)
-            w = np.sqrt(-2.0 * dtop[sel] / d2top[sel])
-            w[~(w < _PARABOLA_W)] = np.nan  # (elsewhere a step from the ends is better)
-            starts = (top[sel] - w, top[sel] + w)
-            got = _edge_pair(ev, args, a, b, top[sel], at_a, at_b, sel, starts=starts)
+            got = _edge_pair(ev, args, a, b, top[sel], at_a, at_b, sel)
             lo[sel], hi[sel], lo_doubt[sel], hi_doubt[sel] = got[:4]
     out = {"a": a, "b": b, "top": top, "dtop": dtop, "lo": lo, "hi": hi}
     out.update(undecided=undecided, lo_doubt=lo_doubt, hi_doubt=hi_doubt)
@@ -910,7 +899,7 @@ def _hermite_root(a, b, ya, yb, sa, sb, da=None):
 
 def _maximiser(ev, args, a, b, d1a, d1b, x0, *, split=False, iterations: int = 100):
     """The maximiser of ``D`` in ``[a, b]`` where ``D'(a) > 0 > D'(b)``, from ``x0``: ``(top,
-    D(top), sum |t_i|, sum |dt_i/dtheta|, D'')`` (the sizes and ``D''`` at the last iterate).
+    D(top), sum |t_i|, sum |dt_i/dtheta|)`` (the sizes at the last iterate).
     Halley steps on ``D'``, a step out of the bracket replaced by bisection, each point dropped
     once its step is below :data:`_TOP_STEP` (which says why that is enough).  ``split=True``: a
     point is also dropped once ``D`` exceeds twice its rounding bound there (that point is
@@ -922,7 +911,6 @@ def _maximiser(ev, args, a, b, d1a, d1b, x0, *, split=False, iterations: int = 1
     tl = _TOP_STEP if split else 0.5e-12 * np.maximum(args[0] + 0.5 * (a + b), 1.0)
     lo, hi = a.copy(), b.copy()
     top, dtop = x.copy(), np.full(x.size, -np.inf)
-    d2top = np.full(x.size, np.nan)
     tot, tsl = np.zeros(x.size), np.zeros(x.size)
     idx = np.arange(x.size)
     sub = args
@@ -952,7 +940,6 @@ def _maximiser(ev, args, a, b, d1a, d1b, x0, *, split=False, iterations: int = 1
             top[idx[j]] = x[j] - sj
             dtop[idx[j]] = D[j] - sj * (D1[j] - sj * (0.5 * D2[j] - sj * D3[j] / 6.0))
             tot[idx[j]], tsl[idx[j]] = T0[j], T1[j]
-            d2top[idx[j]] = D2[j]
         if done.all() or last:
             break
         xn = np.where((xn > lo) & (xn < hi), xn, 0.5 * (lo + hi))
@@ -962,12 +949,12 @@ def _maximiser(ev, args, a, b, d1a, d1b, x0, *, split=False, iterations: int = 1
             tl = tl[keep]
         sub = tuple(v[keep] for v in sub)
     if not split:
-        D, _D1, d2top, _D3, _D4, tot, tsl = ev(top, *args)
+        D, _D1, _D2, _D3, _D4, tot, tsl = ev(top, *args)
         dtop = np.asarray(D, float)
-    return top, dtop, tot, tsl, d2top
+    return top, dtop, tot, tsl
 
 
-def _edge_pair(ev, args, a, b, top, at_a, at_b, sel, iterations: int = 100, starts=None):
+def _edge_pair(ev, args, a, b, top, at_a, at_b, sel, iterations: int = 100):
     """Both edges of the points ``sel`` in one iteration (:func:`_edges`): the lower in ``[a,
     top]`` from ``a``, the upper in ``[top, b]`` from ``b``, the first step of each from the
     values ``at_a``, ``at_b`` there (no new evaluation): ``(lower, upper, lower doubt, upper
@@ -979,9 +966,6 @@ def _edge_pair(ev, args, a, b, top, at_a, at_b, sel, iterations: int = 100, star
         [e[sel] - _step(*(v[sel] for v in at[:4]))[0] for e, at in ((a, at_a), (b, at_b))]
     )
     brl, brh = np.concatenate([aa, top]), np.concatenate([top, bb])
-    if starts is not None:  # (where they are inside the brackets)
-        st = np.concatenate(starts)
-        x1 = np.where(np.isfinite(st) & (st > brl) & (st < brh), st, x1)
     x1 = np.where((x1 > brl) & (x1 < brh), x1, 0.5 * (brl + brh))
     sign = np.concatenate([np.ones(k), -np.ones(k)])
     scale = np.maximum(sub[0] + np.concatenate([aa, bb]), 1.0)
