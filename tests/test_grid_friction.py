@@ -203,3 +203,74 @@ def test_one_call_gives_the_forms_and_their_term_sizes(parity):
     sizes = np.abs(want[4]) + np.abs(want[5])  # every value is a sum of terms of these sizes
     for got, ref in zip(both, want, strict=True):
         assert np.all(np.abs(got - ref) <= 1e-14 * (sizes + np.abs(ref)))
+
+
+@pytest.mark.parametrize("parity", [1, -1])
+def test_one_call_gives_the_fourth_derivative(parity):
+    """``with_term_sizes(form, 4)`` (the grid's stopping test of order 4 needs ``D''''``) gives the
+    same first values and sizes as ``with_term_sizes(form)``, and as its fifth value the
+    derivative of ``D'''`` differentiated by sympy and lambdified on its own."""
+    import sympy as sp
+
+    from verify.derived import indicator, with_term_sizes
+
+    rng = np.random.default_rng(11)
+    k = 200
+    theta = rng.uniform(-1.5, 1.5, k)
+    c = rng.integers(1, 7, k) * (np.pi / 2)
+    r2 = rng.uniform(0.0, 0.9, k)
+    args = (theta, c, r2, 1 - r2, rng.uniform(0.0, 1.0, k), rng.uniform(0.0, 0.2, k))
+    form = indicator(parity).real
+    three = with_term_sizes(form).compiled("numpy", (0, 1, 2, 3, 4, 5))(*args)
+    four = with_term_sizes(form, 4).compiled("numpy", (0, 1, 2, 3, 4, 5, 6))(*args)
+    d4 = sp.lambdify(form.args, sp.diff(form.exprs[3], form.args[0]), "numpy")(*args)
+    sizes = np.abs(three[4]) + np.abs(three[5])
+    for got, ref in zip(four[:4] + four[5:], three, strict=True):
+        assert np.all(np.abs(got - ref) <= 1e-14 * (sizes + np.abs(ref)))
+    assert np.all(np.abs(four[4] - d4) <= 1e-13 * (16 * sizes + np.abs(d4)))
+
+
+@pytest.mark.parametrize("damping", ["exact", "paper"])
+def test_table_path_agrees_with_the_bracketed_path(damping):
+    """The entries the grid with friction takes from the start tables of its edges
+    (:func:`verify.grid._table_friction`: most of a grid of 1000 depths) against the bracketed
+    path (:func:`verify.grid._damped_normal`, the float stage of the proofs: the maximiser to
+    1e-12, the edges safeguarded by bisection) at the same parameters: the same existence, and
+    edges within 1e-15 of ``max(c + theta, 1)`` (except the order-1 lower edge where ``x = pi/2 +
+    theta`` is below ``ORDER1_X_DAMPED``: the grid solves it again in ``x``, and in ``theta`` both
+    paths leave a few ulp of ``pi/2`` there)."""
+    from dataclasses import fields
+
+    from verify.derived import backend
+    from verify.grid import (
+        NEAR_ONE,
+        ORDER1_X_DAMPED,
+        NormalParams,
+        _damped_normal,
+        _table_friction,
+    )
+    from verify.params import normal_params
+
+    ms = (np.arange(1000) + 0.5) / 1000
+    om = 1 - ms
+    P = normal_params(ms, 7.0, damping, backend("numpy"), om=om)
+    P = NormalParams(*(np.asarray(getattr(P, f.name), float) * np.ones(ms.size) for f in fields(P)))
+    orders = np.array(ORDERS)
+    far = np.nonzero(P.bm >= NEAR_ONE)[0]
+    from analytic.system import PAPER
+
+    fast = _table_friction(orders, P, np.sqrt(om), PAPER, (7.0, damping), far)
+    done = fast["done"]
+    assert done.sum() >= 0.85 * done.size  # the tables carry the grid
+    for parity in (1, 0):
+        rows = np.nonzero(orders % 2 == parity)[0]
+        ref = _damped_normal(orders[rows][:, None], P)
+        for key in ("lo", "hi"):
+            got, want = fast[key][rows], ref[key]
+            sel = done[rows]
+            assert np.array_equal(np.isfinite(got[sel]), np.isfinite(want[sel]))
+            both = sel & np.isfinite(got)
+            if key == "lo" and parity == 1:  # (order 1 is the first odd row)
+                both[0] &= np.pi / 2 + want[0] >= ORDER1_X_DAMPED
+            scale = np.maximum(np.abs(orders[rows][:, None] * np.pi / 2 + want), 1.0)
+            assert np.all(np.abs(got - want)[both] <= 1e-15 * scale[both])

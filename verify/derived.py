@@ -375,7 +375,10 @@ def with_term_sizes(form: Form, count: int = 3) -> Form:
         terms = sp.Add.make_args(sp.expand(form.exprs[0], deep=False))
         total = sp.Add(*(sp.Abs(t) for t in terms))
         slope = sp.Add(*(sp.Abs(sp.diff(t, var)) for t in terms))
-        exprs = tuple(form.exprs[: count + 1]) + (total, slope)
+        derivs = tuple(form.exprs[: count + 1])
+        if len(derivs) < count + 1:  # more derivatives than the form keeps
+            derivs = derivs + _derivatives(derivs[-1], var, count + 1 - len(derivs))[1:]
+        exprs = derivs + (total, slope)
         out = Form(f"{form.title} with term sizes", form.args, exprs)
         form._cache[key] = out
     return out

@@ -20,17 +20,29 @@ Method (all orders and depths at once):
   cached table of roots per order (2048 depths uniform in ``sqrt(1 - m)``, the cubic through
   the four nearest), and takes the first Halley step of every order at once in work arrays kept
   between calls (:func:`_frictionless_theta`), so that it allocates almost nothing per call;
-* friction, normal form: the undamped-form roots (same ``r``, ``beta``) bracket the interval
-  (``D <= D0`` and ``D0 < 0`` outside them), in a grid of at least 256 depths from the same pass
-  as without friction with start tables per ``(system, order, Q, damping model)``
-  (:func:`_damped_brackets`); one compiled call gives ``D``, its first three
-  derivatives and its rounding bound (:func:`verify.derived.with_term_sizes`).  From the values
-  at the undamped roots, the cubic through ``D'`` and ``D''`` there gives the maximiser of ``D``
-  and a guess of ``D`` there; where the guess is positive, both edges at once (Householder steps
-  of order 3 safeguarded by bisection, the first from the values at the undamped roots), kept
-  where they converge to zeros with the edges' slopes on either side of that split; elsewhere
-  the maximiser (Halley steps on ``D'`` where it changes sign) and, where ``D`` is positive
-  there, the edges left and right of it.  Every iteration runs only on the points still moving;
+* friction, normal form, a grid of at least 256 depths away from ``m = 1``: the edges and the
+  maximiser of the indicator ``D`` from start tables of their own per ``(system, order, Q,
+  damping model)`` (2048 depths uniform in ``sqrt(1 - m)``, the cubic through the four nearest;
+  :func:`_table_friction`): one step from there (Householder of order 3 on ``D`` for each edge,
+  Halley on ``D'`` for the maximiser), an entry taken where that proves what the bracketed path
+  below proves -- both edges converged to zeros of ``D`` inside the window with the edges'
+  slopes (``D <= D0 < 0`` there outside the undamped roots: they lie between them), or a
+  maximum of ``D`` below minus its rounding bound at a point between the undamped roots (``D0
+  > 0`` there);
+  every other entry (next to ``m = 1``, next to a threshold, a maximiser at an end of the
+  undamped interval) goes to the bracketed path;
+* friction, normal form, bracketed: the undamped-form roots (same ``r``, ``beta``) bracket the
+  interval (``D <= D0`` and ``D0 < 0`` outside them), in a grid of at least 256 depths from the
+  same pass as without friction with start tables per ``(system, order, Q, damping model)``
+  (:func:`_damped_brackets`); one compiled call gives ``D``, its first four derivatives and its
+  rounding bound (:func:`verify.derived.with_term_sizes`).  From the values at the undamped
+  roots, the cubic through ``D'`` and ``D''`` there gives the maximiser of ``D`` and a guess of
+  ``D`` there; where the guess is positive, both edges at once (Householder steps of order 3
+  safeguarded by bisection, the first from the values at the undamped roots), kept where they
+  converge to zeros with the edges' slopes on either side of that split; elsewhere the
+  maximiser (Halley steps on ``D'`` where it changes sign) and, where ``D`` is positive there,
+  the edges left and right of it.  An edge stops on the error estimate of order 4 of
+  its step (:func:`_step`).  Every iteration runs only on the points still moving;
 * exact model with a critically or over-damped half: the same on the trace form in
   ``zeta = gamma T/2``, inside the window of the order (see :mod:`verify.solve`);
 * near ``m = 1`` (``1 - beta < NEAR_ONE``): Newton steps on the forms for ``m -> 1``
@@ -451,8 +463,11 @@ class _Plan:
         _check_kernel(self)
         self.order = np.array([i for _e, i in rows])
         self.sign = np.array([e for e, _i in rows])
-        # the rows of the order-1 edge that goes to x = pi/2 + theta -> 0 (solved in x after)
-        self.x_rows = [k for k, (e, i) in enumerate(rows) if orders[i] == 1 and e == 0]
+        # the rows of the order-1 edge that goes to x = pi/2 + theta -> 0 (solved in x after,
+        # without friction; with friction that root brackets the lower edge: solved here)
+        self.x_rows = [
+            k for k, (e, i) in enumerate(rows) if orders[i] == 1 and e == 0 and friction is None
+        ]
         tables = _start_tables(system, orders, friction)
         self.table = np.stack([tables[i][e] for e, i in rows])
 
@@ -746,11 +761,12 @@ def damped_normal(n, P, edges=None):
 
 @cache
 def _indicator_all(parity: int, sizes: bool = True):
-    """``(D, D', D'', D''', sum |t_i|, sum |dt_i/dtheta|)`` of the indicator of ``parity`` in one
-    compiled numpy call (:func:`verify.derived.with_term_sizes`: six transcendental calls);
-    ``sizes=False``: the first four only."""
-    orders = (0, 1, 2, 3, 4, 5) if sizes else (0, 1, 2, 3)
-    return with_term_sizes(indicator(parity).real).compiled("numpy", orders)
+    """``(D, D', D'', D''', D'''', sum |t_i|, sum |dt_i/dtheta|)`` of the indicator of ``parity``
+    in one compiled numpy call (:func:`verify.derived.with_term_sizes`: six transcendental
+    calls); ``sizes=False``: ``(D, D', D'', D''')`` only."""
+    if not sizes:
+        return with_term_sizes(indicator(parity).real).compiled("numpy", (0, 1, 2, 3))
+    return with_term_sizes(indicator(parity).real, 4).compiled("numpy", (0, 1, 2, 3, 4, 5, 6))
 
 
 #: the maximiser of ``D`` is taken once its Halley step (on ``D'``) is below this (absolute, in
@@ -767,7 +783,7 @@ _EDGE_RTOL = 2e-16
 _EDGE_STEP = 1e-4
 
 
-def _damped_normal(n, P, edges=None, *, split=False):
+def _damped_normal(n, P, edges=None, *, split=False, pair=True):
     """:func:`damped_normal` with the grid's error estimates: also ``undecided`` (the sign of
     ``D`` at the maximiser is within the rounding bound of ``D``) and ``lo_doubt``, ``hi_doubt``
     (the edge's estimated relative error -- the rounding bound of ``D`` over its slope at the
@@ -798,19 +814,18 @@ def _damped_normal(n, P, edges=None, *, split=False):
     cc = args[0]
     far = _full(np.asarray(P.bm) >= NEAR_ONE, shape).ravel() if split else None
     with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
-        at_a = _indicator_all(parity, False)(a, *args)  # (the sizes only where needed)
-        at_b = _indicator_all(parity, False)(b, *args)
+        # both ends in one call (with the sizes, for a maximiser at an end)
+        k = a.size
+        both = ev(np.concatenate([a, b]), *(np.concatenate([v, v]) for v in args))
+        at_a, at_b = tuple(v[:k] for v in both), tuple(v[k:] for v in both)
         d1a, d1b = at_a[1], at_b[1]
         left = d1a <= 0
         top = np.where(left, a, b)
         dtop = np.where(left, at_a[0], at_b[0])
-        tot, tsl = np.zeros(a.size), np.zeros(a.size)
+        tot = np.where(left, at_a[5], at_b[5])
+        tsl = np.where(left, at_a[6], at_b[6])
         within = (d1a > 0) & (d1b < 0)
         inside = np.nonzero(within)[0]
-        end = np.nonzero(~within)[0]
-        if end.size:  # the maximiser is an end: the sizes there
-            got = ev(top[end], *(v[end] for v in args))
-            tot[end], tsl[end] = got[4], got[5]
         lo = np.full(a.size, np.nan)
         hi = np.full(a.size, np.nan)
         lo_doubt = np.zeros(a.size, bool)
@@ -820,7 +835,7 @@ def _damped_normal(n, P, edges=None, *, split=False):
         if inside.size:
             ends = (a[inside], b[inside], d1a[inside], d1b[inside])
             x0, guess = _hermite_root(*ends, at_a[2][inside], at_b[2][inside], at_a[0][inside])
-        if inside.size and split:
+        if inside.size and split and pair:
             # where the cubic predicts D > 0 at its maximiser, the edges at once, in the
             # brackets split there; kept where both converge to simple zeros with the slopes of
             # the edges (D increasing through the lower, decreasing through the upper) on either
@@ -884,10 +899,11 @@ def _hermite_root(a, b, ya, yb, sa, sb, da=None):
 
 def _maximiser(ev, args, a, b, d1a, d1b, x0, *, split=False, iterations: int = 100):
     """The maximiser of ``D`` in ``[a, b]`` where ``D'(a) > 0 > D'(b)``, from ``x0``: ``(top,
-    D(top), sum |t_i|, sum |dt_i/dtheta|)`` (the sizes at the last iterate).  Halley steps on
-    ``D'``, a step out of the bracket replaced by bisection, each point dropped once its step is
-    below :data:`_TOP_STEP` (which says why that is enough).  ``split=True``: a point is also
-    dropped once ``D`` exceeds twice its rounding bound there (that point is returned).
+    D(top), sum |t_i|, sum |dt_i/dtheta|)`` (the sizes at the last iterate).
+    Halley steps on ``D'``, a step out of the bracket replaced by bisection, each point dropped
+    once its step is below :data:`_TOP_STEP` (which says why that is enough).  ``split=True``: a
+    point is also dropped once ``D`` exceeds twice its rounding bound there (that point is
+    returned).
     ``split=False`` (the float stage of the proofs, :mod:`verify.existence`, which start from the
     maximiser itself): each point is iterated until its step is below ``1e-12`` of ``max(c +
     (a + b)/2, 1)``, and ``D`` and the sizes are evaluated at the maximiser found."""
@@ -899,7 +915,7 @@ def _maximiser(ev, args, a, b, d1a, d1b, x0, *, split=False, iterations: int = 1
     idx = np.arange(x.size)
     sub = args
     for it in range(iterations):
-        D, D1, D2, D3, T0, T1 = ev(x, *sub)
+        D, D1, D2, D3, _D4, T0, T1 = ev(x, *sub)
         lo = np.where(D1 > 0, x, lo)
         hi = np.where(D1 < 0, x, hi)
         s = D1 / D2
@@ -933,7 +949,7 @@ def _maximiser(ev, args, a, b, d1a, d1b, x0, *, split=False, iterations: int = 1
             tl = tl[keep]
         sub = tuple(v[keep] for v in sub)
     if not split:
-        D, _D1, _D2, _D3, tot, tsl = ev(top, *args)
+        D, _D1, _D2, _D3, _D4, tot, tsl = ev(top, *args)
         dtop = np.asarray(D, float)
     return top, dtop, tot, tsl
 
@@ -957,16 +973,24 @@ def _edge_pair(ev, args, a, b, top, at_a, at_b, sel, iterations: int = 100):
     return root[:k], root[k:], unsure[:k], unsure[k:], good[:k] & good[k:]
 
 
-def _step(D, D1, D2, D3):
-    """Householder's step of order 3 for a zero of ``D`` (its error after the step ~ step^4; the
-    third derivative comes with every evaluation anyway) and Halley's estimate ``K step^3`` of the
-    error a step of order 2 would leave, ``K = |D'''|/(6 |D'|) + (D''/(2 D'))^2`` (an upper
-    estimate of what this step leaves): ``(step, err)``."""
+def _step(D, D1, D2, D3, D4=None):
+    """Householder's step of order 3 for a zero of ``D`` (convergence of order 4; the third
+    derivative comes with every evaluation anyway) and an estimate of the error it leaves:
+    ``(step, err)``.  With ``D4`` (the fourth derivative): ``K step^4``, ``K = |c2|^3 + 2 |c2 c3|
+    + |c4|``, ``c_k = D^(k)/(k! D')`` (the error after the step is ``(c2^3 - 2 c2 c3 + c4) e^4``
+    to leading order, ``e`` the error before it, which the step equals to a relative ``O(e^3)``);
+    without it, Halley's ``K step^3`` with ``K = |c3| + c2^2`` (what a step of order 2 would
+    leave; an upper estimate)."""
     h = 0.5 * D2 / D1
     q = D / D1
-    s = q * (1.0 - q * h) / (1.0 - q * (2.0 * h - q * D3 / (6.0 * D1)))  # (NaN where D' = 0)
+    c3 = D3 / (6.0 * D1)
+    s = q * (1.0 - q * h) / (1.0 - q * (2.0 * h - q * c3))  # (NaN where D' = 0)
     a = np.abs(s)
-    return s, (np.abs(D3) / (6.0 * np.abs(D1)) + h * h) * (a * a * a)
+    if D4 is None:
+        return s, (np.abs(c3) + h * h) * (a * a * a)
+    ah = np.abs(h)
+    a2 = a * a
+    return s, (ah * (ah * ah + 2.0 * np.abs(c3)) + np.abs(D4 / (24.0 * D1))) * (a2 * a2)
 
 
 def _edges(ev, args, lo, hi, x, sign, scale, *, iterations: int = 100):
@@ -984,11 +1008,11 @@ def _edges(ev, args, lo, hi, x, sign, scale, *, iterations: int = 100):
     idx = np.arange(x.size)
     sub, sg, sc = args, sign, scale
     for it in range(iterations):
-        D, D1, D2, D3, T0, T1 = ev(x, *sub)
+        D, D1, D2, D3, D4, T0, T1 = ev(x, *sub)
         f = sg * D
         lo = np.where(f < 0, x, lo)
         hi = np.where(f > 0, x, hi)
-        s, err = _step(D, D1, D2, D3)
+        s, err = _step(D, D1, D2, D3, D4)
         done = (err <= _EDGE_RTOL * sc) & (np.abs(s) <= _EDGE_STEP)
         converged = done.copy()
         if it >= 2:  # (a bracket this narrow takes more than two steps)
@@ -1015,6 +1039,211 @@ def _edges(ev, args, lo, hi, x, sign, scale, *, iterations: int = 100):
         idx, x, lo, hi, sg, sc = idx[keep], xn[keep], lo[keep], hi[keep], sg[keep], sc[keep]
         sub = tuple(v[keep] for v in sub)
     return root, doubt, good
+
+
+# ---------------------------------------------------------------------------------------------
+# the grid with friction: start tables of the edges themselves
+
+#: the fast path with friction takes at most this many steps per edge or maximiser (a point that
+#: has not converged by then goes to the bracketed path; from the tables, one step converges
+#: nearly everywhere)
+_TABLE_STEPS = 1
+
+
+def _edge_tables(system, orders, friction) -> list:
+    """For each order ``n`` of ``orders``: the friction edges and the maximiser of ``D`` at the
+    depths of :func:`_start_tables` (``m = 1 - rho^2``), rows ``(lower, upper, top)`` (``theta``),
+    shape ``(3, K)``, read-only: ``lower``, ``upper`` NaN where the interval does not exist,
+    ``top`` the maximiser where it does not (NaN where it does, where the maximiser over the
+    undamped interval is one of its ends, and at every node where the normal form does not
+    apply).  Starting values only (:func:`_table_friction` proves every
+    point it takes from them and hands the rest to the bracketed path), computed once per
+    ``(system, n, Q, damping)`` by :func:`_damped_normal` at the nodes: they cannot change a
+    result."""
+    key = lambda n: (system, n, friction, "edges")  # noqa: E731
+    found = {n: _TABLES.get(key(n)) for n in set(orders)}
+    missing = sorted(n for n, tab in found.items() if tab is None)
+    if missing:
+        rho = (np.arange(START_NODES) + 0.5) / START_NODES
+        om = rho * rho
+        with np.errstate(all="ignore"):
+            P = normal_params(1 - om, friction[0], friction[1], _NP, system, om=om)
+            P = NormalParams(
+                *(np.asarray(getattr(P, f.name), float) * np.ones(om.shape) for f in fields(P))
+            )
+        ok = np.isfinite(P.r) & np.isfinite(P.beta) & (P.r >= 0) & (P.beta > 0)
+        ok &= np.isfinite(P.g) & np.isfinite(P.u)
+        sub = NormalParams(*(getattr(P, f.name)[ok] for f in fields(P)))
+        tabs = {n: np.full((3, START_NODES), np.nan) for n in missing}
+        for parity in (1, 0):
+            ns = [n for n in missing if n % 2 == parity]
+            if not ns or not ok.any():
+                continue
+            res = _damped_normal(np.array(ns)[:, None], sub, split=False)
+            for k, n in enumerate(ns):
+                lo, hi, top = res["lo"][k], res["hi"][k], res["top"][k]
+                both = np.isfinite(lo) & np.isfinite(hi)
+                # (a maximiser at an end of the undamped interval: none inside, no start)
+                inner = (top > res["a"][k]) & (top < res["b"][k])
+                tabs[n][0, ok] = np.where(both, lo, np.nan)
+                tabs[n][1, ok] = np.where(both, hi, np.nan)
+                tabs[n][2, ok] = np.where(both | ~inner, np.nan, top)
+        if len(_TABLES) + len(missing) > _TABLES_MAX:
+            _TABLES.clear()
+        for n in missing:
+            tab = tabs[n]
+            tab.flags.writeable = False
+            found[n] = _TABLES[key(n)] = tab
+    return [found[n] for n in orders]
+
+
+def _table_friction(orders, P, rho, system, friction, cols) -> dict:
+    """The grid with friction from the start tables of its edges (:func:`_edge_tables`), for the
+    depths ``cols`` (each with ``1 - beta >=`` :data:`NEAR_ONE`): arrays ``(len(orders), N)`` as
+    :func:`_damped_normal` gives them (``lo``, ``hi``, ``top``, ``dtop``, ``undecided``,
+    ``lo_doubt``, ``hi_doubt``) and ``done``, the entries taken here; the others go to the
+    bracketed path.
+
+    Where the four nodes nearest a depth all have the interval: steps of :func:`_step` on ``D``
+    from the cubic through the nodes' edges, an entry taken where both edges converge (the
+    estimate of order 4) to zeros inside the window ``|theta| < pi/2`` with ``D`` increasing
+    through the lower and decreasing through the upper, the lower below the upper.  Inside the
+    window ``D <= D0 < 0`` outside the undamped roots, so these are zeros of ``D`` between them,
+    and with one zero of ``D`` each side of its maximiser there (the structure the bracketed path
+    relies on) they are the edges and the interval exists.  Where the four nodes all lack it:
+    Halley steps on ``D'`` from the cubic through the nodes' maximisers, an entry taken (no
+    interval) where they converge (step below :data:`_TOP_STEP`) to a maximum ``D'' < 0`` with
+    ``D`` below minus its rounding bound there and the undamped indicator ``D0`` (``D`` with
+    ``u = g = 0``) above ``1e-12`` (so the point lies between the undamped roots, where ``D`` has
+    its one maximum): ``D < 0`` on the whole window."""
+    no, N = len(orders), rho.size
+    out = {
+        "lo": np.full((no, N), np.nan),
+        "hi": np.full((no, N), np.nan),
+        "top": np.full((no, N), np.nan),
+        "dtop": np.full((no, N), np.nan),
+        "undecided": np.zeros((no, N), bool),
+        "lo_doubt": np.zeros((no, N), bool),
+        "hi_doubt": np.zeros((no, N), bool),
+        "done": np.zeros((no, N), bool),
+    }
+    if cols.size == 0:
+        return out
+    tables = _edge_tables(system, list(orders), friction)
+    stack = np.concatenate(tables)  # (3 no, K)
+    start = np.empty((3 * no, cols.size))
+    _start_values(stack, rho[cols], start, np.empty_like(start))
+    start = start.reshape(no, 3, cols.size)
+    params = (P.r2[cols], P.u[cols], P.beta[cols], P.g[cols])
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+        for parity in (1, 0):
+            rows = np.nonzero(orders % 2 == parity)[0]
+            if rows.size == 0:
+                continue
+            form = int(_parity(int(orders[rows[0]])))
+            ev = _indicator_all(form)
+            c = (orders[rows] * _HALF_PI)[:, None] * np.ones(cols.size)
+            lo0, hi0, top0 = start[rows, 0], start[rows, 1], start[rows, 2]
+            pair = np.isfinite(lo0) & np.isfinite(hi0) & (lo0 < hi0)
+            ri, ci = np.nonzero(pair)
+            if ri.size:
+                x0 = np.concatenate([lo0[ri, ci], hi0[ri, ci]])
+                sub = (np.concatenate([c[ri, ci]] * 2),) + tuple(
+                    np.concatenate([v[ci]] * 2) for v in params
+                )
+                sign = np.concatenate([np.ones(ri.size), -np.ones(ri.size)])
+                root, doubt, good = _table_edges(ev, sub, x0, sign)
+                k = ri.size
+                lo, hi = root[:k], root[k:]
+                ok = good[:k] & good[k:] & (lo < hi)
+                ok &= hi - lo > 1e-8 * np.maximum(np.abs(sub[0][:k] + hi), 1.0)
+                r, q = rows[ri[ok]], cols[ci[ok]]
+                out["lo"][r, q], out["hi"][r, q] = lo[ok], hi[ok]
+                out["lo_doubt"][r, q], out["hi_doubt"][r, q] = doubt[:k][ok], doubt[k:][ok]
+                out["top"][r, q] = 0.5 * (lo[ok] + hi[ok])  # (D > 0 between the edges)
+                out["dtop"][r, q] = np.inf
+                out["done"][r, q] = True
+            ri, ci = np.nonzero(np.isfinite(top0) & ~pair)
+            if ri.size:
+                sub = (c[ri, ci],) + tuple(v[ci] for v in params)
+                top, dtop, ok = _table_top(ev, form, sub, top0[ri, ci])
+                r, q = rows[ri[ok]], cols[ci[ok]]
+                out["top"][r, q], out["dtop"][r, q] = top[ok], dtop[ok]
+                out["done"][r, q] = True
+    return out
+
+
+def _table_edges(ev, args, x, sign):
+    """Zeros of ``D`` from ``x`` near them (:func:`_table_friction`): at most
+    :data:`_TABLE_STEPS` steps of :func:`_step`, each point dropped once the estimate of order 4
+    of its error is below :data:`_EDGE_RTOL` times ``max(c + theta, 1)`` (its step below
+    :data:`_EDGE_STEP`): ``(roots, doubt, good)`` as :func:`_edges` (``good``: converged inside
+    the window, with ``sign D`` increasing through the zero)."""
+    root = np.full(x.size, np.nan)
+    doubt = np.zeros(x.size, bool)
+    good = np.zeros(x.size, bool)
+    idx = np.arange(x.size)
+    sub, sg = args, sign
+    sc = _EDGE_RTOL * np.maximum(args[0] + x, 1.0)
+    for _ in range(_TABLE_STEPS):
+        D, D1, D2, D3, D4, T0, T1 = ev(x, *sub)
+        s, err = _step(D, D1, D2, D3, D4)
+        done = (err <= sc) & (np.abs(s) <= _EDGE_STEP)
+        j = np.nonzero(done)[0]
+        if j.size:
+            sj = s[j]
+            r = x[j] - sj
+            slope = D1[j] - D2[j] * sj
+            at = np.abs(sub[0][j] + r)
+            noise = NOISE_ULPS * 2.0**-53 * (np.abs(T0[j]) + at * np.abs(T1[j]))
+            root[idx[j]] = r
+            doubt[idx[j]] = ~(noise / (np.abs(slope) * at) <= DOUBT)
+            good[idx[j]] = (sg[j] * slope > 0) & (np.abs(r) < _HALF_PI)
+        keep = ~done & np.isfinite(s)
+        if not keep.any():
+            break
+        idx, x, sg, sc = idx[keep], (x - s)[keep], sg[keep], sc[keep]
+        sub = tuple(v[keep] for v in sub)
+    return root, doubt, good
+
+
+def _table_top(ev, parity, args, x):
+    """The maximiser of ``D`` from ``x`` near it (:func:`_table_friction`): at most
+    :data:`_TABLE_STEPS` Halley steps on ``D'``, a point dropped once its step is below
+    :data:`_TOP_STEP` (``D`` there from its Taylor polynomial, as :func:`_maximiser`):
+    ``(top, D(top), ok)``, ``ok`` where that is a maximum (``D'' < 0``) inside the window, ``D``
+    below minus its rounding bound and the undamped indicator above ``1e-12``."""
+    top = np.full(x.size, np.nan)
+    dtop = np.full(x.size, np.nan)
+    ok = np.zeros(x.size, bool)
+    idx = np.arange(x.size)
+    sub = args
+    for _ in range(_TABLE_STEPS):
+        D, D1, D2, D3, _D4, T0, T1 = ev(x, *sub)
+        s = D1 / D2
+        s = s / (1.0 - 0.5 * s * D3 / D2)
+        done = np.abs(s) <= _TOP_STEP
+        j = np.nonzero(done)[0]
+        if j.size:
+            sj = s[j]
+            t = x[j] - sj
+            d = D[j] - sj * (D1[j] - sj * (0.5 * D2[j] - sj * D3[j] / 6.0))
+            at = np.abs(sub[0][j] + x[j])
+            noise = NOISE_ULPS * 2.0**-53 * (np.abs(T0[j]) + at * np.abs(T1[j]))
+            top[idx[j]], dtop[idx[j]] = t, d
+            ok[idx[j]] = (D2[j] < 0) & (d < -noise) & (np.abs(t) < _HALF_PI)
+        keep = ~done & np.isfinite(s)
+        if not keep.any():
+            break
+        idx, x = idx[keep], (x - s)[keep]
+        sub = tuple(v[keep] for v in sub)
+    sel = np.nonzero(ok)[0]
+    if sel.size:  # the undamped indicator there: D with u = g = 0 (the same derived form)
+        c, r2, _u, beta, _g = (v[sel] for v in args)
+        zero = np.zeros(sel.size)
+        d0 = indicator(parity).compiled("numpy", 0)(top[sel], c, r2, zero, beta, zero)
+        ok[sel] = np.asarray(d0, float) > 1e-12
+    return top, dtop, ok
 
 
 # ---------------------------------------------------------------------------------------------
@@ -1260,7 +1489,9 @@ def _confirmed(n: int, m: Fraction, Q, damping: str, system, edges) -> bool:
     if not (math.isfinite(lo) and math.isfinite(hi) and lo < hi):
         return False
     Qf = Fraction(Q) if not isinstance(Q, Fraction) else Q
-    if damping == "exact" and not 4 * Qf * Qf - 1 - m > 0:
+    m = Fraction(m)
+    a, b, p, q = Qf.numerator, Qf.denominator, m.numerator, m.denominator
+    if damping == "exact" and not (4 * a * a - b * b) * q > p * b * b:  # 4 Q^2 - 1 - m > 0
         return False
     form = indicator(int(_parity(n))).compiled("arb", 0)
     with ctx.workprec(CONFIRM_BITS):
@@ -1487,8 +1718,17 @@ def _fill_normal(
         out[:, 0, :] = np.minimum(T1, T2)
         out[:, 1, :] = np.maximum(T1, T2)
         return doubt
+    fast = None
     if om is not None and friction is not None and ms.size >= _TABLE_MIN:
-        t1, t2 = _damped_brackets(orders_arr, P, om, system or _paper_system(), friction)
+        # the edges from their own start tables where that proves them (the depths away from
+        # m = 1); the bracketed path for the rest, its brackets at those depths alone
+        sysv = system or _paper_system()
+        far = np.nonzero(P.bm >= NEAR_ONE)[0]
+        fast = _table_friction(orders_arr, P, np.sqrt(om), sysv, friction, far)
+        need = np.nonzero(~fast["done"].all(axis=0))[0]
+        Pn = NormalParams(*(getattr(P, f.name)[need] for f in fields(NormalParams)))
+        if need.size:
+            t1, t2 = _damped_brackets(orders_arr, Pn, om[need], sysv, friction)
     else:
         t1, t2 = normal_edges(orders_arr[:, None], P)  # the undamped roots of all orders at once
     for parity in (1, 0):
@@ -1496,7 +1736,17 @@ def _fill_normal(
         if rows.size == 0:
             continue
         n = orders_arr[rows][:, None]
-        res = _damped_normal(n, P, edges=(t1[rows], t2[rows]), split=True)
+        if fast is None:
+            res = _damped_normal(n, P, edges=(t1[rows], t2[rows]), split=True)
+        else:
+            res = {k: fast[k][rows] for k in _RESULT_KEYS}
+            ri, ci = np.nonzero(~fast["done"][rows][:, need])
+            if ri.size:  # the entries left, one by one (orders and depths flattened)
+                Ps = NormalParams(*(getattr(Pn, f.name)[ci] for f in fields(NormalParams)))
+                ends = (t1[rows][ri, ci], t2[rows][ri, ci])
+                got = _damped_normal(orders_arr[rows][ri], Ps, ends, split=True, pair=False)
+                for k in _RESULT_KEYS:
+                    res[k][ri, need[ci]] = got[k]
         near = near_one_forms()[2]
         lo = _polish_near_one(res["lo"], orders_arr[rows], P, near)
         hi = _polish_near_one(res["hi"], orders_arr[rows], P, near)
@@ -1523,22 +1773,19 @@ def _fill_normal(
     return doubt
 
 
+#: what :func:`_fill_normal` takes of :func:`_damped_normal`
+_RESULT_KEYS = ("lo", "hi", "top", "dtop", "undecided", "lo_doubt", "hi_doubt")
+
+
 def _damped_brackets(orders, P, om, system, friction):
     """The undamped roots ``(theta_eps=+1, theta_eps=-1)`` (each ``(len(orders), N)``) for the
     parameters ``P`` of the damped normal form, as :func:`normal_edges` gives them: from
     :func:`_frictionless_theta` with the start tables of ``friction = (Q, damping)`` (a function
-    of the key alone), except the order-1 root with ``x = pi/2 + theta`` below ``ORDER1_X / 2``,
-    which that pass leaves to a solve in ``x``: that one from :func:`normal_edges` on the whole
-    grid, as before (next to ``m = 1`` the friction path takes the lower edge of order 1 from its
-    solve in ``x``, :func:`_order1_lower`, and this root only brackets it)."""
+    of the key alone), every root to convergence in ``theta`` (next to ``m = 1`` the friction
+    path takes the lower edge of order 1 from its solve in ``x``, :func:`_order1_lower`, and the
+    root with ``x = pi/2 + theta -> 0`` only brackets it)."""
     theta = np.empty((len(orders), 2, om.size))
     _frictionless_theta(orders.tolist(), P, np.sqrt(om), system, theta, friction)
-    rows = np.nonzero(orders == 1)[0]
-    if rows.size:
-        cols = np.nonzero(~(_HALF_PI + theta[rows[0], 0] >= 0.5 * ORDER1_X + 1e-3))[0]
-        if cols.size:
-            t1 = normal_edges(np.array([[1]]), P)[0][0]
-            theta[rows[:, None], 0, cols] = t1[cols]
     return theta[:, 0], theta[:, 1]
 
 
