@@ -123,7 +123,9 @@ def _mpmath_edges(order: int, m: Fraction, dps: int):
         with mpmath.workdps(dps):
             p = normal_params(m, None, "exact", backend("mpmath"))
             c = mpmath.pi * order / 2
-            theta = mpmath.findroot(lambda t: f(t, c, sgn, eps, p.r, p.beta), mpmath.mpf(start))
+            theta = mpmath.findroot(
+                lambda t, c=c, e=eps, r=p.r, b=p.beta: f(t, c, sgn, e, r, b), mpmath.mpf(start)
+            )
             out.append((mpmath.mpf(order) / 2 + theta / mpmath.pi) / p.w)
     return sorted(out)
 
@@ -143,7 +145,7 @@ def test_thousand_digits_near_one_against_mpmath(order, m):
     with mpmath.workdps(1200):
         bound = mpmath.mpf(data["error_bound"])
         assert bound < mpmath.mpf(10) ** -990 * ref[1]
-        for key, val in zip(("lower", "upper"), ref):
+        for key, val in zip(("lower", "upper"), ref, strict=True):
             text = data[key]
             assert len(text.lstrip("-0.").replace(".", "")) >= 990, key
             assert abs(mpmath.mpf(text) - val) <= bound, (key, order)
