@@ -42,6 +42,7 @@ def test_a_stored_function_computes_what_the_derived_one_does():
 NUMERIC = [
     ["boundary", "--order", "3", "--m", "0.3"],
     ["boundary", "--order", "3", "--m", "0.3", "--Q", "7"],
+    ["boundary", "--order", "1", "--m", "0.999999", "--digits", "700"],  # the near-one forms
     ["table", "--orders", "1-2", "--m", "0.1:0.2:0.1", "--digits", "20"],
     ["multipliers", "--T", "1.45", "--m", "0.3"],
 ]

@@ -92,3 +92,60 @@ def test_edges_bracket_a_floquet_multiplier(order, Q, damping, k):
                 M = monodromy_matrix(m, tau, None if Q is None else Fraction(Q), damping, dps=150)
                 vals.append((M[0, 0] - sigma) * (M[1, 1] - sigma) - M[0, 1] * M[1, 0])
             assert vals[0] * vals[1] < 0, (key, text, vals)
+
+
+def _mpmath_edges(order: int, m: Fraction, dps: int):
+    """Reference: both undamped edges ``T/T0`` by mpmath ``findroot`` at ``dps`` digits on the
+    derived per-edge equation ``F(theta) = sin(theta) + eps r f(beta (n pi/2 + theta))``
+    (:func:`verify.derived.edge_equation`, compiled for mpmath from the sympy form of
+    :mod:`analytic`; the standard form, not the near-one rewrite the solver uses there), with
+    ``T/T0 = (n/2 + theta/pi)/w``.  Each equation has one root in ``(-pi/2, pi/2)`` where
+    ``F(-pi/2) < 0 < F(pi/2)``: a bisection at 40 digits starts a secant iteration at ``dps``."""
+    from verify.derived import backend, edge_equation
+    from verify.enclosure import sgn_of
+    from verify.params import normal_params
+
+    f = edge_equation(-1 if order % 2 else 1).compiled("mpmath", 0)
+    sgn = sgn_of(order)
+    out = []
+    for eps in (1, -1):
+        with mpmath.workdps(40):
+            p = normal_params(m, None, "exact", backend("mpmath"))
+            c = mpmath.pi * order / 2
+            lo, hi = -mpmath.pi / 2, mpmath.pi / 2
+            for _ in range(120):
+                mid = (lo + hi) / 2
+                if f(mid, c, sgn, eps, p.r, p.beta) < 0:
+                    lo = mid
+                else:
+                    hi = mid
+            start = (lo + hi) / 2
+        with mpmath.workdps(dps):
+            p = normal_params(m, None, "exact", backend("mpmath"))
+            c = mpmath.pi * order / 2
+            theta = mpmath.findroot(
+                lambda t, c=c, e=eps, r=p.r, b=p.beta: f(t, c, sgn, e, r, b), mpmath.mpf(start)
+            )
+            out.append((mpmath.mpf(order) / 2 + theta / mpmath.pi) / p.w)
+    return sorted(out)
+
+
+@pytest.mark.parametrize("order", [1, 2, 3])
+@pytest.mark.parametrize("m", [Fraction(999999, 1000000), 1 - Fraction(1, 10**9)])
+def test_thousand_digits_near_one_against_mpmath(order, m):
+    """Was (0.999999 at 700 and 1000 digits, orders 1, 2, 3, 5): CertificationError 'could not
+    enclose a simple root near 1.5719070478067234 below 41728 bits' -- a midpoint Newton step
+    that rounded to no step at all was taken for one leaving the bracket, and the bisection that
+    replaced it threw the digits away.  Every printed digit against mpmath at 1200 digits
+    (:func:`_mpmath_edges`), within the printed bound."""
+    b = boundary(order, m, digits=1000)
+    assert b.certified and b.exists
+    data = b.as_json()
+    ref = _mpmath_edges(order, m, 1200)
+    with mpmath.workdps(1200):
+        bound = mpmath.mpf(data["error_bound"])
+        assert bound < mpmath.mpf(10) ** -990 * ref[1]
+        for key, val in zip(("lower", "upper"), ref, strict=True):
+            text = data[key]
+            assert len(text.lstrip("-0.").replace(".", "")) >= 990, key
+            assert abs(mpmath.mpf(text) - val) <= bound, (key, order)

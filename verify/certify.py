@@ -127,7 +127,11 @@ def _newton(F, dF, x: arb, lo, hi, signs: list | None = None):
             lo = x
     if not dfx.contains(0) and dfx.is_finite() and fx.is_finite():
         xn = (x - fx / dfx).mid()
-        if lo is None or lo < xn < hi:
+        # the closed bracket: at the root to the working precision the step rounds to nothing
+        # (``xn == x``) while ``F(x)`` still has a proven sign, which has just made ``x`` an end
+        # of the bracket; that iterate is converged, not outside (a bisection from there would
+        # throw the digits away and crawl back one bit a step)
+        if lo is None or lo <= xn <= hi:
             return xn, abs(xn - x), lo, hi
     if lo is None:
         raise CertificationError(f"Newton's method broke down near {float(x)}")
