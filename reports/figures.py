@@ -166,18 +166,27 @@ def tight_layout(fig: Figure, **kw) -> None:
 
 
 def pdf_bytes(fig: Figure, what: str = "report") -> bytes:
-    """The figure as vector PDF with reproducible metadata."""
+    """The figure as vector PDF with reproducible metadata.
+
+    A figure of :func:`new_figure` laid out by :func:`tight_layout` is drawn once, by the PDF
+    canvas itself, the layout computed at the start of that drawing: ``savefig`` would draw it
+    twice (once with the drawing switched off, for the layout, then again), and gives the same
+    bytes."""
     buf = io.BytesIO()
+    metadata = {
+        "Creator": BANNER.format(what=what),
+        "Producer": "paramres (matplotlib)",
+        "CreationDate": None,
+    }
     with style():
-        fig.savefig(
-            buf,
-            format="pdf",
-            metadata={
-                "Creator": BANNER.format(what=what),
-                "Producer": "paramres (matplotlib)",
-                "CreationDate": None,
-            },
-        )
+        if isinstance(fig.canvas, FigureCanvasPdf) and fig.get_layout_engine() is not None:
+            dpi = fig.dpi
+            try:
+                fig.canvas.print_pdf(buf, metadata=metadata)
+            finally:
+                fig.dpi = dpi  # the PDF canvas draws at 72 dots per inch
+        else:
+            fig.savefig(buf, format="pdf", metadata=metadata)
     return buf.getvalue()
 
 
