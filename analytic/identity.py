@@ -429,10 +429,17 @@ def random_points(symbols, count: int, seed: int = 20130101):
     return out
 
 
+@functools.lru_cache(maxsize=256)
+def _mpmath_function(symbols: tuple, expr: sp.Expr):
+    """``lambdify(symbols, expr)`` on mpmath, compiled once per expression (checks meet the same
+    side twice); without the docstring, which would print the expression only to document it."""
+    return sp.lambdify(symbols, expr, modules="mpmath", dummify=True, docstring_limit=0)
+
+
 def _numeric_zero(expr: sp.Expr, scale: sp.Expr, points: int, dps: int) -> tuple[bool, float]:
-    symbols = sorted(expr.free_symbols | scale.free_symbols, key=lambda s: s.name)
-    f = sp.lambdify(symbols, expr, modules="mpmath", dummify=True)
-    h = sp.lambdify(symbols, scale, modules="mpmath", dummify=True)
+    symbols = tuple(sorted(expr.free_symbols | scale.free_symbols, key=lambda s: s.name))
+    f = _mpmath_function(symbols, expr)
+    h = _mpmath_function(symbols, scale)
     worst = mpmath.mpf(0)
     tol = mpmath.mpf(10) ** (-(dps - 10))
     with mpmath.workdps(dps):
@@ -484,9 +491,9 @@ def prove_proportional(
         ratio = sp.cancel(za / zb)
         if ratio.free_symbols == set() and ratio != 0:
             return Verdict(True, "symbolic", factor=ratio)
-    symbols = sorted(a.free_symbols | b.free_symbols, key=lambda s: s.name)
-    fa = sp.lambdify(symbols, a, modules="mpmath", dummify=True)
-    fb = sp.lambdify(symbols, b, modules="mpmath", dummify=True)
+    symbols = tuple(sorted(a.free_symbols | b.free_symbols, key=lambda s: s.name))
+    fa = _mpmath_function(symbols, a)
+    fb = _mpmath_function(symbols, b)
     ratios = []
     with mpmath.workdps(dps):
         for pt in random_points(symbols, points):
