@@ -336,14 +336,39 @@ def _field_elements(exprs):
         return None
 
 
-def _field_ratio(a: sp.Expr, b: sp.Expr) -> sp.Expr:
-    """``a/b`` cancelled exactly as a rational function (``b`` not zero)."""
+def _depends_on(field, num, den, symbols) -> bool:
+    """Whether ``num/den`` (Gaussian FLINT parts, ``den`` not zero) depends on one of
+    ``symbols``: its real and imaginary parts (over the real denominator ``|den|^2``) are
+    cancelled by their greatest common divisors, and a rational function in lowest terms is free
+    of a generator exactly when its numerator and denominator are."""
+    (nr, ni), (dr, di) = num, den
+    if di != 0:
+        nr, ni, dr = nr * dr + ni * di, ni * dr - nr * di, dr * dr + di * di
+    index = [k for k, g in enumerate(field.symbols) if g in symbols]
+    for part in (nr, ni):
+        if part == 0:
+            continue
+        g = part.gcd(dr)
+        for x in (part / g, dr / g):
+            degrees = x.degrees()
+            if any(degrees[k] > 0 for k in index):
+                return True
+    return False
+
+
+def _field_ratio(a: sp.Expr, b: sp.Expr, unless: frozenset = frozenset()) -> sp.Expr | None:
+    """``a/b`` cancelled exactly as a rational function (``b`` not zero); ``None`` where that
+    ratio keeps an imaginary part and depends on one of the symbols ``unless`` (decided without
+    sympy's cancellation over the Gaussian integers; the ratio itself is then not needed)."""
 
     try:
         field, ((na, da), (nb, db)) = _fast_parts([a, b])
-        r = _element(field, _gauss_mul(na, db), _gauss_mul(da, nb))
+        num, den = _gauss_mul(na, db), _gauss_mul(da, nb)
+        r = _element(field, num, den)
         if r is not None:
             return r.as_expr()
+        if unless and _depends_on(field, num, den, unless):
+            return None
     except _Unfit:
         pass
     elems = _field_elements([a, b])
@@ -363,8 +388,8 @@ def factor_between(a: sp.Expr, b: sp.Expr) -> sp.Expr | None:
     if zb == 0:
         return None
     osc = {z for z, e in back.items() if e.args[0].has(sp.I)}
-    ratio = _field_ratio(za, zb)
-    if ratio == 0 or ratio.free_symbols & osc:
+    ratio = _field_ratio(za, zb, unless=frozenset(osc))
+    if ratio is None or ratio == 0 or ratio.free_symbols & osc:
         return None
     return sp.factor(ratio).xreplace(back)
 
@@ -429,10 +454,17 @@ def random_points(symbols, count: int, seed: int = 20130101):
     return out
 
 
+@functools.lru_cache(maxsize=256)
+def _mpmath_function(symbols: tuple, expr: sp.Expr):
+    """``lambdify(symbols, expr)`` on mpmath, compiled once per expression (checks meet the same
+    side twice); without the docstring, which would print the expression only to document it."""
+    return sp.lambdify(symbols, expr, modules="mpmath", dummify=True, docstring_limit=0)
+
+
 def _numeric_zero(expr: sp.Expr, scale: sp.Expr, points: int, dps: int) -> tuple[bool, float]:
-    symbols = sorted(expr.free_symbols | scale.free_symbols, key=lambda s: s.name)
-    f = sp.lambdify(symbols, expr, modules="mpmath", dummify=True)
-    h = sp.lambdify(symbols, scale, modules="mpmath", dummify=True)
+    symbols = tuple(sorted(expr.free_symbols | scale.free_symbols, key=lambda s: s.name))
+    f = _mpmath_function(symbols, expr)
+    h = _mpmath_function(symbols, scale)
     worst = mpmath.mpf(0)
     tol = mpmath.mpf(10) ** (-(dps - 10))
     with mpmath.workdps(dps):
@@ -484,9 +516,9 @@ def prove_proportional(
         ratio = sp.cancel(za / zb)
         if ratio.free_symbols == set() and ratio != 0:
             return Verdict(True, "symbolic", factor=ratio)
-    symbols = sorted(a.free_symbols | b.free_symbols, key=lambda s: s.name)
-    fa = sp.lambdify(symbols, a, modules="mpmath", dummify=True)
-    fb = sp.lambdify(symbols, b, modules="mpmath", dummify=True)
+    symbols = tuple(sorted(a.free_symbols | b.free_symbols, key=lambda s: s.name))
+    fa = _mpmath_function(symbols, a)
+    fb = _mpmath_function(symbols, b)
     ratios = []
     with mpmath.workdps(dps):
         for pt in random_points(symbols, points):
