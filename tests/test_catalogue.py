@@ -117,3 +117,9 @@ def test_equations_of_motion_row_is_an_exact_identity(rows):
     # sympy reduces to zero exactly; the row says so only because every check was symbolic
     row = rows["2-3"]
     assert row.status == "agrees" and row.how.endswith("decided symbolically.")
+
+
+def test_exact_average_frequency_is_decided_symbolically(rows):
+    # eq. (7): omega_av/omega_0 = (1/sqrt(1+m) + 1/sqrt(1-m))/2 is an exact identity of the model;
+    # the check reduces it to zero without falling back to random points
+    assert "(simplifies symbolically to zero)" in rows["7"].how
