@@ -15,9 +15,17 @@ gives ``||A_j|| <= K/rho^j`` (row-sum norm), so ``||Y_k|| <= y_k``, the coeffici
 solution ``(1 - z/rho)^(-K rho)`` of the majorant equation ``y' = K/(1 - z/rho) y``, ``y(0) = 1``:
 ``y_k h^k = (K rho)_k/k! x^k`` with ``x = h/rho``. Their ratio is at most ``r = x max(1, (K rho +
 N)/(N + 1))`` for ``k >= N``, so the tail is at most ``y_N h^N/(1 - r)`` (``r < 1``), added to
-every entry as a ball radius. The step is halved until ``A`` is bounded on the square (no
-singularity within ``rho``) and the tail needs at most :data:`MAX_TERMS` terms beyond half the bits
-wanted; ``rho = 4 h``.
+every entry as a ball radius.  That majorant is pessimistic (its terms shrink by about ``x``
+each, where the solution's shrink like ``(|A| h)^k/k!``), so the recurrence stops sooner where
+a **defect bound** proves the remainder small: with ``P`` the Taylor polynomial of ``n`` terms,
+``P' = [A P]_{< n-1}`` (the recurrence), so ``R = Y - P`` solves ``R' = A R + [A P]_{>= n-1}``,
+``R(0) = 0``; on ``[t_c, t_c + h]`` the forcing is at most ``sum_i ||Y_i|| h^i sum_{j >= n-1-i}
+||A_j|| h^j`` (the ``A_j`` computed, for ``j < bits/2 + 8``; Cauchy's ``K/rho^j`` beyond), and
+Gronwall's lemma with ``||A|| <= K_r`` on the segment bounds ``||R(h)||`` by ``h e^(K_r h)``
+times that.  The step is halved until ``A`` is bounded on the square (no singularity within
+``rho``) and one of the two bounds is below ``2^-bits`` within the majorant's count of terms
+(at most :data:`MAX_TERMS` beyond half the bits wanted), and doubled after a step that needed
+fewer than ``bits/``:data:`_GROW` terms; ``rho = 4 h``.
 
 The result is proven for the ``A`` given: its entries' series and boxes are computed in ball
 arithmetic, and nothing else enters.
@@ -79,7 +87,7 @@ def _terms(K: arb, rho: arb, h: arb, bits: int) -> tuple[int, arb] | None:
         return None
 
 
-def _step(coef, tc: arb, h: arb, N: int, tail: arb, K: arb, rho: arb, bits: int):
+def _step(coef, tc: arb, h: arb, N: int, tail: arb | None, K: arb, rho: arb, bits: int):
     """The map over ``[tc, tc + h]`` (four balls, row-major): at most ``N`` Taylor terms with
     the majorant's tail ``tail``, fewer where the defect bound (:func:`_defect_tail`) proves
     the remainder below ``2^-bits`` sooner."""
@@ -98,8 +106,10 @@ def _step(coef, tc: arb, h: arb, N: int, tail: arb, K: arb, rho: arb, bits: int)
         hh = arb(h.upper())
         x = hh / rho
         # above[m]: sum over m <= j < M of ||A_j|| h^j, plus Cauchy's bound of the j >= M
-        rows = [[e for e, sp in zip(a[2 * i : 2 * i + 2], sparse[2 * i : 2 * i + 2]) if sp]
-                for i in (0, 1)]
+        rows = [
+            [e for e in a[2 * i : 2 * i + 2] if not all(c.is_exact() and c == 0 for c in e)]
+            for i in (0, 1)
+        ]
         above = [arb(0)] * (M + 1)
         above[M] = _upper(K * x**M / (1 - x))
         for j in range(M - 1, -1, -1):
