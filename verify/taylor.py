@@ -15,9 +15,17 @@ gives ``||A_j|| <= K/rho^j`` (row-sum norm), so ``||Y_k|| <= y_k``, the coeffici
 solution ``(1 - z/rho)^(-K rho)`` of the majorant equation ``y' = K/(1 - z/rho) y``, ``y(0) = 1``:
 ``y_k h^k = (K rho)_k/k! x^k`` with ``x = h/rho``. Their ratio is at most ``r = x max(1, (K rho +
 N)/(N + 1))`` for ``k >= N``, so the tail is at most ``y_N h^N/(1 - r)`` (``r < 1``), added to
-every entry as a ball radius. The step is halved until ``A`` is bounded on the square (no
-singularity within ``rho``) and the tail needs at most :data:`MAX_TERMS` terms beyond half the bits
-wanted; ``rho = 4 h``.
+every entry as a ball radius.  That majorant is pessimistic (its terms shrink by about ``x``
+each, where the solution's shrink like ``(|A| h)^k/k!``), so the recurrence stops sooner where
+a **defect bound** proves the remainder small: with ``P`` the Taylor polynomial of ``n`` terms,
+``P' = [A P]_{< n-1}`` (the recurrence), so ``R = Y - P`` solves ``R' = A R + [A P]_{>= n-1}``,
+``R(0) = 0``; on ``[t_c, t_c + h]`` the forcing is at most ``sum_i ||Y_i|| h^i sum_{j >= n-1-i}
+||A_j|| h^j`` (the ``A_j`` computed, for ``j < bits/2 + 8``; Cauchy's ``K/rho^j`` beyond), and
+Gronwall's lemma with ``||A|| <= K_r`` on the segment bounds ``||R(h)||`` by ``h e^(K_r h)``
+times that.  The step is halved until ``A`` is bounded on the square (no singularity within
+``rho``) and one of the two bounds is below ``2^-bits`` within the majorant's count of terms
+(at most :data:`MAX_TERMS` beyond half the bits wanted), and doubled after a step that needed
+fewer than ``bits/``:data:`_GROW` terms; ``rho = 4 h``.
 
 The result is proven for the ``A`` given: its entries' series and boxes are computed in ball
 arithmetic, and nothing else enters.
@@ -33,6 +41,9 @@ __all__ = ["MAX_TERMS", "flow", "IntegrationError"]
 #: is halved; with ``rho = 4 h`` each term gains about two bits)
 MAX_TERMS = 40
 
+#: a step that needed fewer than ``bits/_GROW`` terms is followed by a trial step twice as long
+_GROW = 4
+
 #: the step's radius of convergence used, as a multiple of the step
 _RHO = 4
 
@@ -41,12 +52,12 @@ class IntegrationError(ArithmeticError):
     """The integrator could not bound a step (a singularity of ``A`` on the path)."""
 
 
-def _bound(coef, tc: arb, rho: arb) -> arb | None:
-    """An upper bound of the row sums of ``|A|`` on the disc ``|z - tc| <= rho`` (or ``None``
-    where ``A`` is not bounded there)."""
+def _bound(coef, tc: arb, rho: arb, real: bool = False) -> arb | None:
+    """An upper bound of the row sums of ``|A|`` on the disc ``|z - tc| <= rho`` (``real``: on
+    the segment ``|t - tc| <= rho``), or ``None`` where ``A`` is not bounded there."""
     with ctx.workprec(64):
         r = arb((rho + tc.rad()).upper())
-        box = acb(arb(tc.mid(), r), arb(0, r))
+        box = acb(arb(tc.mid(), r), 0 if real else arb(0, r))
         a = coef(box)
         rows = []
         for i in (0, 1):
@@ -76,21 +87,41 @@ def _terms(K: arb, rho: arb, h: arb, bits: int) -> tuple[int, arb] | None:
         return None
 
 
-def _step(coef, tc: arb, h: arb, N: int, tail: arb):
-    """The map over ``[tc, tc + h]`` (four balls, row-major) with ``N`` Taylor terms."""
-    cap = ctx.cap  # python-flint truncates every series to ctx.cap terms: N here, restored
-    ctx.cap = N
+def _step(coef, tc: arb, h: arb, N: int, tail: arb | None, K: arb, rho: arb, bits: int):
+    """The map over ``[tc, tc + h]`` (four balls, row-major): at most ``N`` Taylor terms with
+    the majorant's tail ``tail``, fewer where the defect bound (:func:`_defect_tail`) proves
+    the remainder below ``2^-bits`` sooner."""
+    M = bits // 2 + 8  # the coefficients of A summed explicitly (balls); Cauchy beyond
+    L = max(N, M)
+    cap = ctx.cap  # python-flint truncates every series to ctx.cap terms: L here, restored
+    ctx.cap = L
     try:
-        z = arb_series([tc, 1], prec=N)
-        a = [_coeffs(s, N) for s in coef(z)]
+        z = arb_series([tc, 1], prec=L)
+        a = [_coeffs(s, L) for s in coef(z)]
     finally:
         ctx.cap = cap
     # the nonzero Taylor coefficients of each entry (a linear or constant length has few)
-    sparse = [[(j, c) for j, c in enumerate(e) if not (c.is_exact() and c == 0)] for e in a]
-    cols = []
-    for y0 in ((arb(1), arb(0)), (arb(0), arb(1))):
-        u, v = [y0[0]], [y0[1]]
-        for k in range(N - 1):
+    sparse = [[(j, c) for j, c in enumerate(e[:N]) if not (c.is_exact() and c == 0)] for e in a]
+    with ctx.workprec(64):
+        hh = arb(h.upper())
+        x = hh / rho
+        # above[m]: sum over m <= j < M of ||A_j|| h^j, plus Cauchy's bound of the j >= M
+        rows = [
+            [e for e in a[2 * i : 2 * i + 2] if not all(c.is_exact() and c == 0 for c in e)]
+            for i in (0, 1)
+        ]
+        above = [arb(0)] * (M + 1)
+        above[M] = _upper(K * x**M / (1 - x))
+        for j in range(M - 1, -1, -1):
+            r = max((sum(abs(e[j]) for e in row) if row else arb(0)).upper() for row in rows)
+            above[j] = _upper(above[j + 1] + arb(r) * hh**j)
+        Kr = _bound(coef, tc + hh / 2, hh / 2, real=True)
+        grow = hh * ((K if Kr is None else Kr) * hh).exp()
+    goal = arb(2) ** (-bits)
+    cols = ([arb(1)], [arb(0)], [arb(0)], [arb(1)])  # u, v of column 0; u, v of column 1
+    yn = [arb(1)]  # ||Y_k|| h^k (upper bounds, 64 bits)
+    for k in range(N - 1):
+        for u, v in (cols[0:2], cols[2:4]):
             su = arb(0)
             sv = arb(0)
             for j, c in sparse[0]:
@@ -107,9 +138,46 @@ def _step(coef, tc: arb, h: arb, N: int, tail: arb):
                     sv += c * v[k - j]
             u.append(su / (k + 1))
             v.append(sv / (k + 1))
-        cols.append((_horner(u, h), _horner(v, h)))
+        with ctx.workprec(64):
+            yn.append(_upper(_rows(cols[i][k + 1] for i in (0, 2, 1, 3))) * hh ** (k + 1))
+            n = k + 2  # the terms known
+            if n >= 4 and n <= N and yn[-1] < goal:
+                bound = _defect_tail(yn, above, grow)
+                if bound < goal:
+                    tail = bound
+                    break
+    else:
+        if tail is None:
+            return None
+    c = [_horner(col, h) for col in cols]
     err = arb(0, tail)
-    return (cols[0][0] + err, cols[1][0] + err, cols[0][1] + err, cols[1][1] + err)
+    return (c[0] + err, c[2] + err, c[1] + err, c[3] + err), len(cols[0])
+
+
+def _rows(entries) -> arb:
+    """The row-sum norm of a 2x2 matrix given row-major (an upper bound, 64 bits)."""
+    a, b, c, d = entries
+    return arb(max((abs(a) + abs(b)).upper(), (abs(c) + abs(d)).upper()))
+
+
+def _upper(x: arb) -> arb:
+    return arb(x.upper())
+
+
+def _defect_tail(yn: list, above: list, grow: arb) -> arb:
+    """A proven bound of the remainder ``R(h) = Y(h) - sum_{k < n} Y_k h^k`` (``n = len(yn)``,
+    ``yn[k] >= ||Y_k|| h^k``).  ``R' = A R + r`` with ``R(0) = 0`` and ``r = [A P]_{>= n-1}``
+    the part of degree ``n - 1`` and up of ``A`` times the Taylor polynomial ``P``, since ``P'
+    = [A P]_{< n-1}`` (the recurrence).  On ``[0, h]``: ``||r|| <= sum_i yn[i] sum_{j >= n-1-i}
+    ||A_j|| h^j`` (``above[m]``, the coefficients known to ``M`` and Cauchy's ``K/rho^j``
+    beyond), and Gronwall's lemma with ``||A|| <= K`` gives ``||R(h)|| <= h e^(K h) max ||r||``
+    (``grow = h e^(K h)``)."""
+    with ctx.workprec(64):
+        n = len(yn)
+        r = arb(0)
+        for i in range(n):
+            r += yn[i] * above[min(n - 1 - i, len(above) - 1)]
+        return _upper(grow * r)
 
 
 def _coeffs(s, N: int) -> list:
@@ -159,15 +227,18 @@ def flow(coef, t0: arb, t1: arb, *, h0=None, scale=None):
         rho = hm * _RHO
         K = _bound(coef, t, rho)
         plan = None if K is None else _terms(K, rho, hm, bits)
-        if plan is None:
+        if K is not None:
+            N, tail = plan if plan is not None else (bits // 2 + MAX_TERMS, None)
+            done = _step(coef, t, step, N, tail, K, rho, bits)
+        if K is None or done is None:
             h = arb((hm / 2).mid())
             if h < span * arb(2) ** (-60):
                 raise IntegrationError("the coefficients are not bounded near the path")
             continue
-        N, tail = plan
-        M = _mul(_step(coef, t, step, N, tail), M)
+        P, used = done
+        M = _mul(P, M)
         if last:
             return M
         t = t + step
-        if N < bits // 2 + MAX_TERMS // 2:  # the step was easy: try a longer one
+        if used < bits // _GROW:  # the step was easy: try a longer one
             h = arb((hm * 2).mid())
