@@ -344,7 +344,16 @@ def term_sizes(form: Form) -> Form:
     Evaluating ``sum t_i`` in floating point with arguments correct to a few ulp errs by at most
     a few ulp of the first sum, plus what the errors of the angles cost: an angle ``a v + b`` with
     a relative error ``e`` moves by about ``e |a v + b|``, which changes ``t_i`` by about ``e |v +
-    b/a| |dt_i/dv|`` -- bounded through the second sum by the caller's scale of the angles."""
+    b/a| |dt_i/dv|`` -- bounded through the second sum by the caller's scale of the angles.
+
+    For a :class:`LazyForm` the sizes are a :class:`LazyForm` too (key ``term_sizes(key)``), so
+    that their pregenerated compilations need no derivation."""
+    if isinstance(form, LazyForm):
+        sizes = form._fns.get("term_sizes")
+        if sizes is None:
+            sizes = LazyForm(f"term_sizes({form.key})", lambda: term_sizes(form.real))
+            form._fns["term_sizes"] = sizes
+        return sizes
     sizes = form._cache.get("term_sizes")
     if sizes is None:
         import sympy as sp
@@ -543,7 +552,25 @@ def edge_equation_trig() -> Form:
 
 
 @cache
-def order1_forms() -> tuple[Form, Form]:
+def order1_forms() -> tuple[LazyForm, LazyForm]:
+    """:func:`_order1_forms`, each derived when first needed beyond its pregenerated
+    compilations (:data:`verify.forms_generated.SOURCES`)."""
+    return tuple(LazyForm(f"order1_forms[{k}]", _pick(_order1_forms, k)) for k in range(2))
+
+
+@cache
+def near_one_forms() -> tuple[LazyForm, LazyForm, LazyForm]:
+    """:func:`_near_one_forms`, each derived when first needed beyond its pregenerated
+    compilations (:data:`verify.forms_generated.SOURCES`)."""
+    return tuple(LazyForm(f"near_one_forms[{k}]", _pick(_near_one_forms, k)) for k in range(3))
+
+
+def _pick(build, k: int):
+    return lambda: build()[k]
+
+
+@cache
+def _order1_forms() -> tuple[Form, Form]:
     """Order 1 in the phase ``x = pi/2 + theta`` itself, for the lower edge at ``m -> 1`` where
     ``x -> 0`` (``T -> 0``) and ``theta -> -pi/2`` would lose the digits of ``x``.
 
@@ -601,7 +628,7 @@ def order1_forms() -> tuple[Form, Form]:
 
 
 @cache
-def near_one_forms() -> tuple[Form, Form, Form]:
+def _near_one_forms() -> tuple[Form, Form, Form]:
     """The equations for ``m -> 1``, where ``r -> 1`` and ``beta -> 1`` and the terms of
     :func:`edge_equation` and :func:`indicator` cancel each other.
 

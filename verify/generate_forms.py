@@ -42,7 +42,32 @@ ENTRIES = (
             ("arb", 2),
         )
     ]
+    + [
+        (f"{forms}[{k}]", (), b, o)
+        for forms, count in (("order1_forms", 2), ("near_one_forms", 3))
+        for k in range(count)
+        for b, o in (("numpy", 1), ("numpy", (0, 1)), ("numpy", (0, 2)))
+        + (("arb", 0), ("arb", 1), ("arb", 2))
+    ]
+    + [
+        (f"term_sizes({forms}[{k}])", (), "numpy", (0, 1))
+        for forms, count in (("order1_forms", 2), ("near_one_forms", 3))
+        for k in range(count)
+    ]
 )
+
+
+def _lazy(builder: str, args: tuple):
+    """The :class:`verify.derived.LazyForm` an entry names: ``builder(*args)``, an item
+    ``forms[k]`` of a builder of several forms, or ``term_sizes(...)`` of one."""
+    from . import derived
+
+    if builder.startswith("term_sizes(") and builder.endswith(")"):
+        return derived.term_sizes(_lazy(builder[len("term_sizes(") : -1], args))
+    if builder.endswith("]"):
+        name, _, k = builder[:-1].partition("[")
+        return getattr(derived, name)(*args)[int(k)]
+    return getattr(derived, builder)(*args)
 
 
 def build() -> dict[str, str]:
@@ -51,7 +76,7 @@ def build() -> dict[str, str]:
 
     out = {}
     for builder, args, name, orders in ENTRIES:
-        lazy = getattr(derived, builder)(*args)
+        lazy = _lazy(builder, args)
         out[derived.generated_key(lazy.key, name, orders)] = lazy.real.source(name, orders)
     return out
 

@@ -1441,7 +1441,7 @@ def _polish_near_one(theta, n, P, form):
     c = (np.asarray(n, float) * _HALF_PI).reshape(-1, 1)
     fn = form.compiled("numpy", (0, 1))
     t = theta[:, cols]
-    if len(form.args) == 5 and form.args[2].name == "u":
+    if form is near_one_forms()[2]:  # the indicator, in (theta, c, u, bm, g)
         args = (c, P.u[cols], P.bm[cols], P.g[cols])
     else:
         args = (c, P.r[cols], P.u[cols] / (1 + P.r[cols]), P.bm[cols])
