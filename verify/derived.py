@@ -374,8 +374,19 @@ def with_term_sizes(form: Form, count: int = 3) -> Form:
     among the values, the derivatives and the sizes (a root finder gets its step and the rounding
     bound of its root from one call).  The terms are those of :func:`term_sizes`, taken without
     expanding the arguments of the functions (so that they are the form's own), which is the same
-    sum (``tests/test_grid_friction.py`` compares the two)."""
+    sum (``tests/test_grid_friction.py`` compares the two).
+
+    For a :class:`LazyForm` the result is a :class:`LazyForm` too (key
+    ``with_term_sizes(key, count)``), so that its pregenerated compilations need no derivation."""
     key = ("with_term_sizes", count)
+    if isinstance(form, LazyForm):
+        out = form._fns.get(key)
+        if out is None:
+            out = LazyForm(
+                f"with_term_sizes({form.key}, {count})", lambda: with_term_sizes(form.real, count)
+            )
+            form._fns[key] = out
+        return out
     out = form._cache.get(key)
     if out is None:
         import sympy as sp

@@ -54,6 +54,11 @@ ENTRIES = (
         for forms, count in (("order1_forms", 2), ("near_one_forms", 3))
         for k in range(count)
     ]
+    + [
+        ("with_term_sizes(indicator, 3)", (p,), "numpy", o)
+        for p in (-1, 1)
+        for o in ((0, 1, 2, 3, 4, 5), (0, 1, 2, 3))
+    ]
 )
 
 
@@ -64,6 +69,9 @@ def _lazy(builder: str, args: tuple):
 
     if builder.startswith("term_sizes(") and builder.endswith(")"):
         return derived.term_sizes(_lazy(builder[len("term_sizes(") : -1], args))
+    if builder.startswith("with_term_sizes(") and builder.endswith(")"):
+        inner, _, count = builder[len("with_term_sizes(") : -1].rpartition(", ")
+        return derived.with_term_sizes(_lazy(inner, args), int(count))
     if builder.endswith("]"):
         name, _, k = builder[:-1].partition("[")
         return getattr(derived, name)(*args)[int(k)]

@@ -750,7 +750,7 @@ def _indicator_all(parity: int, sizes: bool = True):
     compiled numpy call (:func:`verify.derived.with_term_sizes`: six transcendental calls);
     ``sizes=False``: the first four only."""
     orders = (0, 1, 2, 3, 4, 5) if sizes else (0, 1, 2, 3)
-    return with_term_sizes(indicator(parity).real).compiled("numpy", orders)
+    return with_term_sizes(indicator(parity)).compiled("numpy", orders)
 
 
 #: the maximiser of ``D`` is taken once its Halley step (on ``D'``) is below this (absolute, in
