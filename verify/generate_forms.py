@@ -79,13 +79,15 @@ def _lazy(builder: str, args: tuple):
 
 
 def build() -> dict[str, str]:
-    """Every entry's text, derived now (imports sympy)."""
-    from . import derived
+    """Every entry's text, derived now (imports sympy); with the time-domain building blocks
+    (:func:`verify.timedomain.derived_sources`)."""
+    from . import derived, timedomain
 
     out = {}
     for builder, args, name, orders in ENTRIES:
         lazy = _lazy(builder, args)
         out[derived.generated_key(lazy.key, name, orders)] = lazy.real.source(name, orders)
+    out.update(timedomain.derived_sources())
     return out
 
 
