@@ -336,7 +336,7 @@ def generated_key(key: str, name: str, orders) -> str:
     return f"{key} | {name} | {orders}"
 
 
-def term_sizes(form: Form) -> Form:
+def term_sizes(form: Form | LazyForm) -> Form | LazyForm:
     """The sizes of the terms of ``form``, for bounding its rounding error: ``(sum |t_i|, sum
     |dt_i/dv|)`` over the additive terms ``t_i`` of its expanded expression, ``v`` its first
     argument, as a form of the same arguments (kept on ``form``; built once).
@@ -367,7 +367,7 @@ def term_sizes(form: Form) -> Form:
     return sizes
 
 
-def with_term_sizes(form: Form, count: int = 3) -> Form:
+def with_term_sizes(form: Form | LazyForm, count: int = 3) -> Form | LazyForm:
     """``form`` and its first ``count`` derivatives followed by its :func:`term_sizes` ``(sum
     |t_i|, sum |dt_i/dv|)``, as one form of the same arguments (kept on ``form``; built once):
     compiled for all ``count + 3`` orders it shares every sine, cosine and hyperbolic function
@@ -566,14 +566,21 @@ def edge_equation_trig() -> Form:
 def order1_forms() -> tuple[LazyForm, LazyForm]:
     """:func:`_order1_forms`, each derived when first needed beyond its pregenerated
     compilations (:data:`verify.forms_generated.SOURCES`)."""
-    return tuple(LazyForm(f"order1_forms[{k}]", _pick(_order1_forms, k)) for k in range(2))
+    return (
+        LazyForm("order1_forms[0]", _pick(_order1_forms, 0)),
+        LazyForm("order1_forms[1]", _pick(_order1_forms, 1)),
+    )
 
 
 @cache
 def near_one_forms() -> tuple[LazyForm, LazyForm, LazyForm]:
     """:func:`_near_one_forms`, each derived when first needed beyond its pregenerated
     compilations (:data:`verify.forms_generated.SOURCES`)."""
-    return tuple(LazyForm(f"near_one_forms[{k}]", _pick(_near_one_forms, k)) for k in range(3))
+    return (
+        LazyForm("near_one_forms[0]", _pick(_near_one_forms, 0)),
+        LazyForm("near_one_forms[1]", _pick(_near_one_forms, 1)),
+        LazyForm("near_one_forms[2]", _pick(_near_one_forms, 2)),
+    )
 
 
 def _pick(build, k: int):

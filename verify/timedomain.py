@@ -158,9 +158,7 @@ def _text(expr) -> str:
 
     from analytic.model import S
 
-    return inspect.getsource(
-        sp.lambdify((S.m, S.tau), expr, modules="mpmath", docstring_limit=0)
-    )
+    return inspect.getsource(sp.lambdify((S.m, S.tau), expr, modules="mpmath", docstring_limit=0))
 
 
 def _key(name: str, kind_value: str) -> str:
@@ -196,7 +194,9 @@ def _load(key: str):
 def _initial_ratio(kind_value: str):
     """``phi'(0)/phi(0)`` on an undamped edge of the given shape, as ``(m, tau) -> (num, den)``
     (:func:`_initial_ratio_exprs`, compiled from the stored text)."""
-    return _load(_key("initial_ratio_num", kind_value)), _load(_key("initial_ratio_den", kind_value))
+    return _load(_key("initial_ratio_num", kind_value)), _load(
+        _key("initial_ratio_den", kind_value)
+    )
 
 
 @cache
@@ -492,4 +492,3 @@ def _edge_kind(n: int, m, tau) -> str:
     factors = _edge_factors(-1 if n % 2 else 1)
     vals = {kind: abs(f(_mp(m), tau)) for kind, f in factors.items()}
     return min(vals, key=vals.get)
-
