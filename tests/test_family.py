@@ -338,6 +338,27 @@ def test_family_series_reproduce_the_paper_series(n):
         assert sp.simplify(sp.expand(ours.in_T0[edge] - ref.in_T0[edge])) == 0
 
 
+@pytest.mark.parametrize("name", ["pendulum", "torsion", "meissner"])
+@pytest.mark.parametrize("duty", ["1/2", "1/3", "3/4"])
+def test_family_series_parameters_equal_sympy_series(name, duty):
+    """The coefficients of ``r, beta, w`` in powers of ``m`` that the family's series solver takes
+    (the definitions evaluated in truncated power-series arithmetic) are exactly those of
+    ``sympy.series`` of the same definitions (compared with ``==``)."""
+    import sympy as sp
+
+    from analytic.family import parameter_forms
+    from analytic.family_series import _parameters
+    from analytic.model import Damping, S
+
+    K = 3
+    sysv = system(name, duty=duty)
+    ours = _parameters(sysv, K)
+    defs = parameter_forms(sysv, Damping.NONE).definitions
+    for key in ("r", "beta", "w"):
+        ref = sp.expand(sp.series(defs[key], S.m, 0, K + 1).removeO())
+        assert ours[key] == [sp.expand(ref.coeff(S.m, k)) for k in range(K + 1)], key
+
+
 @pytest.mark.parametrize(
     "name, duty, n", [("meissner", "1/3", 2), ("torsion", "1/2", 1), ("pendulum", "3/4", 3)]
 )

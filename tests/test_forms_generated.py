@@ -69,3 +69,13 @@ def test_numeric_commands_do_not_import_sympy(argv, tmp_path):
         )
         assert proc.returncode == 0, proc.stderr
     assert proc.stdout.strip().splitlines()[-1] == "False 0"
+
+
+def test_time_domain_edge_shapes_are_the_derivations():
+    """The edge shapes the time domain names without sympy are those of
+    :class:`analytic.stitching.EdgeKind`, by parity."""
+    from analytic.stitching import EdgeKind, Parity
+    from verify.timedomain import _KINDS
+
+    want = {int(p): tuple(k.value for k in EdgeKind if k.parity is p) for p in Parity}
+    assert want == _KINDS

@@ -337,7 +337,7 @@ def generated_key(key: str, name: str, orders) -> str:
     return f"{key} | {name} | {orders}"
 
 
-def term_sizes(form: Form) -> Form:
+def term_sizes(form: Form | LazyForm) -> Form | LazyForm:
     """The sizes of the terms of ``form``, for bounding its rounding error: ``(sum |t_i|, sum
     |dt_i/dv|)`` over the additive terms ``t_i`` of its expanded expression, ``v`` its first
     argument, as a form of the same arguments (kept on ``form``; built once).
@@ -345,7 +345,16 @@ def term_sizes(form: Form) -> Form:
     Evaluating ``sum t_i`` in floating point with arguments correct to a few ulp errs by at most
     a few ulp of the first sum, plus what the errors of the angles cost: an angle ``a v + b`` with
     a relative error ``e`` moves by about ``e |a v + b|``, which changes ``t_i`` by about ``e |v +
-    b/a| |dt_i/dv|`` -- bounded through the second sum by the caller's scale of the angles."""
+    b/a| |dt_i/dv|`` -- bounded through the second sum by the caller's scale of the angles.
+
+    For a :class:`LazyForm` the sizes are a :class:`LazyForm` too (key ``term_sizes(key)``), so
+    that their pregenerated compilations need no derivation."""
+    if isinstance(form, LazyForm):
+        sizes = form._fns.get("term_sizes")
+        if sizes is None:
+            sizes = LazyForm(f"term_sizes({form.key})", lambda: term_sizes(form.real))
+            form._fns["term_sizes"] = sizes
+        return sizes
     sizes = form._cache.get("term_sizes")
     if sizes is None:
         import sympy as sp
@@ -359,15 +368,26 @@ def term_sizes(form: Form) -> Form:
     return sizes
 
 
-def with_term_sizes(form: Form, count: int = 3) -> Form:
+def with_term_sizes(form: Form | LazyForm, count: int = 3) -> Form | LazyForm:
     """``form`` and its first ``count`` derivatives followed by its :func:`term_sizes` ``(sum
     |t_i|, sum |dt_i/dv|)``, as one form of the same arguments (kept on ``form``; built once):
     compiled for all ``count + 3`` orders it shares every sine, cosine and hyperbolic function
     among the values, the derivatives and the sizes (a root finder gets its step and the rounding
     bound of its root from one call).  The terms are those of :func:`term_sizes`, taken without
     expanding the arguments of the functions (so that they are the form's own), which is the same
-    sum (``tests/test_grid_friction.py`` compares the two)."""
+    sum (``tests/test_grid_friction.py`` compares the two).
+
+    For a :class:`LazyForm` the result is a :class:`LazyForm` too (key
+    ``with_term_sizes(key, count)``), so that its pregenerated compilations need no derivation."""
     key = ("with_term_sizes", count)
+    if isinstance(form, LazyForm):
+        out = form._fns.get(key)
+        if out is None:
+            out = LazyForm(
+                f"with_term_sizes({form.key}, {count})", lambda: with_term_sizes(form.real, count)
+            )
+            form._fns[key] = out
+        return out
     out = form._cache.get(key)
     if out is None:
         import sympy as sp
@@ -547,7 +567,32 @@ def edge_equation_trig() -> Form:
 
 
 @cache
-def order1_forms() -> tuple[Form, Form]:
+def order1_forms() -> tuple[LazyForm, LazyForm]:
+    """:func:`_order1_forms`, each derived when first needed beyond its pregenerated
+    compilations (:data:`verify.forms_generated.SOURCES`)."""
+    return (
+        LazyForm("order1_forms[0]", _pick(_order1_forms, 0)),
+        LazyForm("order1_forms[1]", _pick(_order1_forms, 1)),
+    )
+
+
+@cache
+def near_one_forms() -> tuple[LazyForm, LazyForm, LazyForm]:
+    """:func:`_near_one_forms`, each derived when first needed beyond its pregenerated
+    compilations (:data:`verify.forms_generated.SOURCES`)."""
+    return (
+        LazyForm("near_one_forms[0]", _pick(_near_one_forms, 0)),
+        LazyForm("near_one_forms[1]", _pick(_near_one_forms, 1)),
+        LazyForm("near_one_forms[2]", _pick(_near_one_forms, 2)),
+    )
+
+
+def _pick(build, k: int):
+    return lambda: build()[k]
+
+
+@cache
+def _order1_forms() -> tuple[Form, Form]:
     """Order 1 in the phase ``x = pi/2 + theta`` itself, for the lower edge at ``m -> 1`` where
     ``x -> 0`` (``T -> 0``) and ``theta -> -pi/2`` would lose the digits of ``x``.
 
@@ -605,7 +650,7 @@ def order1_forms() -> tuple[Form, Form]:
 
 
 @cache
-def near_one_forms() -> tuple[Form, Form, Form]:
+def _near_one_forms() -> tuple[Form, Form, Form]:
     """The equations for ``m -> 1``, where ``r -> 1`` and ``beta -> 1`` and the terms of
     :func:`edge_equation` and :func:`indicator` cancel each other.
 

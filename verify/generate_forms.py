@@ -43,17 +43,52 @@ ENTRIES = (
             ("arb", 2),
         )
     ]
+    + [
+        (f"{forms}[{k}]", (), b, o)
+        for forms, count in (("order1_forms", 2), ("near_one_forms", 3))
+        for k in range(count)
+        for b, o in (("numpy", 1), ("numpy", (0, 1)), ("numpy", (0, 2)))
+        + (("arb", 0), ("arb", 1), ("arb", 2))
+    ]
+    + [
+        (f"term_sizes({forms}[{k}])", (), "numpy", (0, 1))
+        for forms, count in (("order1_forms", 2), ("near_one_forms", 3))
+        for k in range(count)
+    ]
+    + [
+        (f"with_term_sizes(indicator, {c})", (p,), "numpy", o)
+        for p in (-1, 1)
+        for c, o in ((4, (0, 1, 2, 3, 4, 5, 6)), (3, (0, 1, 2, 3)))
+    ]
 )
 
 
-def build() -> dict[str, str]:
-    """Every entry's text, derived now (imports sympy)."""
+def _lazy(builder: str, args: tuple):
+    """The :class:`verify.derived.LazyForm` an entry names: ``builder(*args)``, an item
+    ``forms[k]`` of a builder of several forms, or ``term_sizes(...)`` of one."""
     from . import derived
+
+    if builder.startswith("term_sizes(") and builder.endswith(")"):
+        return derived.term_sizes(_lazy(builder[len("term_sizes(") : -1], args))
+    if builder.startswith("with_term_sizes(") and builder.endswith(")"):
+        inner, _, count = builder[len("with_term_sizes(") : -1].rpartition(", ")
+        return derived.with_term_sizes(_lazy(inner, args), int(count))
+    if builder.endswith("]"):
+        name, _, k = builder[:-1].partition("[")
+        return getattr(derived, name)(*args)[int(k)]
+    return getattr(derived, builder)(*args)
+
+
+def build() -> dict[str, str]:
+    """Every entry's text, derived now (imports sympy); with the time-domain building blocks
+    (:func:`verify.timedomain.derived_sources`)."""
+    from . import derived, timedomain
 
     out = {}
     for builder, args, name, orders in ENTRIES:
-        lazy = getattr(derived, builder)(*args)
+        lazy = _lazy(builder, args)
         out[derived.generated_key(lazy.key, name, orders)] = lazy.real.source(name, orders)
+    out.update(timedomain.derived_sources())
     return out
 
 

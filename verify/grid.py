@@ -765,8 +765,8 @@ def _indicator_all(parity: int, sizes: bool = True):
     in one compiled numpy call (:func:`verify.derived.with_term_sizes`: six transcendental
     calls); ``sizes=False``: ``(D, D', D'', D''')`` only."""
     if not sizes:
-        return with_term_sizes(indicator(parity).real).compiled("numpy", (0, 1, 2, 3))
-    return with_term_sizes(indicator(parity).real, 4).compiled("numpy", (0, 1, 2, 3, 4, 5, 6))
+        return with_term_sizes(indicator(parity)).compiled("numpy", (0, 1, 2, 3))
+    return with_term_sizes(indicator(parity), 4).compiled("numpy", (0, 1, 2, 3, 4, 5, 6))
 
 
 #: the maximiser of ``D`` is taken once its Halley step (on ``D'``) is below this (absolute, in
@@ -1672,7 +1672,7 @@ def _polish_near_one(theta, n, P, form):
     c = (np.asarray(n, float) * _HALF_PI).reshape(-1, 1)
     fn = form.compiled("numpy", (0, 1))
     t = theta[:, cols]
-    if len(form.args) == 5 and form.args[2].name == "u":
+    if form is near_one_forms()[2]:  # the indicator, in (theta, c, u, bm, g)
         args = (c, P.u[cols], P.bm[cols], P.g[cols])
     else:
         args = (c, P.r[cols], P.u[cols] / (1 + P.r[cols]), P.bm[cols])

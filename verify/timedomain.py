@@ -116,48 +116,94 @@ def as_amplitude(A) -> Fraction:
 # the derived building blocks, lambdified once
 
 
-@cache
-def _initial_ratio(kind_value: str):
-    """``phi'(0)/phi(0)`` on an undamped edge of the given shape, as ``(m, tau) -> (num, den)``:
-    the derived ratio is split into numerator and denominator so a vanishing ``phi(0)`` is fine."""
+#: the edge shapes (:class:`analytic.stitching.EdgeKind`) by value and parity, without sympy
+_KINDS = {-1: ("odd-cos-sin", "odd-sin-cos"), 1: ("even-cos-cos", "even-sin-sin")}
+
+
+def _initial_ratio_exprs(kind_value: str) -> tuple:
+    """``phi'(0)/phi(0)`` on an undamped edge of the given shape as ``(num, den)`` in ``(m, tau)``:
+    the derived ratio split into numerator and denominator so a vanishing ``phi(0)`` is fine."""
     import sympy as sp
 
-    from analytic.model import S, physical
+    from analytic.model import physical
     from analytic.reductions import stationary_initial_condition
     from analytic.stitching import EdgeKind
 
     ratio = physical(stationary_initial_condition(EdgeKind(kind_value)), damping=False)
     ratio = ratio.replace(sp.tan, lambda u: sp.sin(u) / sp.cos(u))
     ratio = ratio.replace(sp.cot, lambda u: sp.cos(u) / sp.sin(u))
-    num, den = sp.fraction(sp.together(ratio))
-    return (
-        sp.lambdify((S.m, S.tau), num, modules="mpmath"),
-        sp.lambdify((S.m, S.tau), den, modules="mpmath"),
+    return sp.fraction(sp.together(ratio))
+
+
+def _edge_factor_expr(kind_value: str):
+    """The undamped per-edge factor of the shape in ``(m, tau)``, in the physical units, from
+    :func:`analytic.normal_form.edge_factor`."""
+    from analytic.model import S, inertia, physical
+    from analytic.normal_form import edge_factor
+    from analytic.stitching import EdgeKind
+
+    kind = EdgeKind(kind_value)
+    a1, a2 = S.omega1 * S.T / 2, S.omega2 * S.T / 2
+    q = inertia(1) * S.omega1 / (inertia(2) * S.omega2)
+    r = (q - 1) / (q + 1)
+    f = edge_factor(kind.parity, kind.epsilon, symbols=((a1 + a2) / 2, (a2 - a1) / 2, r))
+    return physical(f, damping=False)
+
+
+def _text(expr) -> str:
+    """The Python text :func:`sympy.lambdify` writes for ``expr`` in ``(m, tau)`` (mpmath)."""
+    import inspect
+
+    import sympy as sp
+
+    from analytic.model import S
+
+    return inspect.getsource(sp.lambdify((S.m, S.tau), expr, modules="mpmath", docstring_limit=0))
+
+
+def _key(name: str, kind_value: str) -> str:
+    return f"timedomain {name}({kind_value}) | mpmath"
+
+
+def derived_sources() -> dict[str, str]:
+    """The text of every building block, derived now (imports sympy), keyed as in
+    :data:`verify.forms_generated.SOURCES` (written there by :mod:`verify.generate_forms`)."""
+    out = {}
+    for kinds in _KINDS.values():
+        for kv in kinds:
+            num, den = _initial_ratio_exprs(kv)
+            out[_key("initial_ratio_num", kv)] = _text(num)
+            out[_key("initial_ratio_den", kv)] = _text(den)
+            out[_key("edge_factor", kv)] = _text(_edge_factor_expr(kv))
+    return out
+
+
+def _load(key: str):
+    """The function of ``(m, tau)`` whose text is stored under ``key`` (derived if it is not)."""
+    from .forms_generated import SOURCES
+
+    text = SOURCES.get(key)
+    if text is None:
+        text = derived_sources()[key]
+    ns = dict(vars(mpmath))
+    exec(compile(text, f"<form {key}>", "exec"), ns)  # noqa: S102 - derived text
+    return ns["_lambdifygenerated"]
+
+
+@cache
+def _initial_ratio(kind_value: str):
+    """``phi'(0)/phi(0)`` on an undamped edge of the given shape, as ``(m, tau) -> (num, den)``
+    (:func:`_initial_ratio_exprs`, compiled from the stored text)."""
+    return _load(_key("initial_ratio_num", kind_value)), _load(
+        _key("initial_ratio_den", kind_value)
     )
 
 
 @cache
 def _edge_factors(parity_value: int):
-    """The two undamped per-edge factors of the parity, ``{kind: f(m, tau)}`` (mpmath), in the
-    physical units, from :func:`analytic.normal_form.edge_factor`."""
-    import sympy as sp
-
-    from analytic.model import S, inertia, physical
-    from analytic.normal_form import edge_factor
-    from analytic.stitching import EdgeKind, Parity
-
-    parity = Parity(parity_value)
-    a1, a2 = S.omega1 * S.T / 2, S.omega2 * S.T / 2
-    q = inertia(1) * S.omega1 / (inertia(2) * S.omega2)
-    r = (q - 1) / (q + 1)
-    out = {}
-    for kind in EdgeKind:
-        if kind.parity is not parity:
-            continue
-        f = edge_factor(parity, kind.epsilon, symbols=((a1 + a2) / 2, (a2 - a1) / 2, r))
-        f = physical(f, damping=False)
-        out[kind] = sp.lambdify((S.m, S.tau), f, modules="mpmath")
-    return out
+    """The two undamped per-edge factors of the parity, ``{kind value: f(m, tau)}`` (mpmath,
+    :func:`_edge_factor_expr`, compiled from the stored text)."""
+    return {kv: _load(_key("edge_factor", kv)) for kv in _KINDS[parity_value]}
 
 
 # ---------------------------------------------------------------------------------------------
@@ -445,5 +491,4 @@ def _edge_kind(n: int, m, tau) -> str:
     """The edge shape whose per-edge factor vanishes at ``tau`` (the smaller one in modulus)."""
     factors = _edge_factors(-1 if n % 2 else 1)
     vals = {kind: abs(f(_mp(m), tau)) for kind, f in factors.items()}
-    return min(vals, key=vals.get).value
-
+    return min(vals, key=vals.get)
