@@ -67,7 +67,6 @@ __all__ = [
     "indicator",
     "order1_forms",
     "near_one_forms",
-    "near_one_edge_form",
     "trace_indicator",
     "half_period_forms",
     "fixed_point_map",
@@ -712,20 +711,6 @@ def _near_one_forms() -> tuple[Form, Form, Form]:
         Form("edge equation near m = 1, eps = -1", (th, c, r, v, bm), _derivatives(minus, th, 2)),
         Form("indicator near m = 1", (th, c, u, bm, g), _derivatives(Dn, th, 2)),
     )
-
-
-@cache
-def near_one_edge_form(eps: int, order1: bool = False) -> LazyForm:
-    """The undamped edge form near ``m = 1`` of the edge ``eps`` (``+-1``): ``near_one_forms()[0]``
-    or ``[1]``, or with ``order1`` (``eps = +1`` only) ``order1_forms()[0]``, derived when first
-    needed beyond its pregenerated compilations (the certified solver's near-one path then runs
-    without sympy)."""
-    if order1:
-        if eps != 1:
-            raise ValueError("the order-1 form in x is that of the edge eps = +1")
-        return LazyForm("order1_forms()[0]", lambda: order1_forms()[0])
-    i = 0 if eps == 1 else 1
-    return LazyForm(f"near_one_forms()[{i}]", lambda: near_one_forms()[i])
 
 
 @cache

@@ -24,7 +24,6 @@ ENTRIES = (
     + [("edge_equation", (p,), "arb", o) for p in (-1, 1) for o in (0, 1, (0, 1))]
     + [("indicator", (p,), "math", o) for p in (-1, 1) for o in ((0, 1), (1, 2), (0, 1, 2))]
     + [("indicator", (p,), "arb", o) for p in (-1, 1) for o in (0, 1, 2, (0, 1))]
-    + [("near_one_edge_form", a, "arb", o) for a in ((1,), (-1,), (1, True)) for o in (0, 1)]
     + [
         ("trace_window", (r,), b, o)
         for r in _REGIMES

@@ -20,7 +20,7 @@ from functools import cache
 from flint import arb, ctx
 
 from .certify import QUICK_GUARD, Root, ball, bits_for_digits, certified_root, pow2, quick_root
-from .derived import backend, edge_equation, near_one_edge_form
+from .derived import backend, edge_equation, near_one_forms, order1_forms
 from .enclosure import AtPrecision, edges_result, sgn_of, theta_floor, theta_scale
 from .float_stage import float_edge
 from .inputs import as_depth, as_order
@@ -240,7 +240,7 @@ def near_one_edge(n: int, eps: int, P, C, bits: int) -> Root:
     pi/2`` otherwise.  Each has one simple root in ``(0, pi)`` (the window theorem)."""
     half = math.pi / 2
     if n == 1 and eps == 1:
-        f = near_one_edge_form(1, order1=True)
+        f = order1_forms()[0]
         f0, f1 = f.compiled("arb", 0), f.compiled("arb", 1)
 
         def F(y):  # the form is positive at x = 0: negate for F(0) < 0 < F(pi)
@@ -252,7 +252,7 @@ def near_one_edge(n: int, eps: int, P, C, bits: int) -> Root:
             return -f1(y, p.u / (1 + p.r), p.beta, p.bm)
 
     else:
-        f = near_one_edge_form(eps)
+        f = near_one_forms()[0 if eps == 1 else 1]
         f0, f1 = f.compiled("arb", 0), f.compiled("arb", 1)
 
         def F(y):
