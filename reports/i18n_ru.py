@@ -863,7 +863,10 @@ def _check_ru(s: str) -> str:
             f"проверено численно в {m[1]} случайных точках с {m[2]} знаками (наибольшая "
             f"относительная невязка {m[3]}); sympy не свёл разность к нулю"
         )
-    return {"proved symbolically": "доказано символьно"}.get(s, s)
+    return {
+        "proved symbolically": "доказано символьно",
+        "simplifies symbolically to zero": "символьно сводится к нулю",
+    }.get(s, s)
 
 
 _EDGE_TAILS = [
