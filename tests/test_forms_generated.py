@@ -79,3 +79,29 @@ def test_time_domain_edge_shapes_are_the_derivations():
 
     want = {int(p): tuple(k.value for k in EdgeKind if k.parity is p) for p in Parity}
     assert want == _KINDS
+
+
+def test_built_in_parameter_forms_load_without_sympy():
+    """The parameter forms of every built-in system at a stored duty (those of the family
+    section among them) are loaded from their stored texts: no sympy in the process."""
+    code = (
+        "import sys\n"
+        "from fractions import Fraction\n"
+        "from analytic.system import LAWS, system\n"
+        "from verify.derived import backend\n"
+        "from verify.system_params import STORED_DUTIES, normal_values, trace_values\n"
+        "for name in LAWS:\n"
+        "    for D in STORED_DUTIES:\n"
+        "        s = system(name, duty=D)\n"
+        "        for B in ('math', 'numpy', 'mpmath', 'arb'):\n"
+        "            normal_values(s, Fraction(1, 5), None, 'none', backend(B))\n"
+        "            normal_values(s, Fraction(1, 5), Fraction(7), 'exact', backend(B))\n"
+        "        normal_values(s, 0.2, 7.0, 'paper', backend('math'))\n"
+        "        trace_values(s, Fraction(1, 5), Fraction(7), backend('arb'))\n"
+        "print('sympy' in sys.modules)\n"
+    )
+    proc = subprocess.run(
+        [sys.executable, "-c", code], cwd=ROOT, capture_output=True, text=True, timeout=600
+    )
+    assert proc.returncode == 0, proc.stderr
+    assert proc.stdout.strip() == "False"

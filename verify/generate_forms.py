@@ -80,14 +80,16 @@ def _lazy(builder: str, args: tuple):
 
 def build() -> dict[str, str]:
     """Every entry's text, derived now (imports sympy); with the time-domain building blocks
-    (:func:`verify.timedomain.derived_sources`)."""
-    from . import derived, timedomain
+    (:func:`verify.timedomain.derived_sources`) and the parameter forms of the built-in systems
+    (:func:`verify.system_params.derived_sources`, proven as they are derived)."""
+    from . import derived, system_params, timedomain
 
     out = {}
     for builder, args, name, orders in ENTRIES:
         lazy = _lazy(builder, args)
         out[derived.generated_key(lazy.key, name, orders)] = lazy.real.source(name, orders)
     out.update(timedomain.derived_sources())
+    out.update(system_params.derived_sources())
     return out
 
 
