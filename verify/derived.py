@@ -48,8 +48,8 @@ from __future__ import annotations
 
 import math
 import re
-from fractions import Fraction
 from dataclasses import dataclass, field
+from fractions import Fraction
 from functools import cache
 from operator import methodcaller
 
