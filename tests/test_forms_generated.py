@@ -105,3 +105,30 @@ def test_built_in_parameter_forms_load_without_sympy():
     )
     assert proc.returncode == 0, proc.stderr
     assert proc.stdout.strip() == "False"
+
+
+@pytest.mark.parametrize("name", ["pendulum", "torsion", "meissner"])
+@pytest.mark.parametrize("Q", ["1/2", "2/3", "7/10", "3", "7"])
+def test_regime_changes_from_the_stored_roots(name, Q):
+    """The depths where the exact model's equations change, from the stored compiled roots
+    (:func:`verify.derived.regime_roots`), against sympy solving ``omega_i^2(m) = g2`` (and
+    ``omega_1^2 = g2 (1 + NEAR_CRITICAL^2)``) at the rational ``g2 = 1/(4 Q^2)`` itself."""
+    from fractions import Fraction
+
+    import sympy as sp
+
+    from analytic.model import S
+    from analytic.system import system
+    from verify.existence import _regime_changes
+    from verify.params import NEAR_CRITICAL
+
+    sysm = system(name)
+    g2 = sp.Rational(1, 4) / sp.Rational(Q) ** 2
+    w1, w2, _ = (sp.sympify(v) for v in sysm.values(S.m))
+    eps2 = sp.Rational(Fraction(NEAR_CRITICAL) ** 2)
+    want = set()
+    for eq in (w1 - g2, w2 - g2, w1 - g2 * (1 + eps2)):
+        for root in sp.solveset(eq, S.m, sp.Interval.open(0, 1)):
+            want.add(Fraction(int(root.p), int(root.q)))
+    assert _regime_changes(Fraction(Q), sysm) == want
+    assert _regime_changes(Fraction(Q), system("custom", omega_sq=("1/2", "3/2"))) == set()

@@ -49,6 +49,7 @@ from __future__ import annotations
 import math
 import re
 from dataclasses import dataclass, field
+from fractions import Fraction
 from functools import cache
 from operator import methodcaller
 
@@ -64,6 +65,7 @@ __all__ = [
     "edge_equation_any",
     "edge_equation_linear",
     "edge_equation_trig",
+    "regime_roots",
     "indicator",
     "order1_forms",
     "near_one_forms",
@@ -149,6 +151,9 @@ _BACKENDS = {
         "_q": _mp_q,
         "_pi": lambda: +mpmath.pi,
     },
+    "exact": {  # Fractions: rational functions only (no transcendental function is defined)
+        "_q": Fraction,
+    },
     "arb": {  # z.sin() etc. (balls or jets, verify.certify.Jet), called without a Python frame
         "sin": methodcaller("sin"),
         "cos": methodcaller("cos"),
@@ -167,7 +172,8 @@ _BACKENDS = {
 
 @cache
 def backend(name: str) -> Backend:
-    """The back end called ``name`` (``"math"``, ``"numpy"``, ``"mpmath"`` or ``"arb"``)."""
+    """The back end called ``name`` (``"math"``, ``"numpy"``, ``"mpmath"``, ``"arb"``, or
+    ``"exact"``: :class:`fractions.Fraction` arithmetic, for rational functions)."""
     return Backend(name, _BACKENDS[name])
 
 
@@ -510,7 +516,17 @@ def edge_equation_any() -> Form:
 
 
 @cache
-def edge_equation_linear() -> tuple[Form, Form]:
+def edge_equation_linear() -> tuple[LazyForm, LazyForm]:
+    """:func:`_edge_equation_linear`, each form derived when first needed beyond its
+    pregenerated compilations (:data:`verify.forms_generated.SOURCES`)."""
+    return (
+        LazyForm("edge_equation_linear[0]", _pick(_edge_equation_linear, 0)),
+        LazyForm("edge_equation_linear[1]", _pick(_edge_equation_linear, 1)),
+    )
+
+
+@cache
+def _edge_equation_linear() -> tuple[Form, Form]:
     """:func:`edge_equation_any` collected in ``cos(beta x)`` and ``sin(beta x)``:
     ``sin(theta) + A cos(beta (c + theta)) + B sin(beta (c + theta))``, the coefficients ``A``,
     ``B`` (functions of ``sgn, eps, odd, r``) computed once per point instead of once per
@@ -544,7 +560,14 @@ def edge_equation_linear() -> tuple[Form, Form]:
 
 
 @cache
-def edge_equation_trig() -> Form:
+def edge_equation_trig() -> LazyForm:
+    """:func:`_edge_equation_trig`, derived when first needed beyond its pregenerated
+    compilations (:data:`verify.forms_generated.SOURCES`)."""
+    return LazyForm("edge_equation_trig", _edge_equation_trig)
+
+
+@cache
+def _edge_equation_trig() -> Form:
     """:func:`edge_equation_linear` and its two ``theta``-derivatives as polynomials in the sines
     and cosines they contain: ``sin(theta), cos(theta), sin(y), cos(y)`` (``y = beta (c + theta)``)
     replaced by the arguments ``(st, ct, sy, cy)``; the form in ``(st, ct, sy, cy, beta, A, B)``.
@@ -553,7 +576,7 @@ def edge_equation_trig() -> Form:
     transcendental function."""
     import sympy as sp
 
-    lin, _coef = edge_equation_linear()
+    lin, _coef = _edge_equation_linear()
     th, c, beta, A, B = lin.args
     st, ct, sy, cy = sp.symbols("s_t c_t s_y c_y", real=True)
     y = beta * (c + th)
@@ -845,3 +868,37 @@ def fixed_point_map(parity, damped: bool) -> Form:
         args = (th, c, s["r2"], s["u"], beta, s["g"], branch)
     title = f"fixed-point map, {'with' if damped else 'without'} friction"
     return Form(title, args, (sp.asin(rhs),))
+
+
+@cache
+def regime_roots(name: str) -> LazyForm:
+    """:func:`_regime_roots` of the built-in law ``name`` (:data:`analytic.system.LAWS`), derived
+    when first needed beyond its pregenerated compilation (:data:`verify.forms_generated.SOURCES`):
+    ``compiled("exact")(g2)`` gives the roots as exact fractions of ``g2 = gamma^2/omega0^2``."""
+    return LazyForm(f"regime_roots({name})", lambda: _regime_roots(name))
+
+
+@cache
+def _regime_roots(name: str) -> Form:
+    """The depths ``m`` where ``omega_1^2``, ``omega_2^2`` or ``omega_1^2 / (1 + NEAR_CRITICAL^2)``
+    (:data:`verify.params.NEAR_CRITICAL`) equal ``g2 = gamma^2/omega0^2``, solved by sympy for the
+    law ``name``: a form of ``(g2,)`` whose one expression is the list of the roots (the paper's
+    ``4 Q^2 - 1 = +-m``, ...).  Each root must be a rational function of ``g2``, so that it is
+    exact at a rational ``g2`` (derivation guard)."""
+    import sympy as sp
+
+    from analytic.model import S
+    from analytic.system import system
+
+    from .params import NEAR_CRITICAL
+
+    g2 = sp.Symbol("g2", positive=True)
+    eps2 = sp.Rational(Fraction(NEAR_CRITICAL) ** 2)
+    w1, w2, _ = (sp.sympify(v) for v in system(name).values(S.m))
+    roots = []
+    for eq in (w1 - g2, w2 - g2, w1 - g2 * (1 + eps2)):
+        roots.extend(sp.solve(sp.numer(sp.together(eq)), S.m))
+    for root in roots:
+        if not root.is_rational_function(g2):  # pragma: no cover - derivation guard
+            raise AssertionError(f"a critical depth of {name} is not rational in g2: {root}")
+    return Form(f"critical depths of {name}", (g2,), (roots,))

@@ -31,7 +31,6 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, fields
 from fractions import Fraction
-from functools import cache
 
 import mpmath
 import numpy as np
@@ -40,7 +39,7 @@ from flint import arb, ctx
 from analytic.system import PAPER, System
 
 from .certify import CertificationError, bits_for_digits, certified_root, prove_sign, to_mpf
-from .derived import backend
+from .derived import backend, regime_roots
 from .inputs import InputError, as_damping, as_digits, as_order, as_quality, as_system
 from .params import NEAR_CRITICAL, exact_fraction, form_for, normal_params, trace_params
 
@@ -767,40 +766,14 @@ def _breakpoints(
 
 def _regime_changes(Q: Fraction, system: System) -> set[Fraction]:
     """Depths where the equations change in the exact model: a phase critically damped
-    (``omega_i^2 = gamma^2``) and phase 1 at :data:`verify.params.NEAR_CRITICAL` of it, from the
-    roots of the system's laws (:func:`_regime_roots`; the paper's ``4 Q^2 - 1 = +-m``, ...)."""
-    import sympy as sp
-
-    g2v = sp.Rational(1, 4) / sp.Rational(Q.numerator, Q.denominator) ** 2
-    g2, roots = _regime_roots(system)
-    out = set()
-    for expr in roots:
-        root = sp.radsimp(expr.subs(g2, g2v))
-        if root.is_Rational and 0 < root < 1:
-            out.add(Fraction(int(root.p), int(root.q)))
-        elif root.is_real and 0 < root < 1:  # irrational: a nearby rational cut serves
-            out.add(Fraction(str(sp.N(root, 30))))
-    return out
-
-
-@cache
-def _regime_roots(system: System) -> tuple:
-    """``(g2, roots)``: the depths where ``omega_1^2``, ``omega_2^2`` or ``omega_1^2 / (1 +
-    NEAR_CRITICAL^2)`` equal ``g2 = gamma^2/omega0^2``, solved by sympy once per system (a
-    custom system has none: its phases do not depend on ``m``)."""
-    import sympy as sp
-
-    from analytic.model import S
-
-    g2 = sp.Symbol("g2", positive=True)
+    (``omega_i^2 = gamma^2``) and phase 1 at :data:`verify.params.NEAR_CRITICAL` of it, the
+    roots of the system's laws (:func:`verify.derived.regime_roots`, solved by sympy, stored as
+    their compiled text; the paper's ``4 Q^2 - 1 = +-m``, ...), exact at ``g2 = 1/(4 Q^2)``.  A
+    custom system has none: its phases do not depend on ``m``."""
     if not system.uses_depth:
-        return g2, ()
-    eps2 = sp.Rational(Fraction(NEAR_CRITICAL) ** 2)
-    w1, w2, _ = (sp.sympify(v) for v in system.values(S.m))
-    roots = []
-    for eq in (w1 - g2, w2 - g2, w1 - g2 * (1 + eps2)):
-        roots.extend(sp.solve(sp.numer(sp.together(eq)), S.m))
-    return g2, tuple(roots)
+        return set()
+    roots = regime_roots(system.name).compiled("exact")(Fraction(1, 4) / Fraction(Q) ** 2)
+    return {Fraction(root) for root in roots if 0 < root < 1}
 
 
 def _segments(n: int, Q: Fraction, damping: str, digits: int, budget: int, system: System = PAPER):

@@ -14,6 +14,8 @@ from __future__ import annotations
 import os
 from pathlib import Path
 
+from analytic.system import LAWS
+
 __all__ = ["ENTRIES", "build", "write"]
 
 _REGIMES = ("under", "critical", "over")
@@ -59,6 +61,10 @@ ENTRIES = (
         for p in (-1, 1)
         for c, o in ((4, (0, 1, 2, 3, 4, 5, 6)), (3, (0, 1, 2, 3)))
     ]
+    + [("edge_equation_linear[0]", (), "numpy", (0, 1, 2))]
+    + [("edge_equation_linear[1]", (), "numpy", (0, 1))]
+    + [("edge_equation_trig", (), "numpy", (0, 1, 2))]
+    + [("regime_roots", (name,), "exact", 0) for name in LAWS]
 )
 
 
