@@ -874,31 +874,30 @@ def fixed_point_map(parity, damped: bool) -> Form:
 def regime_roots(name: str) -> LazyForm:
     """:func:`_regime_roots` of the built-in law ``name`` (:data:`analytic.system.LAWS`), derived
     when first needed beyond its pregenerated compilation (:data:`verify.forms_generated.SOURCES`):
-    ``compiled("exact")(g2)`` gives the roots as exact fractions of ``g2 = gamma^2/omega0^2``."""
+    ``compiled("exact")(g2, e2)`` gives the roots as exact fractions of ``g2 = gamma^2/omega0^2``
+    and the squared margin ``e2``."""
     return LazyForm(f"regime_roots({name})", lambda: _regime_roots(name))
 
 
 @cache
 def _regime_roots(name: str) -> Form:
-    """The depths ``m`` where ``omega_1^2``, ``omega_2^2`` or ``omega_1^2 / (1 + NEAR_CRITICAL^2)``
-    (:data:`verify.params.NEAR_CRITICAL`) equal ``g2 = gamma^2/omega0^2``, solved by sympy for the
-    law ``name``: a form of ``(g2,)`` whose one expression is the list of the roots (the paper's
-    ``4 Q^2 - 1 = +-m``, ...).  Each root must be a rational function of ``g2``, so that it is
-    exact at a rational ``g2`` (derivation guard)."""
+    """The depths ``m`` where ``omega_1^2``, ``omega_2^2`` or ``omega_1^2 / (1 + e2)`` equal ``g2
+    = gamma^2/omega0^2``, solved by sympy for the law ``name``: a form of ``(g2, e2)`` whose one
+    expression is the list of the roots (the paper's ``4 Q^2 - 1 = +-m``, ...; ``e2`` is the
+    square of the caller's margin to critical damping, :data:`verify.params.NEAR_CRITICAL`).
+    Each root must be a rational function of ``g2`` and ``e2``, so that it is exact at rational
+    arguments (derivation guard)."""
     import sympy as sp
 
     from analytic.model import S
     from analytic.system import system
 
-    from .params import NEAR_CRITICAL
-
-    g2 = sp.Symbol("g2", positive=True)
-    eps2 = sp.Rational(Fraction(NEAR_CRITICAL) ** 2)
+    g2, e2 = sp.symbols("g2 e2", positive=True)
     w1, w2, _ = (sp.sympify(v) for v in system(name).values(S.m))
     roots = []
-    for eq in (w1 - g2, w2 - g2, w1 - g2 * (1 + eps2)):
+    for eq in (w1 - g2, w2 - g2, w1 - g2 * (1 + e2)):
         roots.extend(sp.solve(sp.numer(sp.together(eq)), S.m))
     for root in roots:
-        if not root.is_rational_function(g2):  # pragma: no cover - derivation guard
+        if not root.is_rational_function(g2, e2):  # pragma: no cover - derivation guard
             raise AssertionError(f"a critical depth of {name} is not rational in g2: {root}")
-    return Form(f"critical depths of {name}", (g2,), (roots,))
+    return Form(f"critical depths of {name}", (g2, e2), (roots,))

@@ -772,7 +772,8 @@ def _regime_changes(Q: Fraction, system: System) -> set[Fraction]:
     custom system has none: its phases do not depend on ``m``."""
     if not system.uses_depth:
         return set()
-    roots = regime_roots(system.name).compiled("exact")(Fraction(1, 4) / Fraction(Q) ** 2)
+    g2, e2 = Fraction(1, 4) / Fraction(Q) ** 2, Fraction(NEAR_CRITICAL) ** 2
+    roots = regime_roots(system.name).compiled("exact")(g2, e2)
     return {Fraction(root) for root in roots if 0 < root < 1}
 
 
