@@ -25,7 +25,7 @@ from __future__ import annotations
 #: derived one series before
 _PER_K = {
     "expansions": ("small_m_parameters", "theta_series", "_frictionless"),
-    "thresholds": ("_threshold_raw", "_threshold", "_near_raw"),
+    "thresholds": ("_tangency", "_threshold", "_near_raw"),
 }
 
 

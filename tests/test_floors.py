@@ -117,3 +117,17 @@ def test_the_certified_floor_encloses_the_engines_edges(digits):
 def test_floors_flag_refuses_plot(capsys):
     assert main(["bench", "--floors", "--plot", "x.pdf"]) == 2
     assert "paramres: error:" in capsys.readouterr().err
+
+
+def test_series_scene_clears_caches_that_exist():
+    # the series scene clears the caches that depend on the number of terms before every call;
+    # a renamed or uncached function would make the scene fail (or time a warm cache)
+    import analytic.expansions
+    import analytic.thresholds
+
+    mod = _load("floor_series")
+    for name, funcs in mod._PER_K.items():
+        module = {"expansions": analytic.expansions, "thresholds": analytic.thresholds}[name]
+        for f in funcs:
+            assert callable(getattr(getattr(module, f), "cache_clear", None)), (name, f)
+    mod._clear()
