@@ -63,8 +63,8 @@ SECOND_SHARES = ("catalogue-rows",)
 AFTER_SECOND = ("summary", "conclusions")
 
 #: the other sections of a cold build, the longest first (CPU seconds of a cold build: the
-#: switching section about 20, the speed section and the diagrams 6 to 7 each, the family 4,
-#: the rest 2 or less).  Both processes take the next one from this list when they are free --
+#: switching section 5 to 7, the speed section about 5, the diagrams 3.5, the family 2 to 3,
+#: the rest 1.5 or less).  Both processes take the next one from this list when they are free --
 #: the first from the start, the second after its own sections -- so the slow sections are
 #: spread over both processes whatever the second process's own sections cost.  A section not
 #: named here comes after these, in reading order.
