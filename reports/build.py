@@ -8,8 +8,10 @@ Without a TeX engine the source and figures are still written, and :func:`how_to
 what to install.  ``pdflatex`` is run until its auxiliary files (:data:`AUXILIARY`: labels, the
 contents, the lists of figures and tables, the bookmarks) come out of a pass as they went in --
 the fixed point ``latexmk`` also waits for, without its start-up and bookkeeping (about 1 s of
-CPU time a build) -- and as long as the log asks for a rerun; three passes for a fresh
-document.  ``latexmk`` is used where asked for (``find_engine("latexmk")``).
+CPU time a build) -- and as long as the log asks for a rerun.  The report numbers its front
+matter (title, contents, lists) apart from its body, so that the length of the contents does not
+move the body's pages: a fresh document settles in two passes instead of three.  ``latexmk``
+is used where asked for (``find_engine("latexmk")``).
 """
 
 from __future__ import annotations
@@ -54,6 +56,11 @@ _TIMEOUT = 600
 #: the files a pdflatex pass writes and the next one reads: when none of them changes in a pass,
 #: the next pass would typeset the same document
 AUXILIARY = (".aux", ".toc", ".lof", ".lot", ".out")
+#: what a pass writes into the ``.aux`` that no pass reads back into the typeset document: the
+#: kernel's record of the number of the last page (``\@abspage@last``, for packages that ask
+#: for the page count; the report uses none), which the first pass, typesetting empty contents,
+#: gets wrong
+_NOT_READ = re.compile(rb"^\\gdef ?\\@abspage@last\{\d+\}\r?\n", re.MULTILINE)
 #: what the log says when a pass is not the last one
 _RERUN = re.compile(r"Rerun to get|Label\(s\) may have changed|Rerun LaTeX")
 
@@ -154,12 +161,14 @@ def _run(cmd: list[str], cwd: Path) -> subprocess.CompletedProcess:
 
 
 def _auxiliary(work: Path, stem: str) -> dict[str, bytes]:
-    """The contents of the auxiliary files of ``stem`` in ``work`` (:data:`AUXILIARY`)."""
+    """The contents of the auxiliary files of ``stem`` in ``work`` (:data:`AUXILIARY`), without
+    what no pass reads back (:data:`_NOT_READ`)."""
     out = {}
     for suffix in AUXILIARY:
         path = work / f"{stem}{suffix}"
         if path.exists():
-            out[suffix] = path.read_bytes()
+            data = path.read_bytes()
+            out[suffix] = _NOT_READ.sub(b"", data) if suffix == ".aux" else data
     return out
 
 

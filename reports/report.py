@@ -335,12 +335,15 @@ def _assemble(ctx: Context, sections, lang: str, command: str | None, jobs: int)
         abstract=abstract,
         config=ctx.config,
         packages=LANGUAGE_PACKAGES[lang],
-        preamble=(frontmatter.pdf_metadata(prov),),
+        # the front matter is numbered i, ii, ... and the body from 1, so that the body's pages
+        # do not depend on the length of the contents (two pdflatex passes settle the document)
+        preamble=(frontmatter.pdf_metadata(prov), r"\pagenumbering{roman}"),
         contents=(
             Latex(r"\tableofcontents"),
             Latex(r"\listoffigures"),
             Latex(r"\listoftables"),
             Latex(r"\clearpage"),
+            Latex(r"\pagenumbering{arabic}"),
         ),
         back=(bibliography(),),
     ).raw

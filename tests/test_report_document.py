@@ -389,3 +389,39 @@ def test_verdicts_set_their_formulas_as_mathematics(reports, lang):
     assert len(verdicts) >= 30, len(verdicts)  # 37 in today's report
     bad = {v[:60]: h for v in verdicts if (h := plain_text_maths(v))}
     assert not bad, bad
+
+
+@pytest.mark.skipif(not HAVE["en"], reason="pdflatex or poppler-utils not installed")
+def test_the_report_settles_in_two_passes(reports, monkeypatch):
+    """The front matter is numbered apart from the body, so the contents' length does not move the
+    body's pages: a fresh compilation of the report settles after two pdflatex passes (a third
+    would read back the same auxiliary files), and the body starts on page 1 after the lists."""
+    import reports.build as build
+
+    directory = reports["en"]
+    files = {tex_name("en"): _tex(reports, "en")}
+    for figure in sorted((directory / "figures").iterdir()):
+        files[f"figures/{figure.name}"] = figure.read_bytes()
+    passes = []
+    real_run = build._run
+    monkeypatch.setattr(build, "_run", lambda cmd, cwd: passes.append(cmd) or real_run(cmd, cwd))
+    pdf, _ = build.compile_pdf(tex_name("en"), files, find_engine())
+    assert len(passes) == 2
+    assert pdf.startswith(b"%PDF")
+    text = _pdf_text(reports, "en")
+    contents = text.split("List of Figures", 1)[0]
+    assert re.search(r"1 Introduction \.?[ .]*1 ", contents), contents[:400]
+
+
+def test_the_settled_test_ignores_only_the_last_page_record(tmp_path):
+    """The comparison of auxiliary files between passes drops the kernel's last-page record (read
+    by no pass) and nothing else."""
+    from reports.build import _auxiliary
+
+    aux = tmp_path / "doc.aux"
+    aux.write_bytes(b"\\relax\n\\newlabel{a}{{1}{2}}\n\\gdef \\@abspage@last{49}\n")
+    first = _auxiliary(tmp_path, "doc")
+    aux.write_bytes(b"\\relax\n\\newlabel{a}{{1}{2}}\n\\gdef \\@abspage@last{51}\n")
+    assert _auxiliary(tmp_path, "doc") == first
+    aux.write_bytes(b"\\relax\n\\newlabel{a}{{1}{3}}\n\\gdef \\@abspage@last{51}\n")
+    assert _auxiliary(tmp_path, "doc") != first
