@@ -151,6 +151,7 @@ def _depth_ok(p: int, q: int) -> bool:
 
 
 _MIN_DEPTH_PQ = (MIN_DEPTH.numerator, MIN_DEPTH.denominator)
+_Q_RANGE_PQ = tuple((x.numerator, x.denominator) for x in Q_RANGE)
 
 
 def _show(value) -> str:
@@ -243,9 +244,15 @@ def as_quality(Q) -> Fraction | mpmath.mpf | None:
             raise InputError(f"quality factor Q = {Q} is outside the allowed range {allowed}")
         return Q
     val = as_number(Q, name="quality factor Q", allowed=allowed)
-    if not lo <= val <= hi:
+    if not _quality_ok(val.numerator, val.denominator):
         raise InputError(f"quality factor Q = {_show(Q)} is outside the allowed range {allowed}")
     return val
+
+
+def _quality_ok(p: int, q: int) -> bool:
+    """``Q_RANGE[0] <= p/q <= Q_RANGE[1]`` (``q > 0``), in integers (as :func:`_depth_ok`)."""
+    (lp, lq), (hp, hq) = _Q_RANGE_PQ
+    return p * lq >= q * lp and p * hq <= q * hp
 
 
 def as_digits(d, allowed: tuple[int, int] = DIGITS_RANGE) -> int:

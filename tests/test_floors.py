@@ -114,6 +114,29 @@ def test_the_certified_floor_encloses_the_engines_edges(digits):
             assert mine.rad() < arb(10) ** (-digits) and ball.rad() < arb(10) ** (-digits)
 
 
+def test_certified_growth_comes_from_the_alternate_scenes():
+    # the exponent of time ~ D^a between two precisions: from the scene that timed them
+    # alternately (ratio 5**1.5 here: a = 1.5), else from the two separate medians (25 = 5**2)
+    fc = _load("floor_certified")
+    rows = [
+        {"name": "certified 1000 digits", "ours_seconds": 1.0},
+        {"name": "certified 5000 digits", "ours_seconds": 25.0},
+        {"name": "certified growth 1000 -> 5000 digits", "ours_seconds": 2.0, "ratio": 5**1.5},
+    ]
+    assert fc.summary(rows) == [
+        "certified time ~ D^1.50 from 1000 to 5000 digits, timed alternately (target <= 1.7)"
+    ]
+    assert fc.summary(rows[:2]) == [
+        "certified time ~ D^2.00 from 1000 to 5000 digits, medians of separate scenes "
+        "(target <= 1.7)"
+    ]
+    # every pair of successive precisions from 1000 digits on has its growth scene
+    names = [sc["name"] for sc in fc.scenes(quick=True)]
+    assert "certified growth 1000 -> 10000 digits" in names
+    targets = {sc["name"]: sc["target"] for sc in fc.scenes(quick=False)}
+    assert targets["certified growth 5000 -> 10000 digits"] == pytest.approx(2**1.7)
+
+
 def test_floors_flag_refuses_plot(capsys):
     assert main(["bench", "--floors", "--plot", "x.pdf"]) == 2
     assert "paramres: error:" in capsys.readouterr().err

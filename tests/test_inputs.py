@@ -69,6 +69,18 @@ def test_quality():
             as_quality(bad)
 
 
+def test_quality_range_ends_are_exact():
+    # Q_RANGE = [1e-6, 1e30], both ends allowed; the check is exact at either end (a value one
+    # part in 10**40 outside is refused), for text, int and Fraction alike
+    from fractions import Fraction
+
+    lo, hi = Fraction(1, 10**6), Fraction(10**30)
+    assert as_quality("1e-6") == lo and as_quality(10**30) == hi and as_quality(hi) == hi
+    for bad in (lo * (1 - Fraction(1, 10**40)), hi * (1 + Fraction(1, 10**40)), "1e31", 10**31):
+        with pytest.raises(InputError, match="outside the allowed range"):
+            as_quality(bad)
+
+
 def test_digits_and_damping():
     assert as_digits("50") == 50
     for bad in (4, 10**5, "x", 3.5, -1):

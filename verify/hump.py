@@ -709,15 +709,18 @@ def _lean_normal(req: Request, bits: int) -> Boundary | None:
             if got is None:
                 if top <= 2 * prec + 64:
                     got = near
-                else:
+                else:  # the fields used, each rounded as _rounded_params rounds it
                     ctx.prec = prec + 12
-                    p = _rounded_params(pt, prec)
-                    got = (+c, p.r2, p.u, p.beta, p.g)
+                    got = (+c, +pt.r2, +pt.u, +pt.beta, +pt.g)
                 cache[prec] = got
             return got
 
         c64, _, _, beta, _ = low = args(64)
-        r = pt.r if low is near else _rounded_params(pt, 64).r
+        if low is near:
+            r = pt.r
+        else:
+            ctx.prec = 76  # 64 + 12, as args(64)
+            r = +pt.r
         ctx.prec = 64
         sgn = _UNIT[sgn_of(n)]  # exact: the same balls as with the int
         if not (
@@ -734,7 +737,7 @@ def _lean_normal(req: Request, bits: int) -> Boundary | None:
         Tp = arb(tp)
         balls = []
         # the lower edge: a zero of D; the upper one: of -D (quick_root's F and F')
-        for x0, upper, left, right in ((lo, False, A, Tp), (hi, True, Tp, B)):
+        for x0, left, right in ((lo, A, Tp), (hi, Tp, B)):
             x = arb(x0)
             acc = _START_BITS
             while acc < need:
@@ -742,9 +745,9 @@ def _lean_normal(req: Request, bits: int) -> Boundary | None:
                 prec = acc + 12
                 at = args(prec)
                 ctx.prec = prec
+                # -D for the upper edge: the step f/d is the same ball (both negated exactly,
+                # the quotient rounded towards zero), and so are the tests
                 f, d = D01(x, *at)
-                if upper:
-                    f, d = -f, -d
                 if not (d.is_finite() and f.is_finite()) or d.contains(0):
                     return None
                 x = (x - f / d).mid()
@@ -755,14 +758,16 @@ def _lean_normal(req: Request, bits: int) -> Boundary | None:
             if floor > size:
                 size = floor
             X = arb(x, (size * pow2(4 - acc)).abs_upper())
-            dX = -D1(X, *near) if upper else D1(X, *near)
+            dX = D1(X, *near)  # of -D for the upper edge: the same quotient (see above)
             if dX.contains(0) or not dX.is_finite():
                 return None
-            N = x - (-D0(x, *near) if upper else D0(x, *near)) / dX
+            N = x - D0(x, *near) / dX
             if not X.contains_interior(N):
                 return None
             t = float(x)
-            want = arb(max(min(abs(t), abs(t + shift)), floor, 1e-300))
+            s = min(abs(t), abs(t + shift))
+            # above n 1e-59 the floor (<= 3n 2**-201) and 1e-300 are below s (theta_scale)
+            want = arb(s) if s > n * 1e-59 else arb(max(s, floor, 1e-300))
             if not N.rad() <= (want * tol).abs_lower():
                 return None
             balls.append(N)
@@ -774,14 +779,18 @@ def _lean_normal(req: Request, bits: int) -> Boundary | None:
         # edges_result at the roots' precision: the parameters as they are at the proof's
         # precision, else rounded from there (AtPrecision with rounded=True)
         ctx.prec = work
-        p = pt if work == top else _rounded_params(pt, work)
+        if work == top:
+            w, dinv = pt.w, pt.dinv
+        else:  # the two fields used, as _rounded_params(pt, work) rounds them
+            ctx.prec = work + 12
+            w, dinv = +pt.w, +pt.dinv
+            ctx.prec = work
         pi = arb.pi()
         half = arb(n) * _HALF
-        w = p.w
         pw = pi * w
-        hd = half * p.dinv
+        hd = half * dinv
         Ts = [(half + N1 / pi) / w, (half + N2 / pi) / w]
-        ds = [N1 / pw + hd, N2 / pw + hd] if not p.dinv.is_zero() else [N1 / pw, N2 / pw]
+        ds = [N1 / pw + hd, N2 / pw + hd] if not dinv.is_zero() else [N1 / pw, N2 / pw]
         for T in Ts:
             if not T.rad() <= T.abs_lower() * tol:  # pragma: no cover - guard
                 return None
