@@ -36,11 +36,10 @@ def _regime(m, Q, half: int, model: str, system=PAPER) -> str:
 
 
 @cache
-def _propagator(model: str, regime: str, half: int, module: str):
-    """``(t, omega, gamma, Omega, Lambda) -> [[a, b], [c, d]]`` from
-    :func:`analytic.stitching.propagator` of the model's segment (the entries as four functions)."""
-    import sympy as sp
-
+def _propagator_matrix(model: str, regime: str, half: int):
+    """The arguments ``(t, omega, gamma, Omega, Lambda)`` and the matrix of
+    :func:`analytic.stitching.propagator` of the model's segment (derived once for every back
+    end)."""
     from analytic.model import Damping, Regime, S, segment
     from analytic.stitching import propagator
 
@@ -49,9 +48,29 @@ def _propagator(model: str, regime: str, half: int, module: str):
     Omega = S.Omega1 if half == 1 else S.Omega2
     Lam = S.Lambda1 if half == 1 else S.Lambda2
     seg = segment(omega, S.A1, S.B1, damping, Regime(regime))
-    U = propagator(seg, S.t)
-    args = (S.t, omega, S.gamma, Omega, Lam)
+    return (S.t, omega, S.gamma, Omega, Lam), propagator(seg, S.t)
+
+
+@cache
+def _propagator(model: str, regime: str, half: int, module: str):
+    """``(t, omega, gamma, Omega, Lambda) -> [[a, b], [c, d]]`` from
+    :func:`analytic.stitching.propagator` of the model's segment (the entries as four functions)."""
+    import sympy as sp
+
+    args, U = _propagator_matrix(model, regime, half)
     return tuple(sp.lambdify(args, U[i, j], modules=module) for i in (0, 1) for j in (0, 1))
+
+
+@cache
+def _propagator_entries(model: str, regime: str, module: str):
+    """The four entries ``(a, b, c, d)`` of :func:`_propagator` from one function of ``(t,
+    omega, gamma, Omega, Lambda)`` (one compilation, each entry the same text as its own
+    function's), for either half: the two halves' maps are one derivation in the half's own
+    symbols, so half 1's serves both."""
+    import sympy as sp
+
+    args, U = _propagator_matrix(model, regime, 1)
+    return sp.lambdify(args, [U[i, j] for i in (0, 1) for j in (0, 1)], modules=module)
 
 
 @cache
@@ -86,8 +105,8 @@ def _frequencies(m, Q, eff, work, system=PAPER):
 
 def run_linear(m, Q, eff, tau, s0, loop, K, samples, work, system=PAPER):
     freqs = _frequencies(m, Q, eff, work, system)
-    U_mp = [_propagator(eff, freqs[h][4], h + 1, "mpmath") for h in (0, 1)]
-    U_np = [_propagator(eff, freqs[h][4], h + 1, "numpy") for h in (0, 1)]
+    U_mp = [_propagator_entries(eff, freqs[h][4], "mpmath") for h in (0, 1)]
+    U_np = [_propagator_entries(eff, freqs[h][4], "numpy") for h in (0, 1)]
     with mpmath.workdps(work):
         if system.is_paper:
             j12, j21 = _jump("mpmath")
@@ -100,14 +119,14 @@ def run_linear(m, Q, eff, tau, s0, loop, K, samples, work, system=PAPER):
         maps = []
         for h in (0, 1):
             w, g, Om, La, _ = freqs[h]
-            maps.append([f(lengths[h], w, g, Om, La) for f in U_mp[h]])
+            maps.append(list(U_mp[h](lengths[h], w, g, Om, La)))
         tgrids = [np.linspace(0.0, float(lengths[h]), samples) for h in (0, 1)]
         fl = [tuple(float(x) for x in freqs[h][:4]) for h in (0, 1)]
         with np.errstate(all="ignore"):
             dense = [
                 [
-                    np.broadcast_to(np.asarray(f(tgrids[h], *fl[h]), dtype=float), tgrids[h].shape)
-                    for f in U_np[h]
+                    np.broadcast_to(np.asarray(v, dtype=float), tgrids[h].shape)
+                    for v in U_np[h](tgrids[h], *fl[h])
                 ]
                 for h in (0, 1)
             ]
