@@ -175,12 +175,12 @@ class _PdfMetrics(RendererPDFPSBase):
     _use_afm_rc_name = RendererPdf._use_afm_rc_name
 
 
-def pdf_text_extent(text) -> tuple[float, float]:
-    """Where the text artist ``text`` ends on the left and on the right, in points from the left
-    edge of its figure, as the figure's PDF lays it out: the formulas are laid out at the size
-    and resolution the PDF uses, so that drawing the figure later reuses those layouts
-    (:data:`MATHTEXT_CACHE`) instead of making its own at the screen's resolution."""
-    fig = text.get_figure(root=True) if hasattr(text, "get_figure") else text.figure
+def pdf_text_extent(fig: Figure, text) -> tuple[float, float]:
+    """Where the text artist ``text`` of the figure ``fig`` ends on the left and on the right,
+    in points from the figure's left edge, as the figure's PDF lays it out: the formulas are
+    laid out at the size and resolution the PDF uses, so that drawing the figure later reuses
+    those layouts (:data:`MATHTEXT_CACHE`) instead of making its own at the screen's
+    resolution."""
     renderer = _PdfMetrics(fig.get_figwidth(), fig.get_figheight())
     box = text.get_window_extent(renderer, dpi=72)
     return box.x0, box.x1

@@ -169,7 +169,7 @@ def _fitting_title(ax, candidates: list[list[str]], **kw) -> int:
     for lines in candidates:
         lines = [x for x in lines if x]
         title = ax.set_title("\n".join(lines), **kw)
-        if pdf_text_extent(title)[1] <= limit:
+        if pdf_text_extent(fig, title)[1] <= limit:
             break
     return len(lines)
 
