@@ -20,7 +20,8 @@ from pathlib import Path
 
 import matplotlib
 import numpy as np
-from matplotlib.backends.backend_pdf import FigureCanvasPdf
+from matplotlib.backends._backend_pdf_ps import RendererPDFPSBase
+from matplotlib.backends.backend_pdf import FigureCanvasPdf, RendererPdf
 from matplotlib.figure import Figure
 
 from verify.inputs import InputError
@@ -45,6 +46,7 @@ __all__ = [
     "draw_regions",
     "TEXT_WIDTH_IN",
     "tight_layout",
+    "pdf_text_extent",
 ]
 
 #: width of the LaTeX text block (A4, 2.3 cm margins), inches
@@ -163,6 +165,25 @@ def tight_layout(fig: Figure, **kw) -> None:
     figure is drawn, with the renderer that draws it: the same positions as
     ``fig.tight_layout(**kw)`` before the drawing, without measuring every text twice."""
     fig.set_layout_engine("tight", **kw)
+
+
+class _PdfMetrics(RendererPDFPSBase):
+    """Text metrics as the PDF backend takes them (vector glyph metrics, 72 dots per inch),
+    without a file to draw into: the PDF renderer's own measuring methods."""
+
+    _afm_font_dir = RendererPdf._afm_font_dir
+    _use_afm_rc_name = RendererPdf._use_afm_rc_name
+
+
+def pdf_text_extent(fig: Figure, text) -> tuple[float, float]:
+    """Where the text artist ``text`` of the figure ``fig`` ends on the left and on the right,
+    in points from the figure's left edge, as the figure's PDF lays it out: the formulas are
+    laid out at the size and resolution the PDF uses, so that drawing the figure later reuses
+    those layouts (:data:`MATHTEXT_CACHE`) instead of making its own at the screen's
+    resolution."""
+    renderer = _PdfMetrics(fig.get_figwidth(), fig.get_figheight())
+    box = text.get_window_extent(renderer, dpi=72)
+    return box.x0, box.x1
 
 
 def pdf_bytes(fig: Figure, what: str = "report") -> bytes:

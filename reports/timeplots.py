@@ -28,7 +28,7 @@ from matplotlib.figure import Figure
 from verify.inputs import InputError
 
 from . import figures
-from .figures import FORMATS, TEXT_WIDTH_IN, check_plot_path, figure_bytes, style
+from .figures import FORMATS, TEXT_WIDTH_IN, check_plot_path, figure_bytes, pdf_text_extent, style
 from .i18n import say
 
 __all__ = [
@@ -163,11 +163,13 @@ def _fitting_title(ax, candidates: list[list[str]], **kw) -> int:
     last one if none does (the lines of the candidates are shorter and shorter); the number of
     lines used."""
     fig = ax.figure
-    renderer = fig.canvas.get_renderer()
+    # measured as the figure's PDF lays the title out (the formulas in it are laid out once,
+    # for this and for the drawing); the margin is two pixels at the figure's resolution
+    limit = 72 * fig.get_figwidth() - 2 * 72 / fig.dpi
     for lines in candidates:
         lines = [x for x in lines if x]
         title = ax.set_title("\n".join(lines), **kw)
-        if title.get_window_extent(renderer).x1 <= fig.bbox.x1 - 2:
+        if pdf_text_extent(fig, title)[1] <= limit:
             break
     return len(lines)
 

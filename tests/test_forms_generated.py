@@ -71,6 +71,27 @@ def test_numeric_commands_do_not_import_sympy(argv, tmp_path):
     assert proc.stdout.strip().splitlines()[-1] == "False 0"
 
 
+def test_linear_runs_load_their_maps_without_sympy():
+    """The half-period maps and the jump factors of the linear runs (no friction, the paper's
+    damping model, the exact one under-damped) are loaded from their stored texts: a run on an
+    edge imports no sympy."""
+    code = (
+        "import sys\n"
+        "from fractions import Fraction\n"
+        "from verify.timedomain import simulate\n"
+        "m = Fraction(3, 10)\n"
+        "simulate(order=1, m=m, edge='lower', periods=2)\n"
+        "simulate(order=2, m=Fraction(1, 2), edge='upper', periods=2, Q=5, damping='paper')\n"
+        "simulate(order=1, m=m, edge='lower', periods=2, Q=3)\n"
+        "print('sympy' in sys.modules)\n"
+    )
+    proc = subprocess.run(
+        [sys.executable, "-c", code], cwd=ROOT, capture_output=True, text=True, timeout=600
+    )
+    assert proc.returncode == 0, proc.stderr
+    assert proc.stdout.strip() == "False"
+
+
 def test_time_domain_edge_shapes_are_the_derivations():
     """The edge shapes the time domain names without sympy are those of
     :class:`analytic.stitching.EdgeKind`, by parity."""

@@ -724,12 +724,10 @@ def _negative_on_box(h, budget: int, top=None, narrow: bool = False) -> bool:
     from .hump import taylor_negative
 
     top = h.top if top is None else top
-    t = (
-        top
-        if (isinstance(top, arb) or math.isfinite(top)) and h.a < top < h.b
-        else 0.5 * (h.a + h.b)
-    )
+    at_top = (isinstance(top, arb) or math.isfinite(top)) and h.a < top < h.b
+    t = top if at_top else 0.5 * (h.a + h.b)
     tf = float(t)
+    below = False  # D(t) < 0 proven at some precision
     for prec in (64, 128, 256) if narrow else (64, 128):
         with ctx.workprec(prec):
             tb = _exact_ball(t)
@@ -738,9 +736,15 @@ def _negative_on_box(h, budget: int, top=None, narrow: bool = False) -> bool:
                 return False
             if not Dt < 0:
                 continue
+            below = True
             proven = taylor_negative(h, tf, Dt, D1t, 30, prec, budget)
             if proven is not None:
                 return proven
+    if at_top and not below:
+        # not even the value at the maximiser is below zero for every depth of the range (the
+        # range straddles a threshold): a bisection of the window, which has to bound D near
+        # the maximiser too, at the lowest of these precisions, does not get there either
+        return False
     # no usable maximiser: bisection alone
     return prove_sign(h.D, h.dD, h.a, h.b, -1, prec=64, budget=budget)
 

@@ -26,6 +26,7 @@ ENTRIES = (
     + [("edge_equation", (p,), "arb", o) for p in (-1, 1) for o in (0, 1, (0, 1))]
     + [("indicator", (p,), "math", o) for p in (-1, 1) for o in ((0, 1), (1, 2), (0, 1, 2))]
     + [("indicator", (p,), "arb", o) for p in (-1, 1) for o in (0, 1, 2, (0, 1))]
+    + [("indicator", (p,), "numpy", 0) for p in (-1, 1)]
     + [
         ("trace_window", (r,), b, o)
         for r in _REGIMES
@@ -87,8 +88,9 @@ def _lazy(builder: str, args: tuple):
 def build() -> dict[str, str]:
     """Every entry's text, derived now (imports sympy); with the time-domain building blocks
     (:func:`verify.timedomain.derived_sources`) and the parameter forms of the built-in systems
-    (:func:`verify.system_params.derived_sources`, proven as they are derived)."""
-    from . import derived, system_params, timedomain
+    (:func:`verify.system_params.derived_sources`, proven as they are derived), and the
+    propagators of the linear runs (:func:`verify.propagation.derived_sources`)."""
+    from . import derived, propagation, system_params, timedomain
 
     out = {}
     for builder, args, name, orders in ENTRIES:
@@ -96,6 +98,7 @@ def build() -> dict[str, str]:
         out[derived.generated_key(lazy.key, name, orders)] = lazy.real.source(name, orders)
     out.update(timedomain.derived_sources())
     out.update(system_params.derived_sources())
+    out.update(propagation.derived_sources())
     return out
 
 

@@ -36,11 +36,10 @@ def _regime(m, Q, half: int, model: str, system=PAPER) -> str:
 
 
 @cache
-def _propagator(model: str, regime: str, half: int, module: str):
-    """``(t, omega, gamma, Omega, Lambda) -> [[a, b], [c, d]]`` from
-    :func:`analytic.stitching.propagator` of the model's segment (the entries as four functions)."""
-    import sympy as sp
-
+def _propagator_matrix(model: str, regime: str, half: int):
+    """The arguments ``(t, omega, gamma, Omega, Lambda)`` and the matrix of
+    :func:`analytic.stitching.propagator` of the model's segment (derived once for every back
+    end)."""
     from analytic.model import Damping, Regime, S, segment
     from analytic.stitching import propagator
 
@@ -49,22 +48,109 @@ def _propagator(model: str, regime: str, half: int, module: str):
     Omega = S.Omega1 if half == 1 else S.Omega2
     Lam = S.Lambda1 if half == 1 else S.Lambda2
     seg = segment(omega, S.A1, S.B1, damping, Regime(regime))
-    U = propagator(seg, S.t)
-    args = (S.t, omega, S.gamma, Omega, Lam)
-    return tuple(sp.lambdify(args, U[i, j], modules=module) for i in (0, 1) for j in (0, 1))
+    return (S.t, omega, S.gamma, Omega, Lam), propagator(seg, S.t)
 
 
 @cache
-def _jump(module: str):
-    """The factor on ``phi'`` at the jumps 1 -> 2 and 2 -> 1 (:func:`analytic.model.jump_ratio`)."""
+def _propagator(model: str, regime: str, half: int, module: str):
+    """``(t, omega, gamma, Omega, Lambda) -> [[a, b], [c, d]]`` from
+    :func:`analytic.stitching.propagator` of the model's segment (the entries as four functions)."""
+    import sympy as sp
+
+    args, U = _propagator_matrix(model, regime, half)
+    return tuple(sp.lambdify(args, U[i, j], modules=module) for i in (0, 1) for j in (0, 1))
+
+
+#: the propagators whose compiled text is stored (:data:`verify.forms_generated.SOURCES`): the
+#: models and the regimes a half can be in
+STORED = (
+    ("none", "under"),
+    ("paper", "under"),
+    ("exact", "under"),
+    ("exact", "critical"),
+    ("exact", "over"),
+)
+#: the back ends of the stored texts
+MODULES = ("mpmath", "numpy")
+
+
+def _key(what: str, module: str) -> str:
+    return f"{what} | {module}"
+
+
+def _propagator_text(model: str, regime: str, module: str) -> str:
+    """The text :func:`sympy.lambdify` writes for the four entries of half 1's propagator."""
+    import inspect
+
+    import sympy as sp
+
+    args, U = _propagator_matrix(model, regime, 1)
+    entries = [U[i, j] for i in (0, 1) for j in (0, 1)]
+    return inspect.getsource(sp.lambdify(args, entries, modules=module, docstring_limit=0))
+
+
+def _jump_text(module: str) -> str:
+    """The text :func:`sympy.lambdify` writes for the two jump factors
+    (:func:`analytic.model.jump_ratio` 1 -> 2 and 2 -> 1) as functions of ``m``."""
+    import inspect
+
     import sympy as sp
 
     from analytic.model import S, jump_ratio
 
-    return (
-        sp.lambdify((S.m,), jump_ratio(1, 2), modules=module),
-        sp.lambdify((S.m,), jump_ratio(2, 1), modules=module),
-    )
+    exprs = [jump_ratio(1, 2), jump_ratio(2, 1)]
+    return inspect.getsource(sp.lambdify((S.m,), exprs, modules=module, docstring_limit=0))
+
+
+def derived_sources() -> dict[str, str]:
+    """The text of every stored propagator and of the jump factors, derived now (imports
+    sympy), keyed as in :data:`verify.forms_generated.SOURCES` (written there by
+    :mod:`verify.generate_forms`)."""
+    out = {}
+    for module in MODULES:
+        for model, regime in STORED:
+            out[_key(f"propagator({model}, {regime})", module)] = _propagator_text(
+                model, regime, module
+            )
+        out[_key("jump_factors", module)] = _jump_text(module)
+    return out
+
+
+def _load(key: str, module: str, derive):
+    """The function whose text is stored under ``key`` (``derive()`` gives it where it is
+    not), in the namespace of ``module``."""
+    from .forms_generated import SOURCES
+
+    text = SOURCES.get(key)
+    if text is None:
+        text = derive()
+    ns = dict(vars(mpmath) if module == "mpmath" else vars(np))
+    exec(compile(text, f"<form {key}>", "exec"), ns)  # noqa: S102 - derived text
+    return ns["_lambdifygenerated"]
+
+
+@cache
+def _propagator_entries(model: str, regime: str, module: str):
+    """The four entries ``(a, b, c, d)`` of :func:`_propagator` from one function of ``(t,
+    omega, gamma, Omega, Lambda)`` (the same text as each entry's own function), for either
+    half: the two halves' maps are one derivation in the half's own symbols, so half 1's serves
+    both.  Loaded from the stored text where there is one (no sympy)."""
+    key = _key(f"propagator({model}, {regime})", module)
+    return _load(key, module, lambda: _propagator_text(model, regime, module))
+
+
+@cache
+def _jumps(module: str):
+    """The factors on ``phi'`` at the jumps 1 -> 2 and 2 -> 1 (:func:`analytic.model.jump_ratio`),
+    one function of ``m`` giving both (from the stored text where there is one)."""
+    return _load(_key("jump_factors", module), module, lambda: _jump_text(module))
+
+
+@cache
+def _jump(module: str):
+    """The factor on ``phi'`` at the jumps 1 -> 2 and 2 -> 1, as two functions of ``m``."""
+    both = _jumps(module)
+    return (lambda m: both(m)[0]), (lambda m: both(m)[1])
 
 
 def _frequencies(m, Q, eff, work, system=PAPER):
@@ -86,13 +172,11 @@ def _frequencies(m, Q, eff, work, system=PAPER):
 
 def run_linear(m, Q, eff, tau, s0, loop, K, samples, work, system=PAPER):
     freqs = _frequencies(m, Q, eff, work, system)
-    U_mp = [_propagator(eff, freqs[h][4], h + 1, "mpmath") for h in (0, 1)]
-    U_np = [_propagator(eff, freqs[h][4], h + 1, "numpy") for h in (0, 1)]
+    U_mp = [_propagator_entries(eff, freqs[h][4], "mpmath") for h in (0, 1)]
+    U_np = [_propagator_entries(eff, freqs[h][4], "numpy") for h in (0, 1)]
     with mpmath.workdps(work):
         if system.is_paper:
-            j12, j21 = _jump("mpmath")
-            mm = as_mp(m)
-            k12, k21 = j12(mm), j21(mm)
+            k12, k21 = _jumps("mpmath")(as_mp(m))
         else:
             k12 = as_mp(Fraction(system.jump(m if system.uses_depth else None)))
             k21 = 1 / k12
@@ -100,14 +184,14 @@ def run_linear(m, Q, eff, tau, s0, loop, K, samples, work, system=PAPER):
         maps = []
         for h in (0, 1):
             w, g, Om, La, _ = freqs[h]
-            maps.append([f(lengths[h], w, g, Om, La) for f in U_mp[h]])
+            maps.append(list(U_mp[h](lengths[h], w, g, Om, La)))
         tgrids = [np.linspace(0.0, float(lengths[h]), samples) for h in (0, 1)]
         fl = [tuple(float(x) for x in freqs[h][:4]) for h in (0, 1)]
         with np.errstate(all="ignore"):
             dense = [
                 [
-                    np.broadcast_to(np.asarray(f(tgrids[h], *fl[h]), dtype=float), tgrids[h].shape)
-                    for f in U_np[h]
+                    np.broadcast_to(np.asarray(v, dtype=float), tgrids[h].shape)
+                    for v in U_np[h](tgrids[h], *fl[h])
                 ]
                 for h in (0, 1)
             ]

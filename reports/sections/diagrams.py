@@ -1,6 +1,6 @@
 """Section 6: the paper's Figs. 2 and 8 redrawn from the engine's boundaries, the third-order island
 at ``Q = 7`` in detail, and the two damping models side by side (:func:`verify.boundary_grid`,
-:func:`verify.existence`, :func:`analytic.closings`)."""
+:func:`verify.existence`, :func:`analytic.closings.closings_of_order`)."""
 
 from __future__ import annotations
 
@@ -32,11 +32,12 @@ def _grid_with(extra) -> np.ndarray:
 
 def _compute():
     """Everything the diagrams need, as plain arrays (so that it can be cached)."""
-    from analytic.closings import closings
+    from analytic.closings import closings_of_order
     from verify.existence import existence
     from verify.grid import boundary_grid
 
-    cl = [c for c in closings(max(FIG2_ORDERS)) if c.order in FIG2_ORDERS]
+    # the closings themselves, without the theorem's derivation (the closings section shows it)
+    cl = [c for n in FIG2_ORDERS for c in closings_of_order(n)]
     m2 = _grid_with(float(c.m) for c in cl)
     fig2 = boundary_grid(list(FIG2_ORDERS), m2)
     m8 = M_GRID
