@@ -33,6 +33,9 @@ arithmetic, and nothing else enters.
 
 from __future__ import annotations
 
+from bisect import bisect_right
+from operator import mul
+
 from flint import acb, arb, arb_series, ctx
 
 __all__ = ["MAX_TERMS", "flow", "IntegrationError"]
@@ -100,8 +103,13 @@ def _step(coef, tc: arb, h: arb, N: int, tail: arb | None, K: arb, rho: arb, bit
         a = [_coeffs(s, L) for s in coef(z)]
     finally:
         ctx.cap = cap
-    # the nonzero Taylor coefficients of each entry (a linear or constant length has few)
-    sparse = [[(j, c) for j, c in enumerate(e[:N]) if not (c.is_exact() and c == 0)] for e in a]
+    # the nonzero Taylor coefficients of each entry (a linear or constant length has few), as
+    # their powers ``js`` (ascending) and values ``cs``; ``dense``: every power below the last
+    sparse = []
+    for e in a:
+        pairs = [(j, c) for j, c in enumerate(e[:N]) if not (c.is_exact() and c == 0)]
+        js = [j for j, _ in pairs]
+        sparse.append((js, [c for _, c in pairs], js == list(range(len(js)))))
     with ctx.workprec(64):
         hh = arb(h.upper())
         x = hh / rho
@@ -117,29 +125,24 @@ def _step(coef, tc: arb, h: arb, N: int, tail: arb | None, K: arb, rho: arb, bit
             above[j] = _upper(above[j + 1] + arb(r) * hh**j)
         Kr = _bound(coef, tc + hh / 2, hh / 2, real=True)
         grow = hh * ((K if Kr is None else Kr) * hh).exp()
+        hpow = [hh**i for i in range(N)]
     goal = arb(2) ** (-bits)
     cols = ([arb(1)], [arb(0)], [arb(0)], [arb(1)])  # u, v of column 0; u, v of column 1
     yn = [arb(1)]  # ||Y_k|| h^k (upper bounds, 64 bits)
+    zero = arb(0)
     for k in range(N - 1):
         for u, v in (cols[0:2], cols[2:4]):
-            su = arb(0)
-            sv = arb(0)
-            for j, c in sparse[0]:
-                if j <= k:
-                    su += c * u[k - j]
-            for j, c in sparse[1]:
-                if j <= k:
-                    su += c * v[k - j]
-            for j, c in sparse[2]:
-                if j <= k:
-                    sv += c * u[k - j]
-            for j, c in sparse[3]:
-                if j <= k:
-                    sv += c * v[k - j]
-            u.append(su / (k + 1))
-            v.append(sv / (k + 1))
+            # (k + 1) Y_{k+1} = sum_j A_j Y_{k-j}: the products c_j y_{k-j} of each entry summed
+            # from arb(0) in the order of j, entry (0, 0) then (0, 1) for u, (1, 0) then (1, 1)
+            # for v (sum() adds left to right: the same ball arithmetic as a loop)
+            u.append(
+                sum(_terms_of(sparse[1], v, k), sum(_terms_of(sparse[0], u, k), zero)) / (k + 1)
+            )
+            v.append(
+                sum(_terms_of(sparse[3], v, k), sum(_terms_of(sparse[2], u, k), zero)) / (k + 1)
+            )
         with ctx.workprec(64):
-            yn.append(_upper(_rows(cols[i][k + 1] for i in (0, 2, 1, 3))) * hh ** (k + 1))
+            yn.append(_upper(_rows(cols[i][k + 1] for i in (0, 2, 1, 3))) * hpow[k + 1])
             n = k + 2  # the terms known
             if n >= 4 and n <= N and yn[-1] < goal:
                 bound = _defect_tail(yn, above, grow)
@@ -152,6 +155,16 @@ def _step(coef, tc: arb, h: arb, N: int, tail: arb | None, K: arb, rho: arb, bit
     c = [_horner(col, h) for col in cols]
     err = arb(0, tail)
     return (c[0] + err, c[2] + err, c[1] + err, c[3] + err), len(cols[0])
+
+
+def _terms_of(entry, y: list, k: int):
+    """The products ``c_j y[k - j]`` of one entry's nonzero coefficients ``c_j`` (``j <= k``),
+    in the order of ``j`` (``entry``: the powers, the values, and whether they are dense)."""
+    js, cs, dense = entry
+    if dense:  # c_0 y_k, c_1 y_{k-1}, ...: zip stops at the shorter
+        return map(mul, cs, y[k::-1])
+    n = bisect_right(js, k)
+    return map(mul, cs[:n], [y[k - j] for j in js[:n]])
 
 
 def _rows(entries) -> arb:
