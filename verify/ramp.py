@@ -586,7 +586,7 @@ class Validity:
     jump_upper: arb
     S_ok: Fraction
     S_bad: Fraction | None
-    S_fit: float
+    S_fit: float | None
     slopes: tuple
     table: tuple
     notes: tuple = ()
@@ -700,7 +700,7 @@ def _round_decimal(x: float, sig: int, up: bool) -> Fraction:
     return max(k, 1) * unit
 
 
-def jump_validity(order, m, tol, *, duty="1/2", digits=15) -> Validity:
+def jump_validity(order, m, tol, *, duty="1/2", digits=15, fit=True) -> Validity:
     """The largest switching time ``S`` for which both edges of the ``order``-th interval with
     ramps stay within the relative tolerance ``tol`` of the jump model's edges.
 
@@ -708,7 +708,8 @@ def jump_validity(order, m, tol, *, duty="1/2", digits=15) -> Validity:
     bracketed by two 3-digit decimals ``S_ok < S_bad`` at which certified edges prove ``within``
     and ``beyond``; the shifts at ``S_ok/8, S_ok/4, S_ok/2`` are certified too.  That no larger
     ``S`` below ``S_bad`` comes back within ``tol`` rests on the shift growing with ``S``
-    (observed, not proven)."""
+    (observed, not proven).  ``fit=False``: :attr:`Validity.S_fit` is computed only where the
+    search comes near the longest ramp (else ``None``); the answer is the same."""
     from .inputs import as_tolerance
 
     n = as_order(order)
@@ -724,8 +725,32 @@ def jump_validity(order, m, tol, *, duty="1/2", digits=15) -> Validity:
         )
     T0s = (float(jump.lower), float(jump.upper))
     paths = _paths(n, mm, D, jump, names)
-    S_fit = longest_ramp(n, mm, duty=D, _jump_result=jump)
+    S_fit = longest_ramp(n, mm, duty=D, _jump_result=jump) if fit else None
     tolf = float(tt)
+    c_fit = float(min(D, 1 - D))
+
+    def below_cap(x: float) -> bool:
+        """``x <= S_fit (1 - 1e-9)`` (the search's cap).  Without ``S_fit``: a ramp of ``y = x/(1
+        - 1e-9)`` that fits a phase at the followed lower edge with room to spare (``c T_lo(y) >=
+        y (1 + 1e-6)``) is below the longest one, ``S = c T_lo(S)`` (the same premise as
+        :func:`longest_ramp`: ``c T_lo(S) - S`` decreases, ``|dT/dS| < 1/c``); where that is not
+        clear, ``S_fit`` is computed."""
+        nonlocal S_fit
+        if S_fit is None:
+            y = x / (1 - 1e-9)
+            try:
+                if c_fit * paths.edges(Fraction(y))[0] >= y * (1 + 1e-6):
+                    return True
+            except CertificationError:
+                pass
+            S_fit = longest_ramp(n, mm, duty=D, _jump_result=jump)
+        return x <= S_fit * (1 - 1e-9)
+
+    def cap() -> float:
+        nonlocal S_fit
+        if S_fit is None:
+            S_fit = longest_ramp(n, mm, duty=D, _jump_result=jump)
+        return S_fit * (1 - 1e-9)
 
     def excess(S: float) -> float:
         lo, hi = paths.edges(Fraction(S))
@@ -734,17 +759,23 @@ def jump_validity(order, m, tol, *, duty="1/2", digits=15) -> Validity:
     slopes = leading_shift(n, mm, duty=D, digits=d, _jump_result=jump)
     rate = max(abs(float(a.mid())) / T for a, T in zip(slopes, T0s, strict=True))
     notes = []
-    S_cap = S_fit * (1 - 1e-9)
-    S = min(tolf / rate, S_cap / 2) if rate > 0 else S_cap / 2
+    # S = min(tol/rate, S_cap/2), the cap S_cap = S_fit (1 - 1e-9) computed only if needed
+    if rate > 0 and below_cap(2 * (tolf / rate)):
+        S = tolf / rate
+    else:
+        S = min(tolf / rate, cap() / 2) if rate > 0 else cap() / 2
     lo_S, hi_S = 0.0, None
     while hi_S is None:
         if excess(S) > 0:
             hi_S = S
         else:
             lo_S = S
-            if S >= S_cap:
+            if below_cap(2 * S):  # then S < S_cap: the doubling as below
+                S = 2 * S
+                continue
+            if S >= cap():
                 break
-            S = min(2 * S, S_cap)
+            S = min(2 * S, cap())
     if hi_S is not None:
         for _ in range(60):  # bisection in log S to ~5 digits
             mid = math.sqrt(lo_S * hi_S) if lo_S > 0 else hi_S / 2

@@ -151,12 +151,13 @@ def sine_monodromy_arb(m, T, Q=None):
     return flow(coef, arb(0), Tb, scale=2 * arb.pi())
 
 
-def sine_half_map(m, T):
+def sine_half_map(m, T, *, goal_bits=None):
     """``G``: the map of ``(phi, p)`` from ``t = T/4`` to ``3T/4`` (no friction), four balls.
 
     Integrated in the Liouville form (V3) of :mod:`analytic.smooth` (one varying entry: half
     the work of (V2) per Taylor step) and carried back to ``(phi, p)`` by the derived ``C`` at
-    both ends: ``G = C(3T/4)^-1 W C(T/4)``."""
+    both ends: ``G = C(3T/4)^-1 W C(T/4)``.  ``goal_bits``: the remainder goal of each Taylor
+    step (:func:`verify.taylor.flow`; default the working precision plus 10 bits)."""
     _, _, hill, state = _compiled()
     Tb = T if isinstance(T, arb) else _A(Fraction(T))
     mb = m if isinstance(m, arb) else _A(Fraction(m))
@@ -165,7 +166,7 @@ def sine_half_map(m, T):
     zero = arb(0)
     coef = _series_safe(lambda t: hill(t, Tb, mb, g, zero, pi))
     a, b = Tb / 4, 3 * Tb / 4
-    W = flow(coef, a, b, scale=2 * arb.pi())
+    W = flow(coef, a, b, scale=2 * arb.pi(), goal_bits=goal_bits)
     Ca = state(a, Tb, mb, g, zero, pi)
     c11, c12, c21, c22 = state(b, Tb, mb, g, zero, pi)
     det = c11 * c22 - c12 * c21
@@ -340,8 +341,11 @@ def _pair(n: int) -> tuple[str, str]:
     return ("G11", "G22") if n % 2 else ("G12", "G21")
 
 
-#: the working precision of the first refinement (cheap; to about 1e-17)
+#: the working precision of the first refinement (cheap; to about 1e-17), and the remainder
+#: its Taylor steps are bounded to (``2^-_LOW_GOAL``; its zero is not proven but only placed
+#: within the enclosure :func:`_enclose` proves, so it needs no more than the secant's goal)
 _LOW_BITS = 64
+_LOW_GOAL = 64
 
 
 def _secant(F, x1: arb, x2: arb, f1: arb, goal: arb, iters: int):
@@ -375,7 +379,7 @@ def _refine(m: Fraction, e: int, x0: float, bits: int) -> tuple[arb, arb | None]
     with ctx.workprec(_LOW_BITS):
 
         def F_low(T: arb) -> arb:
-            return sine_half_map(m, T)[e]
+            return sine_half_map(m, T, goal_bits=_LOW_GOAL)[e]
 
         x1 = arb(x0)
         f1 = F_low(x1).mid()

@@ -211,12 +211,14 @@ def _mul(P, Q):
     return (a * e + b * g, a * f + b * k, c * e + d * g, c * f + d * k)
 
 
-def flow(coef, t0: arb, t1: arb, *, h0=None, scale=None):
+def flow(coef, t0: arb, t1: arb, *, h0=None, scale=None, goal_bits=None):
     """The map of ``y' = A(t) y`` from ``t0`` to ``t1 > t0`` (exact ``arb`` points), as four
     ``arb`` balls (row-major) at the working precision ``flint.ctx.prec``; ``coef(t)`` returns
     the four entries of ``A(t)`` for ``t`` an ``arb_series`` or an ``acb``.  ``h0``: the first
     trial step (default ``(t1 - t0)/4``).  ``scale = w`` integrates in the variables ``(y1,
-    y2/w)`` (a balanced system takes longer steps) and returns the map of ``(y1, y2)``."""
+    y2/w)`` (a balanced system takes longer steps) and returns the map of ``(y1, y2)``.
+    ``goal_bits``: each step's remainder is bounded below ``2^-goal_bits`` (default the working
+    precision plus 10 bits); a smaller goal gives wider balls, still proven, in fewer terms."""
     if scale is not None:
         w = scale
         inner = coef
@@ -225,9 +227,9 @@ def flow(coef, t0: arb, t1: arb, *, h0=None, scale=None):
             a = inner(t)
             return (a[0], a[1] * w, a[2] / w, a[3])
 
-        a, b, c, d = flow(coef, t0, t1, h0=h0)
+        a, b, c, d = flow(coef, t0, t1, h0=h0, goal_bits=goal_bits)
         return (a, b / w, c * w, d)
-    bits = ctx.prec + 10
+    bits = ctx.prec + 10 if goal_bits is None else goal_bits
     M = (arb(1), arb(0), arb(0), arb(1))
     t = t0
     span = t1 - t0

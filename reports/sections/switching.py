@@ -46,7 +46,7 @@ def _compute():
         for j, r in enumerate(ramp_chart(n, FIG_M, FIG_S, digits=DIGITS)):
             edges[k, 0, j], edges[k, 1, j] = float(r.lower.mid()), float(r.upper.mid())
     sine = [sine_boundary(n, FIG_M, digits=SINE_DIGITS) for n in ORDERS]
-    validity = [[jump_validity(n, m, VALIDITY_TOL) for m in VALIDITY_M] for n in ORDERS]
+    validity = [[jump_validity(n, m, VALIDITY_TOL, fit=False) for m in VALIDITY_M] for n in ORDERS]
     return edges, sine, validity
 
 
