@@ -25,7 +25,10 @@ Gronwall's lemma with ``||A|| <= K_r`` on the segment bounds ``||R(h)||`` by ``h
 times that.  The step is halved until ``A`` is bounded on the square (no singularity within
 ``rho``) and one of the two bounds is below ``2^-bits`` within the majorant's count of terms
 (at most :data:`MAX_TERMS` beyond half the bits wanted), and doubled after a step that needed
-fewer than ``bits/``:data:`_GROW` terms; ``rho = 4 h``.
+fewer than ``bits/``:data:`_GROW` terms; ``rho = 4 h``.  The coefficients of ``A`` are computed
+to ``bits/2 + 8`` terms first, and the majorant's count ``N`` only where the recurrence needs
+more (the defect bound usually stops it sooner): with ``n >= N`` terms computed, the remainder
+``sum_{k >= n} Y_k h^k`` is at most the majorant's tail after ``N`` (its terms are nonnegative).
 
 The result is proven for the ``A`` given: its entries' series and boxes are computed in ball
 arithmetic, and nothing else enters.
@@ -90,68 +93,119 @@ def _terms(K: arb, rho: arb, h: arb, bits: int) -> tuple[int, arb] | None:
         return None
 
 
-def _step(coef, tc: arb, h: arb, N: int, tail: arb | None, K: arb, rho: arb, bits: int):
-    """The map over ``[tc, tc + h]`` (four balls, row-major): at most ``N`` Taylor terms with
-    the majorant's tail ``tail``, fewer where the defect bound (:func:`_defect_tail`) proves
-    the remainder below ``2^-bits`` sooner."""
-    M = bits // 2 + 8  # the coefficients of A summed explicitly (balls); Cauchy beyond
-    L = max(N, M)
+def _series(coef, tc: arb, L: int) -> list:
+    """The first ``L`` Taylor coefficients of each entry of ``A`` at ``tc`` (balls)."""
     cap = ctx.cap  # python-flint truncates every series to ctx.cap terms: L here, restored
     ctx.cap = L
     try:
         z = arb_series([tc, 1], prec=L)
-        a = [_coeffs(s, L) for s in coef(z)]
+        return [_coeffs(s, L) for s in coef(z)]
     finally:
         ctx.cap = cap
-    # the nonzero Taylor coefficients of each entry (a linear or constant length has few), as
-    # their powers ``js`` (ascending) and values ``cs``; ``dense``: every power below the last
-    sparse = []
+
+
+def _sparse(a: list) -> list:
+    """Per entry: the powers ``js`` (ascending) of its nonzero coefficients, their values, and
+    whether they are dense (every power below the last); a constant length has few."""
+    out = []
     for e in a:
-        pairs = [(j, c) for j, c in enumerate(e[:N]) if not (c.is_exact() and c == 0)]
+        pairs = [(j, c) for j, c in enumerate(e) if not (c.is_exact() and c == 0)]
         js = [j for j, _ in pairs]
-        sparse.append((js, [c for _, c in pairs], js == list(range(len(js)))))
+        out.append((js, [c for _, c in pairs], js == list(range(len(js)))))
+    return out
+
+
+def _above(a: list, M: int, hpow: list, K: arb, x: arb) -> list:
+    """``above[m] >= sum_{j >= m} ||A_j|| h^j`` for ``m <= M`` (64 bits): the row sums of the
+    coefficients' absolute values (upper bounds) for ``j < M``, Cauchy's ``||A_j|| <= K/rho^j``
+    beyond (``x = h/rho``: ``sum_{j >= M} K x^j = K x^M/(1 - x)``).  ``hpow[j] >= h^j``."""
+    rows = [
+        [e for e in a[2 * i : 2 * i + 2] if not all(c.is_exact() and c == 0 for c in e)]
+        for i in (0, 1)
+    ]
+    sums = []
+    for row in rows:
+        if len(row) == 1:
+            sums.append([abs(c).upper() for c in row[0][:M]])
+        elif row:
+            sums.append(
+                [(abs(p) + abs(q)).upper() for p, q in zip(row[0][:M], row[1][:M], strict=True)]
+            )
+    if not sums:
+        r = [arb(0)] * M
+    elif len(sums) == 1:
+        r = sums[0]
+    else:  # exact numbers: the comparison is exact
+        r = [p if p >= q else q for p, q in zip(*sums, strict=True)]
+    above = [arb(0)] * (M + 1)
+    acc = above[M] = _upper(K * x**M / (1 - x))
+    for j in range(M - 1, -1, -1):
+        acc = above[j] = _upper(acc + r[j] * hpow[j])
+    return above
+
+
+def _step(coef, tc: arb, h: arb, K: arb, rho: arb, bits: int):
+    """The map over ``[tc, tc + h]`` (four balls, row-major) and the number of Taylor terms
+    used: as many as the defect bound (:func:`_defect_tail`) needs to prove the remainder below
+    ``2^-bits``, or the majorant's count (:func:`_terms`) with its tail where that is fewer;
+    ``None`` where neither is below ``2^-bits`` within ``bits/2 +`` :data:`MAX_TERMS` terms.
+
+    The coefficients of ``A`` are computed to ``M = bits/2 + 8`` terms first (the defect bound
+    sums them explicitly); the majorant is asked only where the recurrence needs more."""
+    M = bits // 2 + 8  # the coefficients of A summed explicitly (balls); Cauchy beyond
+    a = _series(coef, tc, M)
+    sparse = _sparse(a)
     with ctx.workprec(64):
         hh = arb(h.upper())
         x = hh / rho
-        # above[m]: sum over m <= j < M of ||A_j|| h^j, plus Cauchy's bound of the j >= M
-        rows = [
-            [e for e in a[2 * i : 2 * i + 2] if not all(c.is_exact() and c == 0 for c in e)]
-            for i in (0, 1)
-        ]
-        above = [arb(0)] * (M + 1)
-        above[M] = _upper(K * x**M / (1 - x))
-        for j in range(M - 1, -1, -1):
-            r = max((sum(abs(e[j]) for e in row) if row else arb(0)).upper() for row in rows)
-            above[j] = _upper(above[j + 1] + arb(r) * hh**j)
+        hpow = [arb(1)]  # upper bounds of h^j
+        for _ in range(M):
+            hpow.append(_upper(hpow[-1] * hh))
+        above = _above(a, M, hpow, K, x)
         Kr = _bound(coef, tc + hh / 2, hh / 2, real=True)
         grow = hh * ((K if Kr is None else Kr) * hh).exp()
-        hpow = [hh**i for i in range(N)]
     goal = arb(2) ** (-bits)
     cols = ([arb(1)], [arb(0)], [arb(0)], [arb(1)])  # u, v of column 0; u, v of column 1
     yn = [arb(1)]  # ||Y_k|| h^k (upper bounds, 64 bits)
     zero = arb(0)
-    for k in range(N - 1):
+    known = M  # the coefficients of A known: Y_0 .. Y_known computable
+    N = None  # the majorant's count of terms (asked for when the recurrence passes M)
+    tail = None
+    k = 0
+    while True:
+        n = k + 1  # the terms known: Y_0 .. Y_k
+        if N is not None and n >= N:
+            break  # the majorant's count: its tail bounds the rest
+        if k + 1 > known:
+            # the defect bound has not sufficed within M terms: the majorant's count
+            plan = _terms(K, rho, hh, bits)
+            N, tail = plan if plan is not None else (bits // 2 + MAX_TERMS, None)
+            if n >= N:
+                break  # with n >= N terms the majorant's tail after N bounds the rest
+            a = _series(coef, tc, N)
+            sparse = _sparse(a)
+            known = N
         for u, v in (cols[0:2], cols[2:4]):
-            # (k + 1) Y_{k+1} = sum_j A_j Y_{k-j}: the products c_j y_{k-j} of each entry summed
-            # from arb(0) in the order of j, entry (0, 0) then (0, 1) for u, (1, 0) then (1, 1)
-            # for v (sum() adds left to right: the same ball arithmetic as a loop)
+            # (k + 1) Y_{k+1} = sum_j A_j Y_{k-j}: the products c_j y_{k-j} of each entry
+            # summed in the order of j (sum() adds left to right)
             u.append(
                 sum(_terms_of(sparse[1], v, k), sum(_terms_of(sparse[0], u, k), zero)) / (k + 1)
             )
             v.append(
                 sum(_terms_of(sparse[3], v, k), sum(_terms_of(sparse[2], u, k), zero)) / (k + 1)
             )
+        k += 1
         with ctx.workprec(64):
-            yn.append(_upper(_rows(cols[i][k + 1] for i in (0, 2, 1, 3))) * hpow[k + 1])
-            n = k + 2  # the terms known
-            if n >= 4 and n <= N and yn[-1] < goal:
+            while len(hpow) <= k:
+                hpow.append(_upper(hpow[-1] * hh))
+            yn.append(_rows(cols[i][k] for i in (0, 2, 1, 3)) * hpow[k])
+            if k + 1 >= 4 and yn[-1] < goal:
                 bound = _defect_tail(yn, above, grow)
                 if bound < goal:
                     tail = bound
                     break
-    else:
-        if tail is None:
-            return None
+    if tail is None:
+        return None
     c = [_horner(col, h) for col in cols]
     err = arb(0, tail)
     return (c[0] + err, c[2] + err, c[1] + err, c[3] + err), len(cols[0])
@@ -241,11 +295,8 @@ def flow(coef, t0: arb, t1: arb, *, h0=None, scale=None, goal_bits=None):
         hm = arb(step.upper()) if last else step
         rho = hm * _RHO
         K = _bound(coef, t, rho)
-        plan = None if K is None else _terms(K, rho, hm, bits)
-        if K is not None:
-            N, tail = plan if plan is not None else (bits // 2 + MAX_TERMS, None)
-            done = _step(coef, t, step, N, tail, K, rho, bits)
-        if K is None or done is None:
+        done = None if K is None else _step(coef, t, step, K, rho, bits)
+        if done is None:
             h = arb((hm / 2).mid())
             if h < span * arb(2) ** (-60):
                 raise IntegrationError("the coefficients are not bounded near the path")
