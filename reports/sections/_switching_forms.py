@@ -85,8 +85,10 @@ def load() -> dict:
 
     if not all(name in SOURCES for name in NAMES):
         return derive()
-    # srepr texts of sympy's own constructors: sympify rebuilds the very expression
-    return {name: sp.sympify(SOURCES[name]) for name in NAMES}
+    # srepr texts are calls of sympy's own constructors: evaluated with sympy's names they
+    # rebuild the very expression (as sympify would, without its parser)
+    names = dict(vars(sp))
+    return {name: eval(SOURCES[name], names) for name in NAMES}  # noqa: S307 - derived text
 
 
 def write(path: Path | None = None) -> Path:
