@@ -765,11 +765,13 @@ def jump_validity(order, m, tol, *, duty="1/2", digits=15, fit=True) -> Validity
     else:
         S = min(tolf / rate, cap() / 2) if rate > 0 else cap() / 2
     lo_S, hi_S = 0.0, None
+    f_lo, f_hi = -tolf, None  # the excess at lo_S (at S = 0 the edges are the jump's)
     while hi_S is None:
-        if excess(S) > 0:
-            hi_S = S
+        f = excess(S)
+        if f > 0:
+            hi_S, f_hi = S, f
         else:
-            lo_S = S
+            lo_S, f_lo = S, f
             if below_cap(2 * S):  # then S < S_cap: the doubling as below
                 S = 2 * S
                 continue
@@ -777,12 +779,24 @@ def jump_validity(order, m, tol, *, duty="1/2", digits=15, fit=True) -> Validity
                 break
             S = min(2 * S, cap())
     if hi_S is not None:
-        for _ in range(60):  # bisection in log S to ~5 digits
-            mid = math.sqrt(lo_S * hi_S) if lo_S > 0 else hi_S / 2
-            if excess(mid) > 0:
-                hi_S = mid
+        # the Illinois (regula falsi) iteration on the excess, nearly linear in S (the shift
+        # grows like S dT/dS), down to a bracket of 1e-6 relative
+        side = 0
+        for _ in range(60):
+            mid = hi_S - f_hi * (hi_S - lo_S) / (f_hi - f_lo)
+            if not lo_S < mid < hi_S:
+                mid = (lo_S + hi_S) / 2
+            f = excess(mid)
+            if f > 0:
+                hi_S, f_hi = mid, f
+                if side == 1:
+                    f_lo /= 2
+                side = 1
             else:
-                lo_S = mid
+                lo_S, f_lo = mid, f
+                if side == -1:
+                    f_hi /= 2
+                side = -1
             if hi_S - lo_S <= 1e-6 * hi_S:
                 break
     crossing = lo_S if hi_S is None else hi_S
