@@ -308,8 +308,7 @@ def _rotation_zero(m: float, n: int, column: int, steps: int) -> float:
     def f(T: float) -> float:
         return sine_rotation(m, T, column, steps) - target
 
-    lo, hi = 0.02 * n, 0.8 * n + 0.5
-    flo, fhi = f(lo), f(hi)
+    lo, hi, flo, fhi = _rotation_bracket(f, n)
     while flo > 0:
         lo /= 2
         flo = f(lo)
@@ -335,6 +334,33 @@ def _rotation_zero(m: float, n: int, column: int, steps: int) -> float:
         if abs(fx) < 1e-13:
             return x
     return (lo + hi) / 2
+
+
+def _rotation_bracket(f, n: int) -> tuple[float, float, float, float]:
+    """``(lo, hi, f(lo), f(hi))`` with ``f(lo) < 0 < f(hi)`` for ``f`` the rotation minus its
+    target, increasing in ``T``: from ``T = n/2`` (the order's tuning without modulation) and
+    the rotation taken proportional to ``T``, then secant steps (a few evaluations for a tight
+    bracket); the wide bracket ``[0.02 n, 0.8 n + 0.5]`` where that does not close in six."""
+    target = n * math.pi / 2
+    a = n / 2
+    fa = f(a)
+    b = a * target / (fa + target) if fa + target > 0 else a / 2
+    fb = f(b)
+    for _ in range(6):
+        if fa < 0 < fb:
+            return a, b, fa, fb
+        if fb < 0 < fa:
+            return b, a, fb, fa
+        if fb == fa or not (math.isfinite(fa) and math.isfinite(fb)):
+            break
+        # past the secant's zero by a tenth of the step: the next point brackets it
+        c = b - fb * (b - a) / (fb - fa)
+        c = c + 0.1 * (c - b)
+        if not c > 0:
+            break
+        a, fa, b, fb = b, fb, c, f(c)
+    lo, hi = 0.02 * n, 0.8 * n + 0.5
+    return lo, hi, f(lo), f(hi)
 
 
 def _pair(n: int) -> tuple[str, str]:
@@ -435,7 +461,10 @@ def _enclose(m: Fraction, entries: tuple, x: arb, bits: int) -> arb:
             d = abs(x) * arb(2) ** (-k)
             for _ in range(3):
                 a, b = (x - d).mid(), (x + d).mid()
-                Ga, Gb = sine_half_map(m, a), sine_half_map(m, b)
+                # only the signs at a and b are used: |G_e| there is about |G_e'| d, far above
+                # the radius of Taylor steps bounded to 2^-bits (the default asks 2^-(bits+10))
+                Ga = sine_half_map(m, a, goal_bits=bits)
+                Gb = sine_half_map(m, b, goal_bits=bits)
                 if all(_opposite(Ga[e], Gb[e]) for e in entries):
                     return arb.union(a, b)
                 moved = next((e for e in entries if _same(Ga[e], Gb[e])), None)
