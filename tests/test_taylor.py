@@ -88,3 +88,19 @@ def test_one_step_by_each_bound(prec, monkeypatch):
         K = taylor._bound(coef, arb(0), rho)
         assert taylor._terms(K, rho, hb, bits) is None
         assert taylor._step(coef, arb(0), hb, K, rho, bits) is None
+
+
+@pytest.mark.parametrize("goal", [40, 56])
+def test_a_lower_goal_still_encloses(goal):
+    """``goal_bits`` below the default (the working precision plus 10): fewer terms, balls still
+    enclosing the oscillator's map (reference: mpmath at 60 digits), their radii near
+    ``2^-goal`` (at most a few steps' tails, times the map's growth)."""
+    w, span = 7, 5
+    with ctx.workprec(64):
+        M = flow(_oscillator(arb(w)), arb(0), arb(span), scale=arb(w), goal_bits=goal)
+    with mpmath.workdps(60):
+        c, s = mpmath.cos(w * span), mpmath.sin(w * span)
+        exact = (c, s / w, -w * s, c)
+    for ball, ref in zip(M, exact, strict=True):
+        assert ball.overlaps(arb(mpmath.nstr(ref, 55), mpmath.mpf(10) ** -50)), (ball, ref)
+        assert ball.rad() < arb(2) ** (-(goal - 16))
