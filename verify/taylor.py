@@ -115,14 +115,12 @@ def _sparse(a: list) -> list:
     return out
 
 
-def _above(a: list, M: int, hpow: list, K: arb, x: arb) -> list:
+def _above(a: list, sparse: list, M: int, hpow: list, K: arb, x: arb) -> list:
     """``above[m] >= sum_{j >= m} ||A_j|| h^j`` for ``m <= M`` (64 bits): the row sums of the
     coefficients' absolute values (upper bounds) for ``j < M``, Cauchy's ``||A_j|| <= K/rho^j``
-    beyond (``x = h/rho``: ``sum_{j >= M} K x^j = K x^M/(1 - x)``).  ``hpow[j] >= h^j``."""
-    rows = [
-        [e for e in a[2 * i : 2 * i + 2] if not all(c.is_exact() and c == 0 for c in e)]
-        for i in (0, 1)
-    ]
+    beyond (``x = h/rho``: ``sum_{j >= M} K x^j = K x^M/(1 - x)``).  ``hpow[j] >= h^j``;
+    ``sparse``: :func:`_sparse` of ``a`` (an entry without nonzero coefficients is left out)."""
+    rows = [[a[e] for e in (2 * i, 2 * i + 1) if sparse[e][0]] for i in (0, 1)]
     sums = []
     for row in rows:
         if len(row) == 1:
@@ -161,7 +159,7 @@ def _step(coef, tc: arb, h: arb, K: arb, rho: arb, bits: int):
         hpow = [arb(1)]  # upper bounds of h^j
         for _ in range(M):
             hpow.append(_upper(hpow[-1] * hh))
-        above = _above(a, M, hpow, K, x)
+        above = _above(a, sparse, M, hpow, K, x)
         Kr = _bound(coef, tc + hh / 2, hh / 2, real=True)
         grow = hh * ((K if Kr is None else Kr) * hh).exp()
     goal = arb(2) ** (-bits)
@@ -198,7 +196,7 @@ def _step(coef, tc: arb, h: arb, K: arb, rho: arb, bits: int):
         with ctx.workprec(64):
             while len(hpow) <= k:
                 hpow.append(_upper(hpow[-1] * hh))
-            yn.append(_rows(cols[i][k] for i in (0, 2, 1, 3)) * hpow[k])
+            yn.append(_rows(cols[0][k], cols[2][k], cols[1][k], cols[3][k]) * hpow[k])
             if k + 1 >= 4 and yn[-1] < goal:
                 bound = _defect_tail(yn, above, grow)
                 if bound < goal:
@@ -221,10 +219,10 @@ def _terms_of(entry, y: list, k: int):
     return map(mul, cs[:n], [y[k - j] for j in js[:n]])
 
 
-def _rows(entries) -> arb:
-    """The row-sum norm of a 2x2 matrix given row-major (an upper bound, 64 bits)."""
-    a, b, c, d = entries
-    return arb(max((abs(a) + abs(b)).upper(), (abs(c) + abs(d)).upper()))
+def _rows(a: arb, b: arb, c: arb, d: arb) -> arb:
+    """The row-sum norm of the 2x2 matrix ``[[a, b], [c, d]]`` (an upper bound, 64 bits)."""
+    r0, r1 = (abs(a) + abs(b)).upper(), (abs(c) + abs(d)).upper()
+    return r0 if r0 >= r1 else r1  # exact numbers: the comparison is exact
 
 
 def _upper(x: arb) -> arb:
