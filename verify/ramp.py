@@ -38,7 +38,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, field
 from fractions import Fraction
-from functools import cache
+from functools import cache, lru_cache
 
 import mpmath
 from flint import arb, ctx, fmpq
@@ -188,6 +188,15 @@ class _Pendulum:
         return _mul(self.up, P)
 
 
+@lru_cache(maxsize=64)
+def _pendulum_at(m: Fraction, S: Fraction, duty: Fraction, prec: int) -> _Pendulum:
+    """:class:`_Pendulum` at the precision ``prec``, kept for the next caller: the two edges of
+    an interval are followed to the same switching times (one ramp map, its Bessel functions
+    evaluated once)."""
+    with ctx.workprec(prec):
+        return _Pendulum(m, S, duty)
+
+
 def check_fits(S: Fraction, T: Fraction, duty: Fraction, where: str = "") -> None:
     """Refuse ``S > min(D, 1 - D) T``: a ramp longer than the shorter phase."""
     longest = min(duty, 1 - duty) * T
@@ -311,7 +320,7 @@ def _follow(
         while s_now < S:
             s_next = min(S, s_now + step)
             guess = T_now + slope * float(s_next - s_now)
-            p = _Pendulum(m, s_next, duty)
+            p = _pendulum_at(m, s_next, duty, ctx.prec)
             root = _newton_mid(p, e, guess)
             if root is None or abs(root - guess) > spacing / _CORRECTION:
                 step = step / 2
