@@ -301,6 +301,26 @@ def test_jump_validity_answer():
     assert max(float((abs(a) / v.jump_lower).mid()), float((abs(b) / v.jump_upper).mid())) > 1e-3
 
 
+@pytest.mark.parametrize("n, m, tol", [(1, "0.3", "1e-3"), (3, "0.6", "1e-3"), (1, "0.1", "0.1")])
+def test_jump_validity_without_the_longest_ramp_is_the_same(n, m, tol):
+    """``fit=False`` computes the longest ramp only where the search comes near it; the answer
+    (the bracket, the certified shifts) is the one ``fit=True`` gives (the reference).  At tol
+    0.1 and m = 0.1 every ramp that fits stays within (S_bad is None): the search reaches the
+    cap, so S_fit is computed."""
+    from verify.ramp import jump_validity
+
+    full = jump_validity(n, m, tol)
+    lazy = jump_validity(n, m, tol, fit=False)
+    assert (lazy.S_ok, lazy.S_bad) == (full.S_ok, full.S_bad)
+    assert [S for S, _, _ in lazy.table] == [S for S, _, _ in full.table]
+    for (_, a, b), (_, a2, b2) in zip(lazy.table, full.table, strict=True):
+        assert a.overlaps(a2) and b.overlaps(b2)
+    if full.S_bad is None:
+        assert lazy.S_fit == full.S_fit
+    else:
+        assert lazy.S_fit is None
+
+
 # ---------------------------------------------------------------------------------------------
 # command line
 

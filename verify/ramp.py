@@ -38,7 +38,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, field
 from fractions import Fraction
-from functools import cache
+from functools import cache, lru_cache
 
 import mpmath
 from flint import arb, ctx, fmpq
@@ -188,6 +188,15 @@ class _Pendulum:
         return _mul(self.up, P)
 
 
+@lru_cache(maxsize=64)
+def _pendulum_at(m: Fraction, S: Fraction, duty: Fraction, prec: int) -> _Pendulum:
+    """:class:`_Pendulum` at the precision ``prec``, kept for the next caller: the two edges of
+    an interval are followed to the same switching times (one ramp map, its Bessel functions
+    evaluated once)."""
+    with ctx.workprec(prec):
+        return _Pendulum(m, S, duty)
+
+
 def check_fits(S: Fraction, T: Fraction, duty: Fraction, where: str = "") -> None:
     """Refuse ``S > min(D, 1 - D) T``: a ramp longer than the shorter phase."""
     longest = min(duty, 1 - duty) * T
@@ -311,7 +320,7 @@ def _follow(
         while s_now < S:
             s_next = min(S, s_now + step)
             guess = T_now + slope * float(s_next - s_now)
-            p = _Pendulum(m, s_next, duty)
+            p = _pendulum_at(m, s_next, duty, ctx.prec)
             root = _newton_mid(p, e, guess)
             if root is None or abs(root - guess) > spacing / _CORRECTION:
                 step = step / 2
@@ -586,7 +595,7 @@ class Validity:
     jump_upper: arb
     S_ok: Fraction
     S_bad: Fraction | None
-    S_fit: float
+    S_fit: float | None
     slopes: tuple
     table: tuple
     notes: tuple = ()
@@ -700,7 +709,7 @@ def _round_decimal(x: float, sig: int, up: bool) -> Fraction:
     return max(k, 1) * unit
 
 
-def jump_validity(order, m, tol, *, duty="1/2", digits=15) -> Validity:
+def jump_validity(order, m, tol, *, duty="1/2", digits=15, fit=True) -> Validity:
     """The largest switching time ``S`` for which both edges of the ``order``-th interval with
     ramps stay within the relative tolerance ``tol`` of the jump model's edges.
 
@@ -708,7 +717,8 @@ def jump_validity(order, m, tol, *, duty="1/2", digits=15) -> Validity:
     bracketed by two 3-digit decimals ``S_ok < S_bad`` at which certified edges prove ``within``
     and ``beyond``; the shifts at ``S_ok/8, S_ok/4, S_ok/2`` are certified too.  That no larger
     ``S`` below ``S_bad`` comes back within ``tol`` rests on the shift growing with ``S``
-    (observed, not proven)."""
+    (observed, not proven).  ``fit=False``: :attr:`Validity.S_fit` is computed only where the
+    search comes near the longest ramp (else ``None``); the answer is the same."""
     from .inputs import as_tolerance
 
     n = as_order(order)
@@ -724,8 +734,32 @@ def jump_validity(order, m, tol, *, duty="1/2", digits=15) -> Validity:
         )
     T0s = (float(jump.lower), float(jump.upper))
     paths = _paths(n, mm, D, jump, names)
-    S_fit = longest_ramp(n, mm, duty=D, _jump_result=jump)
+    S_fit = longest_ramp(n, mm, duty=D, _jump_result=jump) if fit else None
     tolf = float(tt)
+    c_fit = float(min(D, 1 - D))
+
+    def below_cap(x: float) -> bool:
+        """``x <= S_fit (1 - 1e-9)`` (the search's cap).  Without ``S_fit``: a ramp of ``y = x/(1
+        - 1e-9)`` that fits a phase at the followed lower edge with room to spare (``c T_lo(y) >=
+        y (1 + 1e-6)``) is below the longest one, ``S = c T_lo(S)`` (the same premise as
+        :func:`longest_ramp`: ``c T_lo(S) - S`` decreases, ``|dT/dS| < 1/c``); where that is not
+        clear, ``S_fit`` is computed."""
+        nonlocal S_fit
+        if S_fit is None:
+            y = x / (1 - 1e-9)
+            try:
+                if c_fit * paths.edges(Fraction(y))[0] >= y * (1 + 1e-6):
+                    return True
+            except CertificationError:
+                pass
+            S_fit = longest_ramp(n, mm, duty=D, _jump_result=jump)
+        return x <= S_fit * (1 - 1e-9)
+
+    def cap() -> float:
+        nonlocal S_fit
+        if S_fit is None:
+            S_fit = longest_ramp(n, mm, duty=D, _jump_result=jump)
+        return S_fit * (1 - 1e-9)
 
     def excess(S: float) -> float:
         lo, hi = paths.edges(Fraction(S))
@@ -734,24 +768,44 @@ def jump_validity(order, m, tol, *, duty="1/2", digits=15) -> Validity:
     slopes = leading_shift(n, mm, duty=D, digits=d, _jump_result=jump)
     rate = max(abs(float(a.mid())) / T for a, T in zip(slopes, T0s, strict=True))
     notes = []
-    S_cap = S_fit * (1 - 1e-9)
-    S = min(tolf / rate, S_cap / 2) if rate > 0 else S_cap / 2
+    # S = min(tol/rate, S_cap/2), the cap S_cap = S_fit (1 - 1e-9) computed only if needed
+    if rate > 0 and below_cap(2 * (tolf / rate)):
+        S = tolf / rate
+    else:
+        S = min(tolf / rate, cap() / 2) if rate > 0 else cap() / 2
     lo_S, hi_S = 0.0, None
+    f_lo, f_hi = -tolf, None  # the excess at lo_S (at S = 0 the edges are the jump's)
     while hi_S is None:
-        if excess(S) > 0:
-            hi_S = S
+        f = excess(S)
+        if f > 0:
+            hi_S, f_hi = S, f
         else:
-            lo_S = S
-            if S >= S_cap:
+            lo_S, f_lo = S, f
+            if below_cap(2 * S):  # then S < S_cap: the doubling as below
+                S = 2 * S
+                continue
+            if S >= cap():
                 break
-            S = min(2 * S, S_cap)
+            S = min(2 * S, cap())
     if hi_S is not None:
-        for _ in range(60):  # bisection in log S to ~5 digits
-            mid = math.sqrt(lo_S * hi_S) if lo_S > 0 else hi_S / 2
-            if excess(mid) > 0:
-                hi_S = mid
+        # the Illinois (regula falsi) iteration on the excess, nearly linear in S (the shift
+        # grows like S dT/dS), down to a bracket of 1e-6 relative
+        side = 0
+        for _ in range(60):
+            mid = hi_S - f_hi * (hi_S - lo_S) / (f_hi - f_lo)
+            if not lo_S < mid < hi_S:
+                mid = (lo_S + hi_S) / 2
+            f = excess(mid)
+            if f > 0:
+                hi_S, f_hi = mid, f
+                if side == 1:
+                    f_lo /= 2
+                side = 1
             else:
-                lo_S = mid
+                lo_S, f_lo = mid, f
+                if side == -1:
+                    f_hi /= 2
+                side = -1
             if hi_S - lo_S <= 1e-6 * hi_S:
                 break
     crossing = lo_S if hi_S is None else hi_S

@@ -151,12 +151,13 @@ def sine_monodromy_arb(m, T, Q=None):
     return flow(coef, arb(0), Tb, scale=2 * arb.pi())
 
 
-def sine_half_map(m, T):
+def sine_half_map(m, T, *, goal_bits=None):
     """``G``: the map of ``(phi, p)`` from ``t = T/4`` to ``3T/4`` (no friction), four balls.
 
     Integrated in the Liouville form (V3) of :mod:`analytic.smooth` (one varying entry: half
     the work of (V2) per Taylor step) and carried back to ``(phi, p)`` by the derived ``C`` at
-    both ends: ``G = C(3T/4)^-1 W C(T/4)``."""
+    both ends: ``G = C(3T/4)^-1 W C(T/4)``.  ``goal_bits``: the remainder goal of each Taylor
+    step (:func:`verify.taylor.flow`; default the working precision plus 10 bits)."""
     _, _, hill, state = _compiled()
     Tb = T if isinstance(T, arb) else _A(Fraction(T))
     mb = m if isinstance(m, arb) else _A(Fraction(m))
@@ -165,7 +166,7 @@ def sine_half_map(m, T):
     zero = arb(0)
     coef = _series_safe(lambda t: hill(t, Tb, mb, g, zero, pi))
     a, b = Tb / 4, 3 * Tb / 4
-    W = flow(coef, a, b, scale=2 * arb.pi())
+    W = flow(coef, a, b, scale=2 * arb.pi(), goal_bits=goal_bits)
     Ca = state(a, Tb, mb, g, zero, pi)
     c11, c12, c21, c22 = state(b, Tb, mb, g, zero, pi)
     det = c11 * c22 - c12 * c21
@@ -307,8 +308,7 @@ def _rotation_zero(m: float, n: int, column: int, steps: int) -> float:
     def f(T: float) -> float:
         return sine_rotation(m, T, column, steps) - target
 
-    lo, hi = 0.02 * n, 0.8 * n + 0.5
-    flo, fhi = f(lo), f(hi)
+    lo, hi, flo, fhi = _rotation_bracket(f, n)
     while flo > 0:
         lo /= 2
         flo = f(lo)
@@ -336,12 +336,42 @@ def _rotation_zero(m: float, n: int, column: int, steps: int) -> float:
     return (lo + hi) / 2
 
 
+def _rotation_bracket(f, n: int) -> tuple[float, float, float, float]:
+    """``(lo, hi, f(lo), f(hi))`` with ``f(lo) < 0 < f(hi)`` for ``f`` the rotation minus its
+    target, increasing in ``T``: from ``T = n/2`` (the order's tuning without modulation) and
+    the rotation taken proportional to ``T``, then secant steps (a few evaluations for a tight
+    bracket); the wide bracket ``[0.02 n, 0.8 n + 0.5]`` where that does not close in six."""
+    target = n * math.pi / 2
+    a = n / 2
+    fa = f(a)
+    b = a * target / (fa + target) if fa + target > 0 else a / 2
+    fb = f(b)
+    for _ in range(6):
+        if fa < 0 < fb:
+            return a, b, fa, fb
+        if fb < 0 < fa:
+            return b, a, fb, fa
+        if fb == fa or not (math.isfinite(fa) and math.isfinite(fb)):
+            break
+        # past the secant's zero by a tenth of the step: the next point brackets it
+        c = b - fb * (b - a) / (fb - fa)
+        c = c + 0.1 * (c - b)
+        if not c > 0:
+            break
+        a, fa, b, fb = b, fb, c, f(c)
+    lo, hi = 0.02 * n, 0.8 * n + 0.5
+    return lo, hi, f(lo), f(hi)
+
+
 def _pair(n: int) -> tuple[str, str]:
     return ("G11", "G22") if n % 2 else ("G12", "G21")
 
 
-#: the working precision of the first refinement (cheap; to about 1e-17)
+#: the working precision of the first refinement (cheap; to about 1e-17), and the remainder
+#: its Taylor steps are bounded to (``2^-_LOW_GOAL``; its zero is not proven but only placed
+#: within the enclosure :func:`_enclose` proves, so it needs no more than the secant's goal)
 _LOW_BITS = 64
+_LOW_GOAL = 64
 
 
 def _secant(F, x1: arb, x2: arb, f1: arb, goal: arb, iters: int):
@@ -375,7 +405,7 @@ def _refine(m: Fraction, e: int, x0: float, bits: int) -> tuple[arb, arb | None]
     with ctx.workprec(_LOW_BITS):
 
         def F_low(T: arb) -> arb:
-            return sine_half_map(m, T)[e]
+            return sine_half_map(m, T, goal_bits=_LOW_GOAL)[e]
 
         x1 = arb(x0)
         f1 = F_low(x1).mid()
@@ -431,7 +461,10 @@ def _enclose(m: Fraction, entries: tuple, x: arb, bits: int) -> arb:
             d = abs(x) * arb(2) ** (-k)
             for _ in range(3):
                 a, b = (x - d).mid(), (x + d).mid()
-                Ga, Gb = sine_half_map(m, a), sine_half_map(m, b)
+                # only the signs at a and b are used: |G_e| there is about |G_e'| d, far above
+                # the radius of Taylor steps bounded to 2^-bits (the default asks 2^-(bits+10))
+                Ga = sine_half_map(m, a, goal_bits=bits)
+                Gb = sine_half_map(m, b, goal_bits=bits)
                 if all(_opposite(Ga[e], Gb[e]) for e in entries):
                     return arb.union(a, b)
                 moved = next((e for e in entries if _same(Ga[e], Gb[e])), None)

@@ -25,13 +25,19 @@ Gronwall's lemma with ``||A|| <= K_r`` on the segment bounds ``||R(h)||`` by ``h
 times that.  The step is halved until ``A`` is bounded on the square (no singularity within
 ``rho``) and one of the two bounds is below ``2^-bits`` within the majorant's count of terms
 (at most :data:`MAX_TERMS` beyond half the bits wanted), and doubled after a step that needed
-fewer than ``bits/``:data:`_GROW` terms; ``rho = 4 h``.
+fewer than ``bits/``:data:`_GROW` terms; ``rho = 4 h``.  The coefficients of ``A`` are computed
+to ``bits/2 + 8`` terms first, and the majorant's count ``N`` only where the recurrence needs
+more (the defect bound usually stops it sooner): with ``n >= N`` terms computed, the remainder
+``sum_{k >= n} Y_k h^k`` is at most the majorant's tail after ``N`` (its terms are nonnegative).
 
 The result is proven for the ``A`` given: its entries' series and boxes are computed in ball
 arithmetic, and nothing else enters.
 """
 
 from __future__ import annotations
+
+from bisect import bisect_right
+from operator import mul
 
 from flint import acb, arb, arb_series, ctx
 
@@ -87,77 +93,136 @@ def _terms(K: arb, rho: arb, h: arb, bits: int) -> tuple[int, arb] | None:
         return None
 
 
-def _step(coef, tc: arb, h: arb, N: int, tail: arb | None, K: arb, rho: arb, bits: int):
-    """The map over ``[tc, tc + h]`` (four balls, row-major): at most ``N`` Taylor terms with
-    the majorant's tail ``tail``, fewer where the defect bound (:func:`_defect_tail`) proves
-    the remainder below ``2^-bits`` sooner."""
-    M = bits // 2 + 8  # the coefficients of A summed explicitly (balls); Cauchy beyond
-    L = max(N, M)
+def _series(coef, tc: arb, L: int) -> list:
+    """The first ``L`` Taylor coefficients of each entry of ``A`` at ``tc`` (balls)."""
     cap = ctx.cap  # python-flint truncates every series to ctx.cap terms: L here, restored
     ctx.cap = L
     try:
         z = arb_series([tc, 1], prec=L)
-        a = [_coeffs(s, L) for s in coef(z)]
+        return [_coeffs(s, L) for s in coef(z)]
     finally:
         ctx.cap = cap
-    # the nonzero Taylor coefficients of each entry (a linear or constant length has few)
-    sparse = [[(j, c) for j, c in enumerate(e[:N]) if not (c.is_exact() and c == 0)] for e in a]
+
+
+def _sparse(a: list) -> list:
+    """Per entry: the powers ``js`` (ascending) of its nonzero coefficients, their values, and
+    whether they are dense (every power below the last); a constant length has few."""
+    out = []
+    for e in a:
+        pairs = [(j, c) for j, c in enumerate(e) if not (c.is_exact() and c == 0)]
+        js = [j for j, _ in pairs]
+        out.append((js, [c for _, c in pairs], js == list(range(len(js)))))
+    return out
+
+
+def _above(a: list, sparse: list, M: int, hpow: list, K: arb, x: arb) -> list:
+    """``above[m] >= sum_{j >= m} ||A_j|| h^j`` for ``m <= M`` (64 bits): the row sums of the
+    coefficients' absolute values (upper bounds) for ``j < M``, Cauchy's ``||A_j|| <= K/rho^j``
+    beyond (``x = h/rho``: ``sum_{j >= M} K x^j = K x^M/(1 - x)``).  ``hpow[j] >= h^j``;
+    ``sparse``: :func:`_sparse` of ``a`` (an entry without nonzero coefficients is left out)."""
+    rows = [[a[e] for e in (2 * i, 2 * i + 1) if sparse[e][0]] for i in (0, 1)]
+    sums = []
+    for row in rows:
+        if len(row) == 1:
+            sums.append([abs(c).upper() for c in row[0][:M]])
+        elif row:
+            sums.append(
+                [(abs(p) + abs(q)).upper() for p, q in zip(row[0][:M], row[1][:M], strict=True)]
+            )
+    if not sums:
+        r = [arb(0)] * M
+    elif len(sums) == 1:
+        r = sums[0]
+    else:  # exact numbers: the comparison is exact
+        r = [p if p >= q else q for p, q in zip(*sums, strict=True)]
+    above = [arb(0)] * (M + 1)
+    acc = above[M] = _upper(K * x**M / (1 - x))
+    for j in range(M - 1, -1, -1):
+        acc = above[j] = _upper(acc + r[j] * hpow[j])
+    return above
+
+
+def _step(coef, tc: arb, h: arb, K: arb, rho: arb, bits: int):
+    """The map over ``[tc, tc + h]`` (four balls, row-major) and the number of Taylor terms
+    used: as many as the defect bound (:func:`_defect_tail`) needs to prove the remainder below
+    ``2^-bits``, or the majorant's count (:func:`_terms`) with its tail where that is fewer;
+    ``None`` where neither is below ``2^-bits`` within ``bits/2 +`` :data:`MAX_TERMS` terms.
+
+    The coefficients of ``A`` are computed to ``M = bits/2 + 8`` terms first (the defect bound
+    sums them explicitly); the majorant is asked only where the recurrence needs more."""
+    M = bits // 2 + 8  # the coefficients of A summed explicitly (balls); Cauchy beyond
+    a = _series(coef, tc, M)
+    sparse = _sparse(a)
     with ctx.workprec(64):
         hh = arb(h.upper())
         x = hh / rho
-        # above[m]: sum over m <= j < M of ||A_j|| h^j, plus Cauchy's bound of the j >= M
-        rows = [
-            [e for e in a[2 * i : 2 * i + 2] if not all(c.is_exact() and c == 0 for c in e)]
-            for i in (0, 1)
-        ]
-        above = [arb(0)] * (M + 1)
-        above[M] = _upper(K * x**M / (1 - x))
-        for j in range(M - 1, -1, -1):
-            r = max((sum(abs(e[j]) for e in row) if row else arb(0)).upper() for row in rows)
-            above[j] = _upper(above[j + 1] + arb(r) * hh**j)
+        hpow = [arb(1)]  # upper bounds of h^j
+        for _ in range(M):
+            hpow.append(_upper(hpow[-1] * hh))
+        above = _above(a, sparse, M, hpow, K, x)
         Kr = _bound(coef, tc + hh / 2, hh / 2, real=True)
         grow = hh * ((K if Kr is None else Kr) * hh).exp()
     goal = arb(2) ** (-bits)
     cols = ([arb(1)], [arb(0)], [arb(0)], [arb(1)])  # u, v of column 0; u, v of column 1
     yn = [arb(1)]  # ||Y_k|| h^k (upper bounds, 64 bits)
-    for k in range(N - 1):
+    zero = arb(0)
+    known = M  # the coefficients of A known: Y_0 .. Y_known computable
+    N = None  # the majorant's count of terms (asked for when the recurrence passes M)
+    tail = None
+    k = 0
+    while True:
+        n = k + 1  # the terms known: Y_0 .. Y_k
+        if N is not None and n >= N:
+            break  # the majorant's count: its tail bounds the rest
+        if k + 1 > known:
+            # the defect bound has not sufficed within M terms: the majorant's count
+            plan = _terms(K, rho, hh, bits)
+            N, tail = plan if plan is not None else (bits // 2 + MAX_TERMS, None)
+            if n >= N:
+                break  # with n >= N terms the majorant's tail after N bounds the rest
+            a = _series(coef, tc, N)
+            sparse = _sparse(a)
+            known = N
         for u, v in (cols[0:2], cols[2:4]):
-            su = arb(0)
-            sv = arb(0)
-            for j, c in sparse[0]:
-                if j <= k:
-                    su += c * u[k - j]
-            for j, c in sparse[1]:
-                if j <= k:
-                    su += c * v[k - j]
-            for j, c in sparse[2]:
-                if j <= k:
-                    sv += c * u[k - j]
-            for j, c in sparse[3]:
-                if j <= k:
-                    sv += c * v[k - j]
-            u.append(su / (k + 1))
-            v.append(sv / (k + 1))
+            # (k + 1) Y_{k+1} = sum_j A_j Y_{k-j}: the products c_j y_{k-j} of each entry
+            # summed in the order of j (sum() adds left to right)
+            u.append(
+                sum(_terms_of(sparse[1], v, k), sum(_terms_of(sparse[0], u, k), zero)) / (k + 1)
+            )
+            v.append(
+                sum(_terms_of(sparse[3], v, k), sum(_terms_of(sparse[2], u, k), zero)) / (k + 1)
+            )
+        k += 1
         with ctx.workprec(64):
-            yn.append(_upper(_rows(cols[i][k + 1] for i in (0, 2, 1, 3))) * hh ** (k + 1))
-            n = k + 2  # the terms known
-            if n >= 4 and n <= N and yn[-1] < goal:
+            while len(hpow) <= k:
+                hpow.append(_upper(hpow[-1] * hh))
+            yn.append(_rows(cols[0][k], cols[2][k], cols[1][k], cols[3][k]) * hpow[k])
+            if k + 1 >= 4 and yn[-1] < goal:
                 bound = _defect_tail(yn, above, grow)
                 if bound < goal:
                     tail = bound
                     break
-    else:
-        if tail is None:
-            return None
+    if tail is None:
+        return None
     c = [_horner(col, h) for col in cols]
     err = arb(0, tail)
     return (c[0] + err, c[2] + err, c[1] + err, c[3] + err), len(cols[0])
 
 
-def _rows(entries) -> arb:
-    """The row-sum norm of a 2x2 matrix given row-major (an upper bound, 64 bits)."""
-    a, b, c, d = entries
-    return arb(max((abs(a) + abs(b)).upper(), (abs(c) + abs(d)).upper()))
+def _terms_of(entry, y: list, k: int):
+    """The products ``c_j y[k - j]`` of one entry's nonzero coefficients ``c_j`` (``j <= k``),
+    in the order of ``j`` (``entry``: the powers, the values, and whether they are dense)."""
+    js, cs, dense = entry
+    if dense:  # c_0 y_k, c_1 y_{k-1}, ...: zip stops at the shorter
+        return map(mul, cs, y[k::-1])
+    n = bisect_right(js, k)
+    return map(mul, cs[:n], [y[k - j] for j in js[:n]])
+
+
+def _rows(a: arb, b: arb, c: arb, d: arb) -> arb:
+    """The row-sum norm of the 2x2 matrix ``[[a, b], [c, d]]`` (an upper bound, 64 bits)."""
+    r0, r1 = (abs(a) + abs(b)).upper(), (abs(c) + abs(d)).upper()
+    return r0 if r0 >= r1 else r1  # exact numbers: the comparison is exact
 
 
 def _upper(x: arb) -> arb:
@@ -198,12 +263,14 @@ def _mul(P, Q):
     return (a * e + b * g, a * f + b * k, c * e + d * g, c * f + d * k)
 
 
-def flow(coef, t0: arb, t1: arb, *, h0=None, scale=None):
+def flow(coef, t0: arb, t1: arb, *, h0=None, scale=None, goal_bits=None):
     """The map of ``y' = A(t) y`` from ``t0`` to ``t1 > t0`` (exact ``arb`` points), as four
     ``arb`` balls (row-major) at the working precision ``flint.ctx.prec``; ``coef(t)`` returns
     the four entries of ``A(t)`` for ``t`` an ``arb_series`` or an ``acb``.  ``h0``: the first
     trial step (default ``(t1 - t0)/4``).  ``scale = w`` integrates in the variables ``(y1,
-    y2/w)`` (a balanced system takes longer steps) and returns the map of ``(y1, y2)``."""
+    y2/w)`` (a balanced system takes longer steps) and returns the map of ``(y1, y2)``.
+    ``goal_bits``: each step's remainder is bounded below ``2^-goal_bits`` (default the working
+    precision plus 10 bits); a smaller goal gives wider balls, still proven, in fewer terms."""
     if scale is not None:
         w = scale
         inner = coef
@@ -212,9 +279,9 @@ def flow(coef, t0: arb, t1: arb, *, h0=None, scale=None):
             a = inner(t)
             return (a[0], a[1] * w, a[2] / w, a[3])
 
-        a, b, c, d = flow(coef, t0, t1, h0=h0)
+        a, b, c, d = flow(coef, t0, t1, h0=h0, goal_bits=goal_bits)
         return (a, b / w, c * w, d)
-    bits = ctx.prec + 10
+    bits = ctx.prec + 10 if goal_bits is None else goal_bits
     M = (arb(1), arb(0), arb(0), arb(1))
     t = t0
     span = t1 - t0
@@ -226,11 +293,8 @@ def flow(coef, t0: arb, t1: arb, *, h0=None, scale=None):
         hm = arb(step.upper()) if last else step
         rho = hm * _RHO
         K = _bound(coef, t, rho)
-        plan = None if K is None else _terms(K, rho, hm, bits)
-        if K is not None:
-            N, tail = plan if plan is not None else (bits // 2 + MAX_TERMS, None)
-            done = _step(coef, t, step, N, tail, K, rho, bits)
-        if K is None or done is None:
+        done = None if K is None else _step(coef, t, step, K, rho, bits)
+        if done is None:
             h = arb((hm / 2).mid())
             if h < span * arb(2) ** (-60):
                 raise IntegrationError("the coefficients are not bounded near the path")

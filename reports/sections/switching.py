@@ -46,7 +46,7 @@ def _compute():
         for j, r in enumerate(ramp_chart(n, FIG_M, FIG_S, digits=DIGITS)):
             edges[k, 0, j], edges[k, 1, j] = float(r.lower.mid()), float(r.upper.mid())
     sine = [sine_boundary(n, FIG_M, digits=SINE_DIGITS) for n in ORDERS]
-    validity = [[jump_validity(n, m, VALIDITY_TOL) for m in VALIDITY_M] for n in ORDERS]
+    validity = [[jump_validity(n, m, VALIDITY_TOL, fit=False) for m in VALIDITY_M] for n in ORDERS]
     return edges, sine, validity
 
 
@@ -118,8 +118,7 @@ def _validity_rows(validity) -> list:
 
 
 def build(ctx: Context) -> Part:
-    from analytic.ramp import first_order_defect
-    from analytic.smooth import hill_form, sine_first_width, sine_length
+    from ._switching_forms import load
 
     cfg = ctx.config
     ctx.log("switching: ramp edges, sine edges, jump validity")
@@ -130,9 +129,10 @@ def build(ctx: Context) -> Part:
     def m_(x):
         return inline(math(x, cfg))
 
-    E12 = first_order_defect()[0, 1]
-    q = sp.factor(hill_form(sine_length()).subs(sp.Symbol("gamma", nonnegative=True), 0))
-    c_lo, c_hi = sine_first_width()
+    # the derived forms, stored by reports.sections._switching_forms (checked by its test)
+    forms = load()
+    E12, q = forms["E12"], forms["q"]
+    c_lo, c_hi = forms["c_lo"], forms["c_hi"]
     m = sp.Symbol("m")
     out: list[Latex] = [
         paragraph(
@@ -166,7 +166,7 @@ def build(ctx: Context) -> Part:
                     r"отличается от скачка на $S\,E$, где ",
                 )
             ),
-            m_(sp.Eq(sp.Symbol("E_{12}"), sp.factor(E12))),
+            m_(sp.Eq(sp.Symbol("E_{12}"), E12)),
             raw(
                 say(
                     r", so every edge moves linearly in $S$ (Fig.~\ref{fig:switching}).",
@@ -316,19 +316,20 @@ def _closings_text(widths, rc, m_) -> list:
     recurrence of the sine's Ince form) and the certified widths; the ramp's closing from
     :func:`verify.ramp.ramp_closing`."""
     from analytic.ramp import crossing_is_a_closing
-    from analytic.smooth import fourier_recurrence, ince_form, sine_closings, symbols
+    from analytic.smooth import symbols
     from verify.ramp import _decimal
 
-    th = sine_closings()
-    if not (th.even_closed and th.odd_open):  # pragma: no cover - a proof
-        raise AssertionError(f"the sine's closings are not as stated: {th}")
+    from ._switching_forms import load
+
+    forms = load()  # analytic.smooth.sine_closings, fourier_recurrence, ince_form, stored
+    if not (forms["even_closed"] and forms["odd_open"]):  # pragma: no cover - a proof
+        raise AssertionError("the sine's closings are not as stated")
     if crossing_is_a_closing() != sp.zeros(2, 2):  # pragma: no cover - a proof
         raise AssertionError("G11 = G22 = 0 does not give M = -I")
     sym = symbols()
-    d, up, _ = fourier_recurrence()
+    d, up = forms["d"], forms["up"]
     u = sp.Function("u")
-    sp.Symbol("L")
-    zeros = sorted(set(th.zeros), key=float)
+    zeros = list(forms["zeros"])
     a_, c_ = _decimal(rc.m_lo), _decimal(rc.m_hi)
     jump_closing = sp.Rational(3, 5)
     rows = []
@@ -358,7 +359,7 @@ def _closings_text(widths, rc, m_) -> list:
                     r"$c = (T/T_0)^2$ дают уравнение Айнса ",
                 )
             ),
-            m_(sp.Eq(sp.Function("L")(u(sym["theta"])), ince_form())),
+            m_(sp.Eq(sp.Function("L")(u(sym["theta"])), forms["ince"])),
             raw(
                 say(
                     r". On $e^{ik\theta}$ it gives $e^{ik\theta}$ times ",
@@ -380,7 +381,7 @@ def _closings_text(widths, rc, m_) -> list:
                     r" $= -u_-$: гармоника связана с соседними множителем ",
                 )
             ),
-            m_(th.coupling),
+            m_(forms["coupling"]),
             raw(
                 say(
                     r", which vanishes only at $k = "
