@@ -273,4 +273,11 @@ def test_table_path_agrees_with_the_bracketed_path(damping):
             if key == "lo" and parity == 1:  # (order 1 is the first odd row)
                 both[0] &= np.pi / 2 + want[0] >= ORDER1_X_DAMPED
             scale = np.maximum(np.abs(orders[rows][:, None] * np.pi / 2 + want), 1.0)
-            assert np.all(np.abs(got - want)[both] <= 1e-15 * scale[both])
+            # an edge the table path flags (its rounding over its slope above DOUBT: next to a
+            # threshold, a near-double root) is escalated by the grid (proved or certified);
+            # there both paths are only within that rounding of the root
+            flagged = fast[f"{key}_doubt"][rows]
+            clear = both & ~flagged
+            assert np.all(np.abs(got - want)[clear] <= 1e-15 * scale[clear])
+            near = both & flagged
+            assert np.all(np.abs(got - want)[near] <= ERROR_BOUND * scale[near])

@@ -1054,12 +1054,12 @@ def _edge_tables(system, orders, friction) -> list:
     """For each order ``n`` of ``orders``: the friction edges and the maximiser of ``D`` at the
     depths of :func:`_start_tables` (``m = 1 - rho^2``), rows ``(lower, upper, top)`` (``theta``),
     shape ``(3, K)``, read-only: ``lower``, ``upper`` NaN where the interval does not exist,
-    ``top`` the maximiser where it does not (NaN where it does, where the maximiser over the
-    undamped interval is one of its ends, and at every node where the normal form does not
-    apply).  Starting values only (:func:`_table_friction` proves every
-    point it takes from them and hands the rest to the bracketed path), computed once per
-    ``(system, n, Q, damping)`` by :func:`_damped_normal` at the nodes: they cannot change a
-    result."""
+    ``top`` the maximiser of ``D`` (NaN where it is one of the ends of the undamped interval,
+    and at every node where the normal form does not apply; next to a threshold the nodes where
+    the interval exists give the maximiser a start where the edges have none).  Starting values
+    only (:func:`_table_friction` proves every point it takes from them and hands the rest to the
+    bracketed path), computed once per ``(system, n, Q, damping)`` by :func:`_damped_normal` at
+    the nodes: they cannot change a result."""
     key = lambda n: (system, n, friction, "edges")  # noqa: E731
     found = {n: _TABLES.get(key(n)) for n in set(orders)}
     missing = sorted(n for n, tab in found.items() if tab is None)
@@ -1087,7 +1087,7 @@ def _edge_tables(system, orders, friction) -> list:
                 inner = (top > res["a"][k]) & (top < res["b"][k])
                 tabs[n][0, ok] = np.where(both, lo, np.nan)
                 tabs[n][1, ok] = np.where(both, hi, np.nan)
-                tabs[n][2, ok] = np.where(both | ~inner, np.nan, top)
+                tabs[n][2, ok] = np.where(inner, top, np.nan)
         if len(_TABLES) + len(missing) > _TABLES_MAX:
             _TABLES.clear()
         for n in missing:
@@ -1095,6 +1095,15 @@ def _edge_tables(system, orders, friction) -> list:
             tab.flags.writeable = False
             found[n] = _TABLES[key(n)] = tab
     return [found[n] for n in orders]
+
+
+#: the table path of the grid with friction takes the depths with ``1 - beta`` from here up
+#: (below it the standard form loses more than six digits to ``1 - beta``)
+TABLE_NEAR_MIN = 1e-6
+#: next to ``m = 1`` (``1 - beta <`` :data:`NEAR_ONE`) the table path takes an interval only where
+#: its edges lie this far apart (relative): the standard form there loses ``log10(1/(1 - beta))``
+#: digits, and ``D`` between such edges is far above that loss, so the interval exists
+_NEAR_GAP = 1e-3
 
 
 def _table_friction(orders, P, rho, system, friction, cols) -> dict:
@@ -1135,6 +1144,7 @@ def _table_friction(orders, P, rho, system, friction, cols) -> dict:
     _start_values(stack, rho[cols], start, np.empty_like(start))
     start = start.reshape(no, 3, cols.size)
     params = (P.r2[cols], P.u[cols], P.beta[cols], P.g[cols])
+    near = np.asarray(P.bm)[cols] < NEAR_ONE
     with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
         for parity in (1, 0):
             rows = np.nonzero(orders % 2 == parity)[0]
@@ -1156,26 +1166,123 @@ def _table_friction(orders, P, rho, system, friction, cols) -> dict:
                 k = ri.size
                 lo, hi = root[:k], root[k:]
                 ok = good[:k] & good[k:] & (lo < hi)
-                ok &= hi - lo > 1e-8 * np.maximum(np.abs(sub[0][:k] + hi), 1.0)
+                at = np.maximum(np.abs(sub[0][:k] + hi), 1.0)
+                ok &= hi - lo > np.where(near[ci], _NEAR_GAP, 1e-8) * at
                 r, q = rows[ri[ok]], cols[ci[ok]]
                 out["lo"][r, q], out["hi"][r, q] = lo[ok], hi[ok]
                 out["lo_doubt"][r, q], out["hi_doubt"][r, q] = doubt[:k][ok], doubt[k:][ok]
                 out["top"][r, q] = 0.5 * (lo[ok] + hi[ok])  # (D > 0 between the edges)
                 out["dtop"][r, q] = np.inf
                 out["done"][r, q] = True
-            ri, ci = np.nonzero(np.isfinite(top0) & ~pair)
+            ri, ci = np.nonzero(np.isfinite(top0) & ~out["done"][rows][:, cols] & ~near)
             if ri.size:
                 sub = (c[ri, ci],) + tuple(v[ci] for v in params)
-                top, dtop, ok = _table_top(ev, form, sub, top0[ri, ci])
+                top, dtop, ok, high, curv = _table_top(ev, form, sub, top0[ri, ci])
                 r, q = rows[ri[ok]], cols[ci[ok]]
                 out["top"][r, q], out["dtop"][r, q] = top[ok], dtop[ok]
                 out["done"][r, q] = True
+                if high.any():  # an interval whose edges the tables did not give: split there
+                    ri, ci, hsub = ri[high], ci[high], tuple(v[high] for v in sub)
+                    lo, hi, lo_d, hi_d, ok = _table_split(
+                        ev, hsub, top[high], dtop[high], curv[high]
+                    )
+                    r, q = rows[ri[ok]], cols[ci[ok]]
+                    out["lo"][r, q], out["hi"][r, q] = lo[ok], hi[ok]
+                    out["lo_doubt"][r, q], out["hi_doubt"][r, q] = lo_d[ok], hi_d[ok]
+                    out["top"][r, q] = top[high][ok]
+                    out["dtop"][r, q] = np.inf
+                    out["done"][r, q] = True
+            # the entries left (mostly a maximiser at an end of the undamped interval, at small
+            # depths): no interval wherever the bound of :func:`_no_interval` proves it
+            ri, ci = np.nonzero(~out["done"][rows][:, cols] & ~near)
+            if ri.size:
+                sub = (c[ri, ci],) + tuple(v[ci] for v in params)
+                ok = _no_interval(form, *sub)
+                out["done"][rows[ri[ok]], cols[ci[ok]]] = True
     return out
 
 
-def _table_edges(ev, args, x, sign):
-    """Zeros of ``D`` from ``x`` near them (:func:`_table_friction`): at most
-    :data:`_TABLE_STEPS` steps of :func:`_step`, each point dropped once the estimate of order 4
+#: :func:`_no_interval` bounds ``D`` on this many pieces of the range where it can be positive,
+#: where one piece is not enough (next to a threshold)
+_NO_INTERVAL_PIECES = 32
+
+
+def _no_interval(parity, c, r2, u, beta, g):
+    """Where ``D < 0`` on the whole window, proved by a bound (no interval there; the entry's
+    edges NaN, its maximum not needed).  The normal form is ``D = r2 f(beta x)^2 - u sinh(g
+    x)^2 - sin(theta)^2``, ``x = c + theta``, ``f`` a sine or cosine
+    (:class:`verify.params.NormalParams`).  Where ``D >= 0``, ``sin(theta)^2 <= r2 f(beta x)^2``,
+    so ``|theta| <= s_0 = asin(sqrt(r2))`` in the window.  On ``[-s, s]``, ``x >= c - s`` and ``D
+    <= P - u sinh(g (c - s))^2`` (``sinh^2`` grows with ``x > 0``), ``P`` the largest ``r2 f(beta
+    x)^2`` there (:func:`_f2_peak`): an entry is taken where that is negative with a margin (the
+    sinh term above ``2 P``, far above the rounding of either side).  Elsewhere ``|theta| <= s_1
+    = asin(sqrt(P))`` where ``D >= 0``, and ``[-s_1, s_1]`` is cut into
+    :data:`_NO_INTERVAL_PIECES` pieces, on each of which ``D`` is at most ``P_i - u sinh(g
+    x_i)^2 - sin(t_i)^2`` (``P_i`` as ``P``, ``x_i`` the piece's left end, ``t_i`` its ``theta``
+    nearest 0): an entry is taken where every piece's bound is below minus ``1e-10`` times the
+    sizes of its terms.  The terms are the indicator's own (the compiled form at ``theta = 0``
+    with ``u = 0`` or ``r2 = 0``, and with ``r2 = u = 0`` for ``sin^2``); ``s_0``, ``s_1`` are
+    rounded up (by more than the rounding of ``c -+ s``)."""
+    form = indicator(parity).compiled("numpy", 0)
+    with np.errstate(invalid="ignore", over="ignore", divide="ignore"):
+        pad = 1e-15 * c
+        s = np.arcsin(np.sqrt(np.clip(r2, 0.0, 1.0))) * (1.0 + 1e-12) + pad
+        peak, damp = _f2_peak(form, c - s, c + s, r2, u, beta, g)
+        taken = (c - s > 0) & (r2 >= 0) & (2.0 * peak < damp)
+        rest = np.nonzero(~taken & (peak < r2) & (r2 >= 0))[0]
+        if rest.size == 0:
+            return taken
+        N = _NO_INTERVAL_PIECES
+        k = rest.size
+        cc, rr, uu, bb, gg = (v[rest] for v in (c, r2, u, beta, g))
+        s = np.arcsin(np.sqrt(np.clip(peak[rest], 0.0, 1.0))) * (1.0 + 1e-12) + pad[rest]
+        e = s[:, None] * (np.arange(N + 1) * (2.0 / N) - 1.0)  # the pieces' ends in theta
+        e[:, 0], e[:, N] = -s, s
+        X = cc[:, None] + e  # ... in x (each end shared by its two pieces)
+        rep = tuple(np.repeat(v, N) for v in (rr, uu, bb, gg))
+        P, S = _f2_peak(form, X[:, :-1].ravel(), X[:, 1:].ravel(), *rep)
+        a, b = e[:, :-1].ravel(), e[:, 1:].ravel()
+        near = np.where(a * b <= 0, 0.0, np.minimum(np.abs(a), np.abs(b)))
+        zero = np.zeros(near.size)
+        sin2 = -np.asarray(form(near, np.repeat(cc, N), zero, zero, rep[2], rep[3]), float)
+        bound = P - S - sin2
+        ok = (X[:, :-1].ravel() > 0) & (bound < -1e-10 * (P + S + sin2 + rep[0]))
+        taken[rest] = ok.reshape(k, N).all(axis=1)
+    return taken
+
+
+def _f2_peak(form, x1, x2, r2, u, beta, g):
+    """``(P, S)``: an upper bound ``P`` of ``r2 f(beta x)^2`` on ``[x1, x2]`` and ``S = u sinh(g
+    x1)^2`` (:func:`_no_interval`; ``form`` the compiled indicator, ``r2 f(beta x)^2 - u sinh(g
+    x)^2`` at ``theta = 0``, taken with ``u = 0`` or ``r2 = 0``): ``f^2`` is monotone between the
+    multiples of ``pi/2`` of ``beta x``, so its largest value is at an end or at the one multiple
+    inside (``r2`` where there are more); the multiples are counted on the range widened by a
+    relative 1e-12 and the bound raised by what ``f^2`` can change over that."""
+    k = x1.size
+    zero = np.zeros(k)
+    q = 2.0 / math.pi
+    y1, y2 = beta * x1 * q, beta * x2 * q  # the ends in units of pi/2
+    j1, j2 = np.floor(y1 * (1 - 1e-12)), np.floor(y2 * (1 + 1e-12))
+    mid = j2 / (q * beta)  # the multiple of pi/2 inside (where there is one)
+    cat = np.concatenate
+    got = form(
+        np.zeros(4 * k),
+        cat([x1, x2, mid, x1]),
+        cat([r2, r2, r2, zero]),
+        cat([zero, zero, zero, u]),
+        cat([beta] * 4),
+        cat([g] * 4),
+    )
+    got = np.asarray(got, float)
+    ends = np.maximum(got[:k], got[k : 2 * k])
+    ends = np.where(j2 == j1, ends, np.maximum(ends, got[2 * k : 3 * k]))
+    peak = np.where((j2 - j1 <= 1) & (beta > 0), ends + 1e-9 * r2 * (1 + y2), r2)
+    return peak, -got[3 * k :]
+
+
+def _table_edges(ev, args, x, sign, steps: int = _TABLE_STEPS):
+    """Zeros of ``D`` from ``x`` near them (:func:`_table_friction`): at most ``steps`` (default
+    :data:`_TABLE_STEPS`) steps of :func:`_step`, each point dropped once the estimate of order 4
     of its error is below :data:`_EDGE_RTOL` times ``max(c + theta, 1)`` (its step below
     :data:`_EDGE_STEP`): ``(roots, doubt, good)`` as :func:`_edges` (``good``: converged inside
     the window, with ``sign D`` increasing through the zero)."""
@@ -1185,7 +1292,7 @@ def _table_edges(ev, args, x, sign):
     idx = np.arange(x.size)
     sub, sg = args, sign
     sc = _EDGE_RTOL * np.maximum(args[0] + x, 1.0)
-    for _ in range(_TABLE_STEPS):
+    for _ in range(steps):
         D, D1, D2, D3, D4, T0, T1 = ev(x, *sub)
         s, err = _step(D, D1, D2, D3, D4)
         done = (err <= sc) & (np.abs(s) <= _EDGE_STEP)
@@ -1211,11 +1318,15 @@ def _table_top(ev, parity, args, x):
     """The maximiser of ``D`` from ``x`` near it (:func:`_table_friction`): at most
     :data:`_TABLE_STEPS` Halley steps on ``D'``, a point dropped once its step is below
     :data:`_TOP_STEP` (``D`` there from its Taylor polynomial, as :func:`_maximiser`):
-    ``(top, D(top), ok)``, ``ok`` where that is a maximum (``D'' < 0``) inside the window, ``D``
-    below minus its rounding bound and the undamped indicator above ``1e-12``."""
+    ``(top, D(top), ok, high, D''(top))``, ``ok`` where that is a maximum (``D'' < 0``) inside the
+    window, ``D`` below minus its rounding bound and the undamped indicator above ``1e-12``;
+    ``high`` where it is a maximum inside the window with ``D`` above its rounding bound (the
+    interval exists: :func:`_table_split` finds its edges)."""
     top = np.full(x.size, np.nan)
     dtop = np.full(x.size, np.nan)
+    curv = np.full(x.size, np.nan)
     ok = np.zeros(x.size, bool)
+    high = np.zeros(x.size, bool)
     idx = np.arange(x.size)
     sub = args
     for _ in range(_TABLE_STEPS):
@@ -1231,7 +1342,10 @@ def _table_top(ev, parity, args, x):
             at = np.abs(sub[0][j] + x[j])
             noise = NOISE_ULPS * 2.0**-53 * (np.abs(T0[j]) + at * np.abs(T1[j]))
             top[idx[j]], dtop[idx[j]] = t, d
-            ok[idx[j]] = (D2[j] < 0) & (d < -noise) & (np.abs(t) < _HALF_PI)
+            curv[idx[j]] = D2[j] - sj * D3[j]
+            inner = (D2[j] < 0) & (np.abs(t) < _HALF_PI)
+            ok[idx[j]] = inner & (d < -noise)
+            high[idx[j]] = inner & (d > noise)
         keep = ~done & np.isfinite(s)
         if not keep.any():
             break
@@ -1243,7 +1357,31 @@ def _table_top(ev, parity, args, x):
         zero = np.zeros(sel.size)
         d0 = indicator(parity).compiled("numpy", 0)(top[sel], c, r2, zero, beta, zero)
         ok[sel] = np.asarray(d0, float) > 1e-12
-    return top, dtop, ok
+    return top, dtop, ok, high, curv
+
+
+#: the steps :func:`_table_split` takes at most from its starts (next to a threshold the edges are
+#: a near-double root; each step runs on the few points still moving)
+_SPLIT_STEPS = 6
+
+
+def _table_split(ev, args, top, dtop, curv):
+    """Both edges of the entries whose maximum of ``D`` is above its rounding bound at ``top``
+    (:func:`_table_top`: the start tables had no edges at all four nodes, next to a threshold):
+    from ``top -+ sqrt(2 D(top)/|D''(top)|)`` (the parabola through the maximum), at most
+    :data:`_SPLIT_STEPS` steps of :func:`_step` (:func:`_table_edges`): ``(lower, upper, lower
+    doubt, upper doubt, good)``, ``good`` where both converged inside the window with the edges'
+    slopes on either side of ``top`` (as the pair path of :func:`_table_friction` takes them)."""
+    k = top.size
+    half = np.sqrt(2.0 * dtop / -curv)
+    x0 = np.concatenate([top - half, top + half])
+    sub = tuple(np.concatenate([v, v]) for v in args)
+    sign = np.concatenate([np.ones(k), -np.ones(k)])
+    root, doubt, good = _table_edges(ev, sub, x0, sign, steps=_SPLIT_STEPS)
+    lo, hi = root[:k], root[k:]
+    ok = good[:k] & good[k:] & (lo < top) & (top < hi)
+    ok &= hi - lo > 1e-8 * np.maximum(np.abs(args[0] + hi), 1.0)
+    return lo, hi, doubt[:k], doubt[k:], ok
 
 
 # ---------------------------------------------------------------------------------------------
@@ -1723,7 +1861,7 @@ def _fill_normal(
         # the edges from their own start tables where that proves them (the depths away from
         # m = 1); the bracketed path for the rest, its brackets at those depths alone
         sysv = system or _paper_system()
-        far = np.nonzero(P.bm >= NEAR_ONE)[0]
+        far = np.nonzero(P.bm >= TABLE_NEAR_MIN)[0]
         fast = _table_friction(orders_arr, P, np.sqrt(om), sysv, friction, far)
         need = np.nonzero(~fast["done"].all(axis=0))[0]
         Pn = NormalParams(*(getattr(P, f.name)[need] for f in fields(NormalParams)))
@@ -1731,45 +1869,58 @@ def _fill_normal(
             t1, t2 = _damped_brackets(orders_arr, Pn, om[need], sysv, friction)
     else:
         t1, t2 = normal_edges(orders_arr[:, None], P)  # the undamped roots of all orders at once
+    no = len(orders)
+    if fast is None:
+        res = {}
+    else:
+        res = fast
     for parity in (1, 0):
         rows = np.nonzero(orders_arr % 2 == parity)[0]
         if rows.size == 0:
             continue
-        n = orders_arr[rows][:, None]
         if fast is None:
-            res = _damped_normal(n, P, edges=(t1[rows], t2[rows]), split=True)
+            got = _damped_normal(
+                orders_arr[rows][:, None], P, edges=(t1[rows], t2[rows]), split=True
+            )
+            for k in _RESULT_KEYS:
+                if k not in res:
+                    res[k] = np.empty((no, ms.size), got[k].dtype)
+                res[k][rows] = got[k]
         else:
-            res = {k: fast[k][rows] for k in _RESULT_KEYS}
             ri, ci = np.nonzero(~fast["done"][rows][:, need])
             if ri.size:  # the entries left, one by one (orders and depths flattened)
                 Ps = NormalParams(*(getattr(Pn, f.name)[ci] for f in fields(NormalParams)))
                 ends = (t1[rows][ri, ci], t2[rows][ri, ci])
                 got = _damped_normal(orders_arr[rows][ri], Ps, ends, split=True, pair=False)
                 for k in _RESULT_KEYS:
-                    res[k][ri, need[ci]] = got[k]
-        near = near_one_forms()[2]
-        lo = _polish_near_one(res["lo"], orders_arr[rows], P, near)
-        hi = _polish_near_one(res["hi"], orders_arr[rows], P, near)
-        base = n / 2.0
-        out[rows, 0, :] = (base + lo / math.pi) / P.w
-        out[rows, 1, :] = (base + hi / math.pi) / P.w
-        top_doubt, lo_doubt, hi_doubt = _normal_doubt(n, P, res, lo, hi)
-        for k, i in enumerate(rows):
-            if orders_arr[i] != 1:
-                continue
-            near = (_HALF_PI + lo[k] < ORDER1_X_DAMPED) | (P.bm < NEAR_ONE)
-            cols = np.nonzero(np.isfinite(lo[k]) & near)[0]
-            if cols.size:
-                x, unsure = _order1_lower(
-                    P,
-                    cols,
-                    _HALF_PI + res["top"][k, cols],
-                    x_theta=_HALF_PI + lo[k, cols],
-                    doubt=True,
-                )
-                out[i, 0, cols] = x / (math.pi * P.w[cols])
-                lo_doubt[k, cols] = unsure
-        doubt[rows] = top_doubt | lo_doubt | hi_doubt
+                    res[k][rows[ri], need[ci]] = got[k]
+    # every order and both edges at once from here
+    n = orders_arr[:, None]
+    both = _polish_near_one(
+        np.concatenate([res["lo"], res["hi"]]),
+        np.concatenate([orders_arr] * 2),
+        P,
+        near_one_forms()[2],
+    )
+    lo, hi = both[:no], both[no:]
+    base = n / 2.0
+    out[:, 0, :] = (base + lo / math.pi) / P.w
+    out[:, 1, :] = (base + hi / math.pi) / P.w
+    top_doubt, lo_doubt, hi_doubt = _normal_doubt(n, P, res, lo, hi)
+    for i in np.nonzero(orders_arr == 1)[0]:
+        near = (_HALF_PI + lo[i] < ORDER1_X_DAMPED) | (P.bm < NEAR_ONE)
+        cols = np.nonzero(np.isfinite(lo[i]) & near)[0]
+        if cols.size:
+            x, unsure = _order1_lower(
+                P,
+                cols,
+                _HALF_PI + res["top"][i, cols],
+                x_theta=_HALF_PI + lo[i, cols],
+                doubt=True,
+            )
+            out[i, 0, cols] = x / (math.pi * P.w[cols])
+            lo_doubt[i, cols] = unsure
+    doubt[:] = top_doubt | lo_doubt | hi_doubt
     return doubt
 
 
@@ -1883,13 +2034,14 @@ def _normal_doubt(n, P, res, lo, hi):
     shape = np.broadcast_shapes(lo[:, cols].shape, *(np.shape(v) for v in params))
     args = tuple(_full(v, shape) for v in params)
     nearf = near_one_forms()[2]
-    with np.errstate(invalid="ignore", over="ignore"):
-        for bad, theta in zip(edges, (lo, hi), strict=True):
-            t = _full(theta[:, cols], shape)
-            sel = np.isfinite(t)
-            part = np.zeros(shape, bool)
-            if sel.any():
-                sub = tuple(a[sel] for a in args)
-                part[sel] = _root_doubt(nearf, t[sel], sub, sub[0] + t[sel])
-            bad[:, cols] = part
+    with np.errstate(invalid="ignore", over="ignore"):  # both edges in one call
+        t = np.concatenate([_full(lo[:, cols], shape), _full(hi[:, cols], shape)])
+        args = tuple(np.concatenate([a, a]) for a in args)
+        sel = np.isfinite(t)
+        part = np.zeros(t.shape, bool)
+        if sel.any():
+            sub = tuple(a[sel] for a in args)
+            part[sel] = _root_doubt(nearf, t[sel], sub, sub[0] + t[sel])
+        k = shape[0]
+        edges[0][:, cols], edges[1][:, cols] = part[:k], part[k:]
     return undecided, edges[0], edges[1]
