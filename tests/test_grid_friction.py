@@ -231,6 +231,96 @@ def test_one_call_gives_the_fourth_derivative(parity):
 
 
 @pytest.mark.parametrize("damping", ["exact", "paper"])
+def test_table_path_next_to_one_matches_certified(damping):
+    """The table path of a large grid takes entries next to ``m = 1`` too (``1 - beta`` down to
+    :data:`verify.grid.TABLE_NEAR_MIN`, an interval only where its edges lie a relative
+    ``_NEAR_GAP`` apart); there the edges are polished on the forms for ``m -> 1``.  Reference:
+    the certified route at 20 digits (every interval of orders 1-6) on depths log-spaced in ``1 -
+    m`` from 1e-7 to 0.05, in a grid of 600 more depths."""
+    near = 1 - np.logspace(-7, np.log10(0.05), 12)
+    bad = _bad_points(ORDERS, near, 7, damping, large=True)
+    assert not bad, f"{len(bad)} bad points:\n" + "\n".join(bad)
+
+
+def _no_interval_samples(seed, count):
+    """Random ``(order, depth, Q, damping)`` with the normal form's parameters (both halves
+    underdamped), Q from 0.8 to 100 (log-uniform), depths uniform and next to the thresholds."""
+    rng = np.random.default_rng(seed)
+    out = []
+    while len(out) < count:
+        n = int(rng.integers(1, 9))
+        Q = float(np.exp(rng.uniform(np.log(0.8), np.log(100.0))))
+        damping = ["exact", "paper"][int(rng.integers(0, 2))]
+        m = float(rng.uniform(1e-3, 0.97))
+        if damping == "exact" and 4 * Q * Q - 1 - m <= 1e-6:
+            continue
+        out.append((n, round(m, 6), round(Q, 4), damping))
+    return out
+
+
+def test_no_interval_bound_agrees_with_certified():
+    """:func:`verify.grid._no_interval` (the bound that proves ``D < 0`` on the whole window, which
+    takes an entry as "no interval" without solving anything) against the certified route: every
+    entry it takes has no interval there (``boundary(...).exists`` is False), on 300 random
+    entries (orders 1-8, Q from 0.8 to 100, both damping models) and on the depths next to every
+    threshold of orders 1-6 with Q = 7 (a relative 1e-3 ... 1e-9 either side, where the maximum of
+    ``D`` is a near-zero).  It must take some of each (the test is not vacuous)."""
+    from verify.derived import backend
+    from verify.grid import _no_interval, _parity
+    from verify.params import normal_params
+
+    samples = _no_interval_samples(99, 300)
+    for damping in ("exact", "paper"):
+        for t in THRESHOLDS[damping]:
+            for k in (3, 5, 7, 9):
+                for sign in (-1, 1):
+                    for order in ORDERS:
+                        samples.append((order, t * (1 + sign * 10.0**-k), 7.0, damping))
+    taken = 0
+    for n, m, Q, damping in samples:
+        P = normal_params(np.array([m]), Q, damping, backend("numpy"), om=np.array([1 - m]))
+        args = [np.atleast_1d(np.asarray(getattr(P, k), float)) for k in ("r2", "u", "beta", "g")]
+        c = np.array([n * np.pi / 2])
+        if not _no_interval(int(_parity(n)), c, *args)[0]:
+            continue
+        taken += 1
+        b = boundary(n, Fraction(repr(m)), Q=Fraction(repr(Q)), damping=damping, digits=20)
+        assert not b.exists, f"order {n}, m = {m!r}, Q = {Q}, {damping}: the interval exists"
+    assert taken >= 50
+
+
+@pytest.mark.parametrize("damping", ["exact", "paper"])
+def test_split_at_the_maximiser_next_to_thresholds(damping, monkeypatch):
+    """Entries whose four nearest table nodes do not all have the interval (next to a threshold)
+    are split at the maximiser of ``D`` (:func:`verify.grid._table_split`): the grid's edges there
+    against the certified route, on depths spaced 2e-4 within 3e-3 of every threshold of orders
+    1-6 (Q = 7) in a large grid; the split must have taken some of them."""
+    took = []
+    split = grid_module._table_split
+
+    def spy(*args):
+        got = split(*args)
+        took.append(int(got[4].sum()))
+        return got
+
+    monkeypatch.setattr(grid_module, "_table_split", spy)
+    ms = np.unique(np.concatenate([t + np.arange(-15, 16) * 2e-4 for t in THRESHOLDS[damping]]))
+    grid = _grid(ORDERS, ms, 7, damping, True)
+    assert sum(took) >= 20
+    bad = []
+    for i, n in enumerate(ORDERS):
+        for j, m in enumerate(ms):
+            if not np.isfinite(grid[i, 0, j]):
+                continue
+            b = _certified(n, float(m), 7, damping)
+            for k, want in ((0, b.lower), (1, b.upper)):
+                rel = abs(grid[i, k, j] - float(want)) / abs(float(want))
+                if not rel <= ERROR_BOUND:
+                    bad.append(f"order {n}, m = {m!r}, edge {k}: rel {rel:.2e}")
+    assert not bad, "\n".join(bad)
+
+
+@pytest.mark.parametrize("damping", ["exact", "paper"])
 def test_table_path_agrees_with_the_bracketed_path(damping):
     """The entries the grid with friction takes from the start tables of its edges
     (:func:`verify.grid._table_friction`: most of a grid of 1000 depths) against the bracketed
