@@ -52,7 +52,8 @@ Method (all orders and depths at once):
 * with friction every entry carries an error estimate (the rounding of the indicator over its
   slope at the edge); next to a threshold or a closing gap, where the edges are a near-double
   root, the few entries that cannot meet the bound are proved in ball arithmetic
-  (:func:`_confirmed`: the sign of the indicator at the exact depth on both sides of each edge)
+  (:func:`_confirm`: the sign of the indicator at the exact depth on both sides of each edge,
+  and the secant root between)
   and go to the certified route only where that fails.
 """
 
@@ -1520,7 +1521,7 @@ def boundary_grid(orders, m, *, Q=None, damping="exact", system="pendulum", duty
     The double path serves ``1 - m >= 2**-53`` (every double depth) and ``m >= 2**-1022``; exact
     depths outside, and the points next to a threshold or a closing gap where the double
     computation cannot decide the edges to that bound (a double root of the indicator), are
-    proved in ball arithmetic (:func:`_confirmed`) or, where that fails, computed by the
+    proved in ball arithmetic (:func:`_confirm`) or, where that fails, computed by the
     certified route (:func:`verify.solve.boundary`).  ``tests/test_grid.py`` and
     ``tests/test_grid_hard.py`` check the claim against the certified edges on log-spaced samples
     (``1 - m`` down to ``2**-53``, ``m`` down to 1e-300, orders 1-6 and up to 100).  The order-1
@@ -1576,13 +1577,11 @@ def boundary_grid(orders, m, *, Q=None, damping="exact", system="pendulum", duty
             out[:, :, cols] = part
         doubt[:, ~served] = True
     for i, j in zip(*np.nonzero(doubt), strict=True):
-        edges = out[i, :, j]
-        if (
-            Qx is not None
-            and served[j]
-            and _confirmed(orders[i], dep.exact(j), Qx, damping, sysv, edges)
-        ):
-            continue
+        if Qx is not None and served[j]:
+            got = _confirm(orders[i], dep.exact(j), Qx, damping, sysv, out[i, :, j])
+            if got is not None:
+                out[i, :, j] = got
+                continue
         out[i, :, j] = _certified_point(orders[i], dep.exact(j), Qx, damping, sysv)
     return out[..., 0] if scalar else out
 
@@ -1601,50 +1600,66 @@ def _blocks(cols, size: int):
         yield cols[start : start + size]
 
 
-#: working precision (bits) of :func:`_confirmed`
+#: working precision (bits) of :func:`_confirm`
 CONFIRM_BITS = 128
-#: :func:`_confirmed` proves each edge within this relative distance of the exact one (a proof,
+#: :func:`_confirm` proves each edge within this relative distance of the exact one (a proof,
 #: not an estimate: it needs no margin below the bound other than for the checks' own rounding,
 #: which ball arithmetic includes)
 CONFIRM_REL = 0.8 * ERROR_BOUND
 
 
 def _confirmed(n: int, m: Fraction, Q, damping: str, system, edges) -> bool:
-    """Whether the double edges ``edges = (lower, upper)`` (``T/T0``) of a friction entry that the
-    error estimate could not bound are within a relative :data:`CONFIRM_REL` of the exact edges,
-    proved in ball arithmetic: the indicator ``D`` of the normal form, with the parameters
-    enclosed at the exact depth, is negative at ``lower (1 - d)`` and positive at ``lower
-    (1 + d)``, and positive at ``upper (1 - d)`` and negative at ``upper (1 + d)`` (``d =``
-    :data:`CONFIRM_REL`, ``theta = pi (T w - n/2)``).  So each edge has a zero of ``D`` within
-    the bound, and the interval exists; that these zeros are the edges is the structure the
-    double path relies on everywhere (one zero of ``D`` each side of its maximiser, inside the
-    undamped interval).
-    ``False`` (the entry then goes to the certified route) where a sign is not decided, the
+    """Whether :func:`_confirm` proves the double edges ``edges = (lower, upper)`` (``T/T0``) of a
+    friction entry within a relative :data:`CONFIRM_REL` of the exact edges."""
+    return _confirm(n, m, Q, damping, system, edges) is not None
+
+
+def _confirm(n: int, m: Fraction, Q, damping: str, system, edges):
+    """The edges ``(lower, upper)`` (``T/T0``, doubles) of a friction entry whose double edges
+    ``edges`` the error estimate could not bound, where a proof in ball arithmetic puts them
+    within a relative :data:`CONFIRM_REL` of the exact edges; else ``None``.  The proof: the
+    indicator ``D`` of the normal form, with the parameters enclosed at the exact depth, is
+    negative at ``lower (1 - d)`` and positive at ``lower (1 + d)``, and positive at ``upper (1 -
+    d)`` and negative at ``upper (1 + d)`` (``d =`` :data:`CONFIRM_REL`, ``theta = pi (T w -
+    n/2)``).  So each edge has a zero of ``D`` within the bound, and the interval exists; that
+    these zeros are the edges is the structure the double path relies on everywhere (one zero of
+    ``D`` each side of its maximiser, inside the undamped interval).  Each edge returned is the
+    secant root of ``D`` through those two points (at the working precision, rounded once; ``D``
+    is smooth and its zero simple there, so it lands within about an ulp of the exact edge where
+    the double edge, set by the rounding of ``D`` near a double root, may be off by up to the
+    bound), kept inside the proved bracket.
+    ``None`` (the entry then goes to the certified route) where a sign is not decided, the
     entry is NaN, or the normal form does not apply (a half critically or over-damped)."""
     from flint import arb, ctx
 
     lo, hi = (float(e) for e in edges)
     if not (math.isfinite(lo) and math.isfinite(hi) and lo < hi):
-        return False
+        return None
     Qf = Fraction(Q) if not isinstance(Q, Fraction) else Q
     m = Fraction(m)
     a, b, p, q = Qf.numerator, Qf.denominator, m.numerator, m.denominator
     if damping == "exact" and not (4 * a * a - b * b) * q > p * b * b:  # 4 Q^2 - 1 - m > 0
-        return False
+        return None
     form = indicator(int(_parity(n))).compiled("arb", 0)
+    out = []
     with ctx.workprec(CONFIRM_BITS):
         P = normal_params(m, Qf, damping, backend("arb"), system)
         half_pi = arb.pi() / 2
         c = n * half_pi
         d = arb(CONFIRM_REL)  # the double, exactly
         for T, first in ((lo, -1), (hi, 1)):
+            ends = []
             for side in (-1, 1):
-                theta = 2 * half_pi * (arb(T) * (1 + side * d) * P.w - arb(n) / 2)
-                v = form(theta, c, P.r2, P.u, P.beta, P.g)
+                Tx = arb(T) * (1 + side * d)
+                v = form(2 * half_pi * (Tx * P.w - arb(n) / 2), c, P.r2, P.u, P.beta, P.g)
                 want = first * side  # lower: -, +; upper: +, -
                 if not (v < 0 if want > 0 else v > 0):
-                    return False
-    return True
+                    return None
+                ends.append((Tx.mid(), v.mid()))
+            (t1, v1), (t2, v2) = ends  # D is close to linear in T across the bracket
+            root = float(t1 - v1 * (t2 - t1) / (v2 - v1))
+            out.append(root if float(t1) <= root <= float(t2) else T)
+    return out[0], out[1]
 
 
 def _certified_point(n: int, m: Fraction, Q, damping: str, system=None) -> tuple[float, float]:
