@@ -298,8 +298,8 @@ def test_split_at_the_maximiser_next_to_thresholds(damping, monkeypatch):
     took = []
     split = grid_module._table_split
 
-    def spy(*args):
-        got = split(*args)
+    def spy(*args, **kw):
+        got = split(*args, **kw)
         took.append(int(got[4].sum()))
         return got
 

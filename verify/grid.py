@@ -1157,40 +1157,57 @@ def _table_friction(orders, P, rho, system, friction, cols) -> dict:
             lo0, hi0, top0 = start[rows, 0], start[rows, 1], start[rows, 2]
             pair = np.isfinite(lo0) & np.isfinite(hi0) & (lo0 < hi0)
             ri, ci = np.nonzero(pair)
-            if ri.size:
-                x0 = np.concatenate([lo0[ri, ci], hi0[ri, ci]])
-                sub = (np.concatenate([c[ri, ci]] * 2),) + tuple(
-                    np.concatenate([v[ci]] * 2) for v in params
+            ti, tci = np.nonzero(np.isfinite(top0) & ~pair & ~near)
+            k, kt = ri.size, ti.size
+            if k + kt:
+                # one evaluation for the first step of both edges of the entries whose four nodes
+                # have the interval and the maximiser of the others
+                x0 = np.concatenate([lo0[ri, ci], hi0[ri, ci], top0[ti, tci]])
+                cp, ct = c[ri, ci], c[ti, tci]
+                sub = (np.concatenate([cp, cp, ct]),) + tuple(
+                    np.concatenate([v[ci], v[ci], v[tci]]) for v in params
                 )
-                sign = np.concatenate([np.ones(ri.size), -np.ones(ri.size)])
-                root, doubt, good = _table_edges(ev, sub, x0, sign)
-                k = ri.size
-                lo, hi = root[:k], root[k:]
-                ok = good[:k] & good[k:] & (lo < hi)
-                at = np.maximum(np.abs(sub[0][:k] + hi), 1.0)
-                ok &= hi - lo > np.where(near[ci], _NEAR_GAP, 1e-8) * at
-                r, q = rows[ri[ok]], cols[ci[ok]]
-                out["lo"][r, q], out["hi"][r, q] = lo[ok], hi[ok]
-                out["lo_doubt"][r, q], out["hi_doubt"][r, q] = doubt[:k][ok], doubt[k:][ok]
-                out["top"][r, q] = 0.5 * (lo[ok] + hi[ok])  # (D > 0 between the edges)
-                out["dtop"][r, q] = np.inf
-                out["done"][r, q] = True
-            ri, ci = np.nonzero(np.isfinite(top0) & ~out["done"][rows][:, cols] & ~near)
-            if ri.size:
-                sub = (c[ri, ci],) + tuple(v[ci] for v in params)
-                top, dtop, ok, high, curv = _table_top(ev, form, sub, top0[ri, ci])
-                r, q = rows[ri[ok]], cols[ci[ok]]
-                out["top"][r, q], out["dtop"][r, q] = top[ok], dtop[ok]
-                out["done"][r, q] = True
-                if high.any():  # an interval whose edges the tables did not give: split there
-                    ri, ci, hsub = ri[high], ci[high], tuple(v[high] for v in sub)
-                    lo, hi, lo_d, hi_d, ok = _table_split(
-                        ev, hsub, top[high], dtop[high], curv[high]
+                first = ev(x0, *sub)
+                e = 2 * k
+                psub = tuple(v[:e] for v in sub)
+                sign = np.concatenate([np.ones(k), -np.ones(k)])
+                root, doubt, good, (moving, xm) = _table_edges(
+                    ev, psub, x0[:e], sign, first=tuple(v[:e] for v in first), left=True
+                )
+                high = np.zeros(0, bool)
+                if kt:
+                    tsub = tuple(v[e:] for v in sub)
+                    top, dtop, ok, high, curv = _table_top(
+                        ev, form, tsub, x0[e:], first=tuple(v[e:] for v in first)
                     )
+                    r, q = rows[ti[ok]], cols[tci[ok]]
+                    out["top"][r, q], out["dtop"][r, q] = top[ok], dtop[ok]
+                    out["done"][r, q] = True
+                if high.any() or moving.size:
+                    # an interval whose edges the tables did not give (split at the maximiser), and
+                    # the edges that one step did not converge: more steps, in the same calls
+                    hsub = tuple(v[high] for v in tsub) if kt else tuple(v[:0] for v in psub)
+                    hx = (top[high], dtop[high], curv[high]) if kt else (np.zeros(0),) * 3
+                    extra = (tuple(v[moving] for v in psub), xm, sign[moving])
+                    lo, hi, lo_d, hi_d, ok, more = _table_split(ev, hsub, *hx, extra=extra)
+                    root[moving], doubt[moving], good[moving] = more
+                    if ok.any():
+                        hi_, hci = ti[high][ok], tci[high][ok]
+                        r, q = rows[hi_], cols[hci]
+                        out["lo"][r, q], out["hi"][r, q] = lo[ok], hi[ok]
+                        out["lo_doubt"][r, q], out["hi_doubt"][r, q] = lo_d[ok], hi_d[ok]
+                        out["top"][r, q] = hx[0][ok]
+                        out["dtop"][r, q] = np.inf
+                        out["done"][r, q] = True
+                if k:
+                    lo, hi = root[:k], root[k:]
+                    ok = good[:k] & good[k:] & (lo < hi)
+                    at = np.maximum(np.abs(cp + hi), 1.0)
+                    ok &= hi - lo > np.where(near[ci], _NEAR_GAP, 1e-8) * at
                     r, q = rows[ri[ok]], cols[ci[ok]]
                     out["lo"][r, q], out["hi"][r, q] = lo[ok], hi[ok]
-                    out["lo_doubt"][r, q], out["hi_doubt"][r, q] = lo_d[ok], hi_d[ok]
-                    out["top"][r, q] = top[high][ok]
+                    out["lo_doubt"][r, q], out["hi_doubt"][r, q] = doubt[:k][ok], doubt[k:][ok]
+                    out["top"][r, q] = 0.5 * (lo[ok] + hi[ok])  # (D > 0 between the edges)
                     out["dtop"][r, q] = np.inf
                     out["done"][r, q] = True
             # the entries left (mostly a maximiser at an end of the undamped interval, at small
@@ -1281,20 +1298,22 @@ def _f2_peak(form, x1, x2, r2, u, beta, g):
     return peak, -got[3 * k :]
 
 
-def _table_edges(ev, args, x, sign, steps: int = _TABLE_STEPS):
+def _table_edges(ev, args, x, sign, steps: int = _TABLE_STEPS, *, first=None, left=False):
     """Zeros of ``D`` from ``x`` near them (:func:`_table_friction`): at most ``steps`` (default
     :data:`_TABLE_STEPS`) steps of :func:`_step`, each point dropped once the estimate of order 4
     of its error is below :data:`_EDGE_RTOL` times ``max(c + theta, 1)`` (its step below
     :data:`_EDGE_STEP`): ``(roots, doubt, good)`` as :func:`_edges` (``good``: converged inside
-    the window, with ``sign D`` increasing through the zero)."""
+    the window, with ``sign D`` increasing through the zero).  ``first``: the evaluation at ``x``
+    (``ev(x, *args)``, done already); ``left=True``: also the indices of the points still moving
+    after the last step and their next iterates."""
     root = np.full(x.size, np.nan)
     doubt = np.zeros(x.size, bool)
     good = np.zeros(x.size, bool)
     idx = np.arange(x.size)
     sub, sg = args, sign
     sc = _EDGE_RTOL * np.maximum(args[0] + x, 1.0)
-    for _ in range(steps):
-        D, D1, D2, D3, D4, T0, T1 = ev(x, *sub)
+    for it in range(steps):
+        D, D1, D2, D3, D4, T0, T1 = ev(x, *sub) if it or first is None else first
         s, err = _step(D, D1, D2, D3, D4)
         done = (err <= sc) & (np.abs(s) <= _EDGE_STEP)
         j = np.nonzero(done)[0]
@@ -1309,20 +1328,24 @@ def _table_edges(ev, args, x, sign, steps: int = _TABLE_STEPS):
             good[idx[j]] = (sg[j] * slope > 0) & (np.abs(r) < _HALF_PI)
         keep = ~done & np.isfinite(s)
         if not keep.any():
+            rest = (idx[:0], x[:0])
             break
         idx, x, sg, sc = idx[keep], (x - s)[keep], sg[keep], sc[keep]
         sub = tuple(v[keep] for v in sub)
-    return root, doubt, good
+    else:
+        rest = (idx, x)
+    return (root, doubt, good, rest) if left else (root, doubt, good)
 
 
-def _table_top(ev, parity, args, x):
+def _table_top(ev, parity, args, x, *, first=None):
     """The maximiser of ``D`` from ``x`` near it (:func:`_table_friction`): at most
     :data:`_TABLE_STEPS` Halley steps on ``D'``, a point dropped once its step is below
     :data:`_TOP_STEP` (``D`` there from its Taylor polynomial, as :func:`_maximiser`):
     ``(top, D(top), ok, high, D''(top))``, ``ok`` where that is a maximum (``D'' < 0``) inside the
     window, ``D`` below minus its rounding bound and the undamped indicator above ``1e-12``;
     ``high`` where it is a maximum inside the window with ``D`` above its rounding bound (the
-    interval exists: :func:`_table_split` finds its edges)."""
+    interval exists: :func:`_table_split` finds its edges).  ``first``: the evaluation at ``x``,
+    done already."""
     top = np.full(x.size, np.nan)
     dtop = np.full(x.size, np.nan)
     curv = np.full(x.size, np.nan)
@@ -1330,8 +1353,8 @@ def _table_top(ev, parity, args, x):
     high = np.zeros(x.size, bool)
     idx = np.arange(x.size)
     sub = args
-    for _ in range(_TABLE_STEPS):
-        D, D1, D2, D3, _D4, T0, T1 = ev(x, *sub)
+    for it in range(_TABLE_STEPS):
+        D, D1, D2, D3, _D4, T0, T1 = ev(x, *sub) if it or first is None else first
         s = D1 / D2
         s = s / (1.0 - 0.5 * s * D3 / D2)
         done = np.abs(s) <= _TOP_STEP
@@ -1366,23 +1389,33 @@ def _table_top(ev, parity, args, x):
 _SPLIT_STEPS = 6
 
 
-def _table_split(ev, args, top, dtop, curv):
+def _table_split(ev, args, top, dtop, curv, extra=None):
     """Both edges of the entries whose maximum of ``D`` is above its rounding bound at ``top``
     (:func:`_table_top`: the start tables had no edges at all four nodes, next to a threshold):
     from ``top -+ sqrt(2 D(top)/|D''(top)|)`` (the parabola through the maximum), at most
     :data:`_SPLIT_STEPS` steps of :func:`_step` (:func:`_table_edges`): ``(lower, upper, lower
     doubt, upper doubt, good)``, ``good`` where both converged inside the window with the edges'
-    slopes on either side of ``top`` (as the pair path of :func:`_table_friction` takes them)."""
+    slopes on either side of ``top`` (as the pair path of :func:`_table_friction` takes them).
+    ``extra = (args, x, sign)``: more zeros to iterate in the same calls (the table path's edges
+    that its first step did not converge), returned last as ``(roots, doubt, good)``."""
     k = top.size
     half = np.sqrt(2.0 * dtop / -curv)
-    x0 = np.concatenate([top - half, top + half])
-    sub = tuple(np.concatenate([v, v]) for v in args)
-    sign = np.concatenate([np.ones(k), -np.ones(k)])
-    root, doubt, good = _table_edges(ev, sub, x0, sign, steps=_SPLIT_STEPS)
-    lo, hi = root[:k], root[k:]
-    ok = good[:k] & good[k:] & (lo < top) & (top < hi)
+    x0 = [top - half, top + half]
+    sub = [(v, v) for v in args]
+    sign = [np.ones(k), -np.ones(k)]
+    if extra is not None:
+        x0.append(extra[1])
+        sub = [(*pair, v) for pair, v in zip(sub, extra[0], strict=True)]
+        sign.append(extra[2])
+    sub = tuple(np.concatenate(v) for v in sub)
+    root, doubt, good = _table_edges(
+        ev, sub, np.concatenate(x0), np.concatenate(sign), steps=_SPLIT_STEPS
+    )
+    lo, hi = root[:k], root[k : 2 * k]
+    ok = good[:k] & good[k : 2 * k] & (lo < top) & (top < hi)
     ok &= hi - lo > 1e-8 * np.maximum(np.abs(args[0] + hi), 1.0)
-    return lo, hi, doubt[:k], doubt[k:], ok
+    more = (root[2 * k :], doubt[2 * k :], good[2 * k :])
+    return lo, hi, doubt[:k], doubt[k : 2 * k], ok, more
 
 
 # ---------------------------------------------------------------------------------------------
