@@ -230,6 +230,30 @@ def test_one_call_gives_the_fourth_derivative(parity):
     assert np.all(np.abs(four[4] - d4) <= 1e-13 * (16 * sizes + np.abs(d4)))
 
 
+@pytest.mark.parametrize("parity", [1, -1])
+def test_hoisted_powers_give_the_same_bits(parity):
+    """The indicator with the powers of its parameters taken as arguments
+    (:func:`verify.grid._indicator_powers`, the table path's evaluations; the powers computed once
+    per depth and gathered) gives the same bits as the compiled form it rewrites
+    (:func:`verify.grid._indicator_all`), on random arguments with repeated parameters."""
+    from verify.grid import _indicator_all, _indicator_powers
+
+    rng = np.random.default_rng(3)
+    fn, powers = _indicator_powers(parity)
+    assert {v for v, _ in powers} == {"beta", "g"} and all(k >= 3 for _, k in powers)
+    depth = rng.integers(0, 50, 4001)  # 50 depths, each used many times
+    beta, g = rng.uniform(0.0, 1.0, 50), rng.uniform(0.0, 0.2, 50)
+    args = (rng.uniform(-1.5, 1.5, depth.size), rng.integers(1, 7, depth.size) * (np.pi / 2))
+    args += (rng.uniform(0.0, 0.9, depth.size), rng.uniform(0.0, 0.3, depth.size))
+    args += (beta[depth], g[depth])
+    named = {"beta": beta, "g": g}
+    got = fn(*args, *(((named[v]) ** k)[depth] for v, k in powers))
+    want = _indicator_all(parity)(*args)
+    assert len(got) == len(want) == 7
+    for a, b in zip(got, want, strict=True):
+        assert np.array_equal(a, b)
+
+
 @pytest.mark.parametrize("damping", ["exact", "paper"])
 def test_table_path_next_to_one_matches_certified(damping):
     """The table path of a large grid takes entries next to ``m = 1`` too (``1 - beta`` down to

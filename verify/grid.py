@@ -73,7 +73,10 @@ from .derived import (
     backend,
     edge_equation_linear,
     edge_equation_trig,
+    generated_key,
+    hoist_powers,
     indicator,
+    load_source,
     near_one_forms,
     order1_forms,
     term_sizes,
@@ -770,6 +773,22 @@ def _indicator_all(parity: int, sizes: bool = True):
     return with_term_sizes(indicator(parity), 4).compiled("numpy", (0, 1, 2, 3, 4, 5, 6))
 
 
+@cache
+def _indicator_powers(parity: int):
+    """:func:`_indicator_all` with the powers ``beta**k`` and ``g**k`` (``k >= 3``) of the
+    parameters taken as arguments (:func:`verify.derived.hoist_powers`): ``(fn, powers)``, ``fn``
+    called as ``fn(theta, c, r2, u, beta, g, *[v**k for (v, k) in powers])`` gives the same bits
+    as :func:`_indicator_all` (the table path computes the powers once per depth)."""
+    from .forms_generated import SOURCES
+
+    form, orders = with_term_sizes(indicator(parity), 4), (0, 1, 2, 3, 4, 5, 6)
+    text = SOURCES.get(generated_key(form.key, "numpy", orders))
+    if text is None:  # pragma: no cover - the stored texts cover this form
+        text = form.real.source("numpy", orders)
+    text, powers = hoist_powers(text, ("beta", "g"))
+    return load_source(text, "numpy", orders), powers
+
+
 #: the maximiser of ``D`` is taken once its Halley step (on ``D'``) is below this (absolute, in
 #: ``theta``); its value ``D(top)`` is then the Taylor polynomial of degree 3 of ``D`` at the last
 #: iterate, which leaves an error of about ``D'''' step^4/24 <= 1e-21 D''''`` (far below the
@@ -1152,7 +1171,9 @@ def _table_friction(orders, P, rho, system, friction, cols) -> dict:
             if rows.size == 0:
                 continue
             form = int(_parity(int(orders[rows[0]])))
-            ev = _indicator_all(form)
+            ev, powers = _indicator_powers(form)
+            named = dict(zip(("r2", "u", "beta", "g"), params, strict=True))
+            pars = params + tuple(named[v] ** k for v, k in powers)  # (once per depth)
             c = (orders[rows] * _HALF_PI)[:, None] * np.ones(cols.size)
             lo0, hi0, top0 = start[rows, 0], start[rows, 1], start[rows, 2]
             pair = np.isfinite(lo0) & np.isfinite(hi0) & (lo0 < hi0)
@@ -1165,7 +1186,7 @@ def _table_friction(orders, P, rho, system, friction, cols) -> dict:
                 x0 = np.concatenate([lo0[ri, ci], hi0[ri, ci], top0[ti, tci]])
                 cp, ct = c[ri, ci], c[ti, tci]
                 sub = (np.concatenate([cp, cp, ct]),) + tuple(
-                    np.concatenate([v[ci], v[ci], v[tci]]) for v in params
+                    np.concatenate([v[ci], v[ci], v[tci]]) for v in pars
                 )
                 first = ev(x0, *sub)
                 e = 2 * k
@@ -1377,7 +1398,7 @@ def _table_top(ev, parity, args, x, *, first=None):
         sub = tuple(v[keep] for v in sub)
     sel = np.nonzero(ok)[0]
     if sel.size:  # the undamped indicator there: D with u = g = 0 (the same derived form)
-        c, r2, _u, beta, _g = (v[sel] for v in args)
+        c, r2, _u, beta, _g = (v[sel] for v in args[:5])
         zero = np.zeros(sel.size)
         d0 = indicator(parity).compiled("numpy", 0)(top[sel], c, r2, zero, beta, zero)
         ok[sel] = np.asarray(d0, float) > 1e-12
