@@ -1184,10 +1184,9 @@ def _table_friction(orders, P, rho, system, friction, cols) -> dict:
                 # one evaluation for the first step of both edges of the entries whose four nodes
                 # have the interval and the maximiser of the others
                 x0 = np.concatenate([lo0[ri, ci], hi0[ri, ci], top0[ti, tci]])
-                cp, ct = c[ri, ci], c[ti, tci]
-                sub = (np.concatenate([cp, cp, ct]),) + tuple(
-                    np.concatenate([v[ci], v[ci], v[tci]]) for v in pars
-                )
+                cp = c[ri, ci]
+                at = np.concatenate([ci, ci, tci])  # the depth of each point
+                sub = (np.concatenate([cp, cp, c[ti, tci]]),) + tuple(v[at] for v in pars)
                 first = ev(x0, *sub)
                 e = 2 * k
                 psub = tuple(v[:e] for v in sub)
@@ -1279,24 +1278,23 @@ def _no_interval(parity, c, r2, u, beta, g):
         e[:, 0], e[:, N] = -s, s
         X = cc[:, None] + e  # ... in x (each end shared by its two pieces)
         rep = tuple(np.repeat(v, N) for v in (rr, uu, bb, gg))
-        P, S = _f2_peak(form, X[:, :-1].ravel(), X[:, 1:].ravel(), *rep)
         a, b = e[:, :-1].ravel(), e[:, 1:].ravel()
         near = np.where(a * b <= 0, 0.0, np.minimum(np.abs(a), np.abs(b)))
-        zero = np.zeros(near.size)
-        sin2 = -np.asarray(form(near, np.repeat(cc, N), zero, zero, rep[2], rep[3]), float)
+        P, S, sin2 = _f2_peak(form, X[:, :-1].ravel(), X[:, 1:].ravel(), *rep, theta=near)
         bound = P - S - sin2
         ok = (X[:, :-1].ravel() > 0) & (bound < -1e-10 * (P + S + sin2 + rep[0]))
         taken[rest] = ok.reshape(k, N).all(axis=1)
     return taken
 
 
-def _f2_peak(form, x1, x2, r2, u, beta, g):
+def _f2_peak(form, x1, x2, r2, u, beta, g, *, theta=None):
     """``(P, S)``: an upper bound ``P`` of ``r2 f(beta x)^2`` on ``[x1, x2]`` and ``S = u sinh(g
     x1)^2`` (:func:`_no_interval`; ``form`` the compiled indicator, ``r2 f(beta x)^2 - u sinh(g
     x)^2`` at ``theta = 0``, taken with ``u = 0`` or ``r2 = 0``): ``f^2`` is monotone between the
     multiples of ``pi/2`` of ``beta x``, so its largest value is at an end or at the one multiple
     inside (``r2`` where there are more); the multiples are counted on the range widened by a
-    relative 1e-12 and the bound raised by what ``f^2`` can change over that."""
+    relative 1e-12 and the bound raised by what ``f^2`` can change over that.  ``theta``: also
+    ``sin(theta)^2`` there (the form with ``r2 = u = 0``), in the same call: ``(P, S, sin^2)``."""
     k = x1.size
     zero = np.zeros(k)
     q = 2.0 / math.pi
@@ -1304,19 +1302,22 @@ def _f2_peak(form, x1, x2, r2, u, beta, g):
     j1, j2 = np.floor(y1 * (1 - 1e-12)), np.floor(y2 * (1 + 1e-12))
     mid = j2 / (q * beta)  # the multiple of pi/2 inside (where there is one)
     cat = np.concatenate
+    blocks = 4 if theta is None else 5
     got = form(
-        np.zeros(4 * k),
-        cat([x1, x2, mid, x1]),
-        cat([r2, r2, r2, zero]),
-        cat([zero, zero, zero, u]),
-        cat([beta] * 4),
-        cat([g] * 4),
+        np.zeros(4 * k) if theta is None else cat([np.zeros(4 * k), theta]),
+        cat([x1, x2, mid, x1, x1][:blocks]),
+        cat([r2, r2, r2, zero, zero][:blocks]),
+        cat([zero, zero, zero, u, zero][:blocks]),
+        cat([beta] * blocks),
+        cat([g] * blocks),
     )
     got = np.asarray(got, float)
     ends = np.maximum(got[:k], got[k : 2 * k])
     ends = np.where(j2 == j1, ends, np.maximum(ends, got[2 * k : 3 * k]))
     peak = np.where((j2 - j1 <= 1) & (beta > 0), ends + 1e-9 * r2 * (1 + y2), r2)
-    return peak, -got[3 * k :]
+    if theta is None:
+        return peak, -got[3 * k :]
+    return peak, -got[3 * k : 4 * k], -got[4 * k :]
 
 
 def _table_edges(ev, args, x, sign, steps: int = _TABLE_STEPS, *, first=None, left=False):
@@ -1699,13 +1700,16 @@ def _confirm(n: int, m: Fraction, Q, damping: str, system, edges):
     with ctx.workprec(CONFIRM_BITS):
         P = normal_params(m, Qf, damping, backend("arb"), system)
         half_pi = arb.pi() / 2
-        c = n * half_pi
+        pi, n2, w = 2 * half_pi, arb(n) / 2, P.w
+        args = (n * half_pi, P.r2, P.u, P.beta, P.g)
         d = arb(CONFIRM_REL)  # the double, exactly
+        scales = ((-1, 1 - d), (1, 1 + d))
         for T, first in ((lo, -1), (hi, 1)):
             ends = []
-            for side in (-1, 1):
-                Tx = arb(T) * (1 + side * d)
-                v = form(2 * half_pi * (Tx * P.w - arb(n) / 2), c, P.r2, P.u, P.beta, P.g)
+            aT = arb(T)
+            for side, scale in scales:
+                Tx = aT * scale
+                v = form(pi * (Tx * w - n2), *args)
                 want = first * side  # lower: -, +; upper: +, -
                 if not (v < 0 if want > 0 else v > 0):
                     return None
