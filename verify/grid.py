@@ -29,8 +29,12 @@ Method (all orders and depths at once):
   slopes (``D <= D0 < 0`` there outside the undamped roots: they lie between them), or a
   maximum of ``D`` below minus its rounding bound at a point between the undamped roots (``D0
   > 0`` there);
-  every other entry (next to ``m = 1``, next to a threshold, a maximiser at an end of the
-  undamped interval) goes to the bracketed path;
+  next to a threshold (the four nodes do not all have the interval) both edges from the parabola
+  through the maximum of ``D`` where that is above its rounding bound (:func:`_table_split`);
+  where the maximiser is at an end of the undamped interval, no interval by a bound on ``D`` over
+  the window (:func:`_no_interval`); next to ``m = 1`` (``1 - beta`` down to
+  :data:`TABLE_NEAR_MIN`) the edges where they lie apart; every other entry goes to the bracketed
+  path;
 * friction, normal form, bracketed: the undamped-form roots (same ``r``, ``beta``) bracket the
   interval (``D <= D0`` and ``D0 < 0`` outside them), in a grid of at least 256 depths from the
   same pass as without friction with start tables per ``(system, order, Q, damping model)``
