@@ -30,7 +30,8 @@ Method (all orders and depths at once):
   maximum of ``D`` below minus its rounding bound at a point between the undamped roots (``D0
   > 0`` there);
   next to a threshold (the four nodes do not all have the interval) both edges from the parabola
-  through the maximum of ``D`` where that is above its rounding bound (:func:`_table_split`);
+  (a cubic) through the maximum of ``D`` where that is above its rounding bound
+  (:func:`_table_split`);
   where the maximiser is at an end of the undamped interval, no interval by a bound on ``D`` over
   the window (:func:`_no_interval`); next to ``m = 1`` (``1 - beta`` down to
   :data:`TABLE_NEAR_MIN`) the edges where they lie apart; every other entry goes to the bracketed
@@ -1201,7 +1202,7 @@ def _table_friction(orders, P, rho, system, friction, cols) -> dict:
                 high = np.zeros(0, bool)
                 if kt:
                     tsub = tuple(v[e:] for v in sub)
-                    top, dtop, ok, high, curv = _table_top(
+                    top, dtop, ok, high, (curv, third) = _table_top(
                         ev, form, tsub, x0[e:], first=tuple(v[e:] for v in first)
                     )
                     r, q = rows[ti[ok]], cols[tci[ok]]
@@ -1212,8 +1213,11 @@ def _table_friction(orders, P, rho, system, friction, cols) -> dict:
                     # the edges that one step did not converge: more steps, in the same calls
                     hsub = tuple(v[high] for v in tsub) if kt else tuple(v[:0] for v in psub)
                     hx = (top[high], dtop[high], curv[high]) if kt else (np.zeros(0),) * 3
+                    h3 = third[high] if kt else None
                     extra = (tuple(v[moving] for v in psub), xm, sign[moving])
-                    lo, hi, lo_d, hi_d, ok, more = _table_split(ev, hsub, *hx, extra=extra)
+                    lo, hi, lo_d, hi_d, ok, more = _table_split(
+                        ev, hsub, *hx, extra=extra, third=h3
+                    )
                     root[moving], doubt[moving], good[moving] = more
                     if ok.any():
                         hi_, hci = ti[high][ok], tci[high][ok]
@@ -1367,14 +1371,16 @@ def _table_top(ev, parity, args, x, *, first=None):
     """The maximiser of ``D`` from ``x`` near it (:func:`_table_friction`): at most
     :data:`_TABLE_STEPS` Halley steps on ``D'``, a point dropped once its step is below
     :data:`_TOP_STEP` (``D`` there from its Taylor polynomial, as :func:`_maximiser`):
-    ``(top, D(top), ok, high, D''(top))``, ``ok`` where that is a maximum (``D'' < 0``) inside the
-    window, ``D`` below minus its rounding bound and the undamped indicator above ``1e-12``;
+    ``(top, D(top), ok, high, (D''(top), D'''(top)))``, ``ok`` where that is a maximum
+    (``D'' < 0``) inside the window, ``D`` below minus its rounding bound and the undamped
+    indicator above ``1e-12``;
     ``high`` where it is a maximum inside the window with ``D`` above its rounding bound (the
     interval exists: :func:`_table_split` finds its edges).  ``first``: the evaluation at ``x``,
     done already."""
     top = np.full(x.size, np.nan)
     dtop = np.full(x.size, np.nan)
     curv = np.full(x.size, np.nan)
+    third = np.full(x.size, np.nan)
     ok = np.zeros(x.size, bool)
     high = np.zeros(x.size, bool)
     idx = np.arange(x.size)
@@ -1393,6 +1399,7 @@ def _table_top(ev, parity, args, x, *, first=None):
             noise = NOISE_ULPS * 2.0**-53 * (np.abs(T0[j]) + at * np.abs(T1[j]))
             top[idx[j]], dtop[idx[j]] = t, d
             curv[idx[j]] = D2[j] - sj * D3[j]
+            third[idx[j]] = D3[j]
             inner = (D2[j] < 0) & (np.abs(t) < _HALF_PI)
             ok[idx[j]] = inner & (d < -noise)
             high[idx[j]] = inner & (d > noise)
@@ -1407,7 +1414,7 @@ def _table_top(ev, parity, args, x, *, first=None):
         zero = np.zeros(sel.size)
         d0 = indicator(parity).compiled("numpy", 0)(top[sel], c, r2, zero, beta, zero)
         ok[sel] = np.asarray(d0, float) > 1e-12
-    return top, dtop, ok, high, curv
+    return top, dtop, ok, high, (curv, third)
 
 
 #: the steps :func:`_table_split` takes at most from its starts (next to a threshold the edges are
@@ -1415,10 +1422,11 @@ def _table_top(ev, parity, args, x, *, first=None):
 _SPLIT_STEPS = 6
 
 
-def _table_split(ev, args, top, dtop, curv, extra=None):
+def _table_split(ev, args, top, dtop, curv, extra=None, third=None):
     """Both edges of the entries whose maximum of ``D`` is above its rounding bound at ``top``
     (:func:`_table_top`: the start tables had no edges at all four nodes, next to a threshold):
-    from ``top -+ sqrt(2 D(top)/|D''(top)|)`` (the parabola through the maximum), at most
+    from ``top -+ sqrt(2 D(top)/|D''(top)|)`` (the parabola through the maximum; with ``third``,
+    ``D'''(top)``, two Newton steps on the cubic from there), at most
     :data:`_SPLIT_STEPS` steps of :func:`_step` (:func:`_table_edges`): ``(lower, upper, lower
     doubt, upper doubt, good)``, ``good`` where both converged inside the window with the edges'
     slopes on either side of ``top`` (as the pair path of :func:`_table_friction` takes them).
@@ -1426,7 +1434,13 @@ def _table_split(ev, args, top, dtop, curv, extra=None):
     that its first step did not converge), returned last as ``(roots, doubt, good)``."""
     k = top.size
     half = np.sqrt(2.0 * dtop / -curv)
-    x0 = [top - half, top + half]
+    h = np.concatenate([-half, half])
+    if third is not None:  # two Newton steps on the cubic through the maximum
+        d, c2, c3 = (np.concatenate([v, v]) for v in (dtop, 0.5 * curv, third / 6.0))
+        for _ in range(2):
+            hn = h - (d + h * h * (c2 + h * c3)) / (h * (2.0 * c2 + 3.0 * h * c3))
+            h = np.where(np.isfinite(hn) & (hn * h > 0), hn, h)
+    x0 = [top + h[:k], top + h[k:]]
     sub = [(v, v) for v in args]
     sign = [np.ones(k), -np.ones(k)]
     if extra is not None:
