@@ -395,3 +395,33 @@ def test_table_path_agrees_with_the_bracketed_path(damping):
             assert np.all(np.abs(got - want)[clear] <= 1e-15 * scale[clear])
             near = both & flagged
             assert np.all(np.abs(got - want)[near] <= ERROR_BOUND * scale[near])
+
+
+@pytest.mark.parametrize("Q", [1.2, 2.5, 20])
+def test_large_grid_where_existence_changes(Q):
+    """A grid of 1200 depths, orders 1-6, at quality factors where the intervals of the orders
+    close at other depths (Q = 1.2: most orders close over most of the range; 2.5; 20), both
+    damping models: at every pair of neighbouring depths where the grid says an interval appears
+    or closes, both entries against the certified route (existence, and the edges within the
+    bound).  These are the entries the table path takes next to a threshold (the split at the
+    maximiser, the bound that proves no interval)."""
+    ms = (np.arange(1200) + 0.5) / 1200
+    for damping in ("exact", "paper"):
+        if damping == "exact" and 4 * Q * Q - 1 <= 1:
+            continue
+        grid = boundary_grid(ORDERS, ms, Q=Q, damping=damping)
+        bad = []
+        for i, n in enumerate(ORDERS):
+            has = np.isfinite(grid[i, 0])
+            for j in np.nonzero(has[1:] != has[:-1])[0]:
+                for jj in (j, j + 1):
+                    b = _certified(n, float(ms[jj]), Q, damping)
+                    where = f"order {n}, m = {ms[jj]!r}, Q = {Q}, {damping}"
+                    if b.exists != bool(has[jj]):
+                        bad.append(f"{where}: grid exists {bool(has[jj])}, certified {b.exists}")
+                        continue
+                    for k, want in ((0, b.lower), (1, b.upper)) if b.exists else ():
+                        rel = abs(grid[i, k, jj] - float(want)) / abs(float(want))
+                        if not rel <= ERROR_BOUND:
+                            bad.append(f"{where}, edge {k}: rel {rel:.2e}")
+        assert not bad, "\n".join(bad)
