@@ -272,3 +272,22 @@ def test_confirmation_rejects_a_wrong_edge():
     assert _confirmed(5, m, 7, "paper", sysv, (lo, hi))
     for bad in ((lo * (1 + 3e-14), hi), (lo * (1 - 3e-14), hi), (lo, hi * (1 + 3e-14))):
         assert not _confirmed(5, m, 7, "paper", sysv, bad)
+
+
+def test_confirmation_returns_the_secant_root():
+    """An escalated entry that the ball-arithmetic proof confirms takes the secant root of the
+    indicator between the two proved points: from edges moved by a relative 5e-15 (inside the
+    bound, as the rounding of ``D`` next to a double root leaves them), the edges returned are
+    within 1e-15 of the certified ones (Reference: the certified edges at 30 digits)."""
+    from verify.grid import _confirm
+    from verify.inputs import as_system
+
+    sysv = as_system("pendulum", "1/2")
+    for n, m, damping in ((5, "0.5095", "paper"), (3, "0.4825", "exact"), (6, "0.9205", "paper")):
+        b = boundary(n, Fraction(m), Q=7, damping=damping, digits=30)
+        lo, hi = float(b.lower), float(b.upper)
+        for moved in ((lo * (1 + 5e-15), hi * (1 - 5e-15)), (lo * (1 - 5e-15), hi * (1 + 5e-15))):
+            got = _confirm(n, Fraction(m), 7, damping, sysv, moved)
+            assert got is not None
+            for g, want in zip(got, (b.lower, b.upper), strict=True):
+                assert abs(g - float(want)) <= 1e-15 * abs(float(want))

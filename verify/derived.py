@@ -283,6 +283,33 @@ def share_pairs(text: str) -> str:
     return "\n".join(lines)
 
 
+def hoist_powers(text: str, names, least: int = 3) -> tuple[str, tuple]:
+    """A compiled form's text with each power ``v**k`` (``k >= least``) of an argument ``v`` in
+    ``names`` read from a new argument ``_pow_v_k`` (appended to the signature, in order of
+    first appearance), and the ``(v, k)`` of those arguments.  A caller whose ``v`` repeats over
+    many evaluations (a parameter per depth, gathered per point) computes ``v**k`` once per value
+    and passes it gathered: the same numbers where they are used (``v**k`` is an elementwise
+    function of ``v``), without a general power per point."""
+    lines = text.split("\n")
+    head = lines[0]
+    params = [a.strip() for a in head[head.index("(") + 1 : head.rindex(")")].split(",")]
+    found = []
+    pat = re.compile(r"(?<![\w.])(\w+)\*\*(\d+)(?![\w.])")
+
+    def repl(mt):
+        v, k = mt.group(1), int(mt.group(2))
+        if v not in names or v not in params or k < least:
+            return mt.group(0)
+        if (v, k) not in found:
+            found.append((v, k))
+        return f"_pow_{v}_{k}"
+
+    body = pat.sub(repl, "\n".join(lines[1:]))
+    extra = "".join(f", _pow_{v}_{k}" for v, k in found)
+    head = f"{head[: head.rindex(')')]}{extra}{head[head.rindex(')') :]}"
+    return f"{head}\n{body}", tuple(found)
+
+
 def load_source(text: str, name: str, orders=0):
     """The function a form's text (:meth:`Form.source`) defines, in back end ``name``'s
     namespace; one giving a tuple for several ``orders``."""

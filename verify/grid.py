@@ -29,8 +29,13 @@ Method (all orders and depths at once):
   slopes (``D <= D0 < 0`` there outside the undamped roots: they lie between them), or a
   maximum of ``D`` below minus its rounding bound at a point between the undamped roots (``D0
   > 0`` there);
-  every other entry (next to ``m = 1``, next to a threshold, a maximiser at an end of the
-  undamped interval) goes to the bracketed path;
+  next to a threshold (the four nodes do not all have the interval) both edges from the parabola
+  (a cubic) through the maximum of ``D`` where that is above its rounding bound
+  (:func:`_table_split`);
+  where the maximiser is at an end of the undamped interval, no interval by a bound on ``D`` over
+  the window (:func:`_no_interval`); next to ``m = 1`` (``1 - beta`` down to
+  :data:`TABLE_NEAR_MIN`) the edges where they lie apart; every other entry goes to the bracketed
+  path;
 * friction, normal form, bracketed: the undamped-form roots (same ``r``, ``beta``) bracket the
   interval (``D <= D0`` and ``D0 < 0`` outside them), in a grid of at least 256 depths from the
   same pass as without friction with start tables per ``(system, order, Q, damping model)``
@@ -52,7 +57,8 @@ Method (all orders and depths at once):
 * with friction every entry carries an error estimate (the rounding of the indicator over its
   slope at the edge); next to a threshold or a closing gap, where the edges are a near-double
   root, the few entries that cannot meet the bound are proved in ball arithmetic
-  (:func:`_confirmed`: the sign of the indicator at the exact depth on both sides of each edge)
+  (:func:`_confirm`: the sign of the indicator at the exact depth on both sides of each edge,
+  and the secant root between)
   and go to the certified route only where that fails.
 """
 
@@ -72,7 +78,10 @@ from .derived import (
     backend,
     edge_equation_linear,
     edge_equation_trig,
+    generated_key,
+    hoist_powers,
     indicator,
+    load_source,
     near_one_forms,
     order1_forms,
     term_sizes,
@@ -769,6 +778,22 @@ def _indicator_all(parity: int, sizes: bool = True):
     return with_term_sizes(indicator(parity), 4).compiled("numpy", (0, 1, 2, 3, 4, 5, 6))
 
 
+@cache
+def _indicator_powers(parity: int):
+    """:func:`_indicator_all` with the powers ``beta**k`` and ``g**k`` (``k >= 3``) of the
+    parameters taken as arguments (:func:`verify.derived.hoist_powers`): ``(fn, powers)``, ``fn``
+    called as ``fn(theta, c, r2, u, beta, g, *[v**k for (v, k) in powers])`` gives the same bits
+    as :func:`_indicator_all` (the table path computes the powers once per depth)."""
+    from .forms_generated import SOURCES
+
+    form, orders = with_term_sizes(indicator(parity), 4), (0, 1, 2, 3, 4, 5, 6)
+    text = SOURCES.get(generated_key(form.key, "numpy", orders))
+    if text is None:  # pragma: no cover - the stored texts cover this form
+        text = form.real.source("numpy", orders)
+    text, powers = hoist_powers(text, ("beta", "g"))
+    return load_source(text, "numpy", orders), powers
+
+
 #: the maximiser of ``D`` is taken once its Halley step (on ``D'``) is below this (absolute, in
 #: ``theta``); its value ``D(top)`` is then the Taylor polynomial of degree 3 of ``D`` at the last
 #: iterate, which leaves an error of about ``D'''' step^4/24 <= 1e-21 D''''`` (far below the
@@ -1054,12 +1079,12 @@ def _edge_tables(system, orders, friction) -> list:
     """For each order ``n`` of ``orders``: the friction edges and the maximiser of ``D`` at the
     depths of :func:`_start_tables` (``m = 1 - rho^2``), rows ``(lower, upper, top)`` (``theta``),
     shape ``(3, K)``, read-only: ``lower``, ``upper`` NaN where the interval does not exist,
-    ``top`` the maximiser where it does not (NaN where it does, where the maximiser over the
-    undamped interval is one of its ends, and at every node where the normal form does not
-    apply).  Starting values only (:func:`_table_friction` proves every
-    point it takes from them and hands the rest to the bracketed path), computed once per
-    ``(system, n, Q, damping)`` by :func:`_damped_normal` at the nodes: they cannot change a
-    result."""
+    ``top`` the maximiser of ``D`` (NaN where it is one of the ends of the undamped interval,
+    and at every node where the normal form does not apply; next to a threshold the nodes where
+    the interval exists give the maximiser a start where the edges have none).  Starting values
+    only (:func:`_table_friction` proves every point it takes from them and hands the rest to the
+    bracketed path), computed once per ``(system, n, Q, damping)`` by :func:`_damped_normal` at
+    the nodes: they cannot change a result."""
     key = lambda n: (system, n, friction, "edges")  # noqa: E731
     found = {n: _TABLES.get(key(n)) for n in set(orders)}
     missing = sorted(n for n, tab in found.items() if tab is None)
@@ -1087,7 +1112,7 @@ def _edge_tables(system, orders, friction) -> list:
                 inner = (top > res["a"][k]) & (top < res["b"][k])
                 tabs[n][0, ok] = np.where(both, lo, np.nan)
                 tabs[n][1, ok] = np.where(both, hi, np.nan)
-                tabs[n][2, ok] = np.where(both | ~inner, np.nan, top)
+                tabs[n][2, ok] = np.where(inner, top, np.nan)
         if len(_TABLES) + len(missing) > _TABLES_MAX:
             _TABLES.clear()
         for n in missing:
@@ -1095,6 +1120,15 @@ def _edge_tables(system, orders, friction) -> list:
             tab.flags.writeable = False
             found[n] = _TABLES[key(n)] = tab
     return [found[n] for n in orders]
+
+
+#: the table path of the grid with friction takes the depths with ``1 - beta`` from here up
+#: (below it the standard form loses more than six digits to ``1 - beta``)
+TABLE_NEAR_MIN = 1e-6
+#: next to ``m = 1`` (``1 - beta <`` :data:`NEAR_ONE`) the table path takes an interval only where
+#: its edges lie this far apart (relative): the standard form there loses ``log10(1/(1 - beta))``
+#: digits, and ``D`` between such edges is far above that loss, so the interval exists
+_NEAR_GAP = 1e-3
 
 
 def _table_friction(orders, P, rho, system, friction, cols) -> dict:
@@ -1135,58 +1169,181 @@ def _table_friction(orders, P, rho, system, friction, cols) -> dict:
     _start_values(stack, rho[cols], start, np.empty_like(start))
     start = start.reshape(no, 3, cols.size)
     params = (P.r2[cols], P.u[cols], P.beta[cols], P.g[cols])
+    near = np.asarray(P.bm)[cols] < NEAR_ONE
     with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
         for parity in (1, 0):
             rows = np.nonzero(orders % 2 == parity)[0]
             if rows.size == 0:
                 continue
             form = int(_parity(int(orders[rows[0]])))
-            ev = _indicator_all(form)
+            ev, powers = _indicator_powers(form)
+            named = dict(zip(("r2", "u", "beta", "g"), params, strict=True))
+            pars = params + tuple(named[v] ** k for v, k in powers)  # (once per depth)
             c = (orders[rows] * _HALF_PI)[:, None] * np.ones(cols.size)
             lo0, hi0, top0 = start[rows, 0], start[rows, 1], start[rows, 2]
             pair = np.isfinite(lo0) & np.isfinite(hi0) & (lo0 < hi0)
             ri, ci = np.nonzero(pair)
-            if ri.size:
-                x0 = np.concatenate([lo0[ri, ci], hi0[ri, ci]])
-                sub = (np.concatenate([c[ri, ci]] * 2),) + tuple(
-                    np.concatenate([v[ci]] * 2) for v in params
+            ti, tci = np.nonzero(np.isfinite(top0) & ~pair & ~near)
+            k, kt = ri.size, ti.size
+            if k + kt:
+                # one evaluation for the first step of both edges of the entries whose four nodes
+                # have the interval and the maximiser of the others
+                x0 = np.concatenate([lo0[ri, ci], hi0[ri, ci], top0[ti, tci]])
+                cp = c[ri, ci]
+                at = np.concatenate([ci, ci, tci])  # the depth of each point
+                sub = (np.concatenate([cp, cp, c[ti, tci]]),) + tuple(v[at] for v in pars)
+                first = ev(x0, *sub)
+                e = 2 * k
+                psub = tuple(v[:e] for v in sub)
+                sign = np.concatenate([np.ones(k), -np.ones(k)])
+                root, doubt, good, (moving, xm) = _table_edges(
+                    ev, psub, x0[:e], sign, first=tuple(v[:e] for v in first), left=True
                 )
-                sign = np.concatenate([np.ones(ri.size), -np.ones(ri.size)])
-                root, doubt, good = _table_edges(ev, sub, x0, sign)
-                k = ri.size
-                lo, hi = root[:k], root[k:]
-                ok = good[:k] & good[k:] & (lo < hi)
-                ok &= hi - lo > 1e-8 * np.maximum(np.abs(sub[0][:k] + hi), 1.0)
-                r, q = rows[ri[ok]], cols[ci[ok]]
-                out["lo"][r, q], out["hi"][r, q] = lo[ok], hi[ok]
-                out["lo_doubt"][r, q], out["hi_doubt"][r, q] = doubt[:k][ok], doubt[k:][ok]
-                out["top"][r, q] = 0.5 * (lo[ok] + hi[ok])  # (D > 0 between the edges)
-                out["dtop"][r, q] = np.inf
-                out["done"][r, q] = True
-            ri, ci = np.nonzero(np.isfinite(top0) & ~pair)
+                high = np.zeros(0, bool)
+                if kt:
+                    tsub = tuple(v[e:] for v in sub)
+                    top, dtop, ok, high, (curv, third) = _table_top(
+                        ev, form, tsub, x0[e:], first=tuple(v[e:] for v in first)
+                    )
+                    r, q = rows[ti[ok]], cols[tci[ok]]
+                    out["top"][r, q], out["dtop"][r, q] = top[ok], dtop[ok]
+                    out["done"][r, q] = True
+                if high.any() or moving.size:
+                    # an interval whose edges the tables did not give (split at the maximiser), and
+                    # the edges that one step did not converge: more steps, in the same calls
+                    hsub = tuple(v[high] for v in tsub) if kt else tuple(v[:0] for v in psub)
+                    hx = (top[high], dtop[high], curv[high]) if kt else (np.zeros(0),) * 3
+                    h3 = third[high] if kt else None
+                    extra = (tuple(v[moving] for v in psub), xm, sign[moving])
+                    lo, hi, lo_d, hi_d, ok, more = _table_split(
+                        ev, hsub, *hx, extra=extra, third=h3
+                    )
+                    root[moving], doubt[moving], good[moving] = more
+                    if ok.any():
+                        hi_, hci = ti[high][ok], tci[high][ok]
+                        r, q = rows[hi_], cols[hci]
+                        out["lo"][r, q], out["hi"][r, q] = lo[ok], hi[ok]
+                        out["lo_doubt"][r, q], out["hi_doubt"][r, q] = lo_d[ok], hi_d[ok]
+                        out["top"][r, q] = hx[0][ok]
+                        out["dtop"][r, q] = np.inf
+                        out["done"][r, q] = True
+                if k:
+                    lo, hi = root[:k], root[k:]
+                    ok = good[:k] & good[k:] & (lo < hi)
+                    at = np.maximum(np.abs(cp + hi), 1.0)
+                    ok &= hi - lo > np.where(near[ci], _NEAR_GAP, 1e-8) * at
+                    r, q = rows[ri[ok]], cols[ci[ok]]
+                    out["lo"][r, q], out["hi"][r, q] = lo[ok], hi[ok]
+                    out["lo_doubt"][r, q], out["hi_doubt"][r, q] = doubt[:k][ok], doubt[k:][ok]
+                    out["top"][r, q] = 0.5 * (lo[ok] + hi[ok])  # (D > 0 between the edges)
+                    out["dtop"][r, q] = np.inf
+                    out["done"][r, q] = True
+            # the entries left (mostly a maximiser at an end of the undamped interval, at small
+            # depths): no interval wherever the bound of :func:`_no_interval` proves it
+            ri, ci = np.nonzero(~out["done"][rows][:, cols] & ~near)
             if ri.size:
                 sub = (c[ri, ci],) + tuple(v[ci] for v in params)
-                top, dtop, ok = _table_top(ev, form, sub, top0[ri, ci])
-                r, q = rows[ri[ok]], cols[ci[ok]]
-                out["top"][r, q], out["dtop"][r, q] = top[ok], dtop[ok]
-                out["done"][r, q] = True
+                ok = _no_interval(form, *sub)
+                out["done"][rows[ri[ok]], cols[ci[ok]]] = True
     return out
 
 
-def _table_edges(ev, args, x, sign):
-    """Zeros of ``D`` from ``x`` near them (:func:`_table_friction`): at most
-    :data:`_TABLE_STEPS` steps of :func:`_step`, each point dropped once the estimate of order 4
+#: :func:`_no_interval` bounds ``D`` on this many pieces of the range where it can be positive,
+#: where one piece is not enough (next to a threshold)
+_NO_INTERVAL_PIECES = 32
+
+
+def _no_interval(parity, c, r2, u, beta, g):
+    """Where ``D < 0`` on the whole window, proved by a bound (no interval there; the entry's
+    edges NaN, its maximum not needed).  The normal form is ``D = r2 f(beta x)^2 - u sinh(g
+    x)^2 - sin(theta)^2``, ``x = c + theta``, ``f`` a sine or cosine
+    (:class:`verify.params.NormalParams`).  Where ``D >= 0``, ``sin(theta)^2 <= r2 f(beta x)^2``,
+    so ``|theta| <= s_0 = asin(sqrt(r2))`` in the window.  On ``[-s, s]``, ``x >= c - s`` and ``D
+    <= P - u sinh(g (c - s))^2`` (``sinh^2`` grows with ``x > 0``), ``P`` the largest ``r2 f(beta
+    x)^2`` there (:func:`_f2_peak`): an entry is taken where that is negative with a margin (the
+    sinh term above ``2 P``, far above the rounding of either side).  Elsewhere ``|theta| <= s_1
+    = asin(sqrt(P))`` where ``D >= 0``, and ``[-s_1, s_1]`` is cut into
+    :data:`_NO_INTERVAL_PIECES` pieces, on each of which ``D`` is at most ``P_i - u sinh(g
+    x_i)^2 - sin(t_i)^2`` (``P_i`` as ``P``, ``x_i`` the piece's left end, ``t_i`` its ``theta``
+    nearest 0): an entry is taken where every piece's bound is below minus ``1e-10`` times the
+    sizes of its terms.  The terms are the indicator's own (the compiled form at ``theta = 0``
+    with ``u = 0`` or ``r2 = 0``, and with ``r2 = u = 0`` for ``sin^2``); ``s_0``, ``s_1`` are
+    rounded up (by more than the rounding of ``c -+ s``)."""
+    form = indicator(parity).compiled("numpy", 0)
+    with np.errstate(invalid="ignore", over="ignore", divide="ignore"):
+        pad = 1e-15 * c
+        s = np.arcsin(np.sqrt(np.clip(r2, 0.0, 1.0))) * (1.0 + 1e-12) + pad
+        peak, damp = _f2_peak(form, c - s, c + s, r2, u, beta, g)
+        taken = (c - s > 0) & (r2 >= 0) & (2.0 * peak < damp)
+        rest = np.nonzero(~taken & (peak < r2) & (r2 >= 0))[0]
+        if rest.size == 0:
+            return taken
+        N = _NO_INTERVAL_PIECES
+        k = rest.size
+        cc, rr, uu, bb, gg = (v[rest] for v in (c, r2, u, beta, g))
+        s = np.arcsin(np.sqrt(np.clip(peak[rest], 0.0, 1.0))) * (1.0 + 1e-12) + pad[rest]
+        e = s[:, None] * (np.arange(N + 1) * (2.0 / N) - 1.0)  # the pieces' ends in theta
+        e[:, 0], e[:, N] = -s, s
+        X = cc[:, None] + e  # ... in x (each end shared by its two pieces)
+        rep = tuple(np.repeat(v, N) for v in (rr, uu, bb, gg))
+        a, b = e[:, :-1].ravel(), e[:, 1:].ravel()
+        near = np.where(a * b <= 0, 0.0, np.minimum(np.abs(a), np.abs(b)))
+        P, S, sin2 = _f2_peak(form, X[:, :-1].ravel(), X[:, 1:].ravel(), *rep, theta=near)
+        bound = P - S - sin2
+        ok = (X[:, :-1].ravel() > 0) & (bound < -1e-10 * (P + S + sin2 + rep[0]))
+        taken[rest] = ok.reshape(k, N).all(axis=1)
+    return taken
+
+
+def _f2_peak(form, x1, x2, r2, u, beta, g, *, theta=None):
+    """``(P, S)``: an upper bound ``P`` of ``r2 f(beta x)^2`` on ``[x1, x2]`` and ``S = u sinh(g
+    x1)^2`` (:func:`_no_interval`; ``form`` the compiled indicator, ``r2 f(beta x)^2 - u sinh(g
+    x)^2`` at ``theta = 0``, taken with ``u = 0`` or ``r2 = 0``): ``f^2`` is monotone between the
+    multiples of ``pi/2`` of ``beta x``, so its largest value is at an end or at the one multiple
+    inside (``r2`` where there are more); the multiples are counted on the range widened by a
+    relative 1e-12 and the bound raised by what ``f^2`` can change over that.  ``theta``: also
+    ``sin(theta)^2`` there (the form with ``r2 = u = 0``), in the same call: ``(P, S, sin^2)``."""
+    k = x1.size
+    zero = np.zeros(k)
+    q = 2.0 / math.pi
+    y1, y2 = beta * x1 * q, beta * x2 * q  # the ends in units of pi/2
+    j1, j2 = np.floor(y1 * (1 - 1e-12)), np.floor(y2 * (1 + 1e-12))
+    mid = j2 / (q * beta)  # the multiple of pi/2 inside (where there is one)
+    cat = np.concatenate
+    blocks = 4 if theta is None else 5
+    got = form(
+        np.zeros(4 * k) if theta is None else cat([np.zeros(4 * k), theta]),
+        cat([x1, x2, mid, x1, x1][:blocks]),
+        cat([r2, r2, r2, zero, zero][:blocks]),
+        cat([zero, zero, zero, u, zero][:blocks]),
+        cat([beta] * blocks),
+        cat([g] * blocks),
+    )
+    got = np.asarray(got, float)
+    ends = np.maximum(got[:k], got[k : 2 * k])
+    ends = np.where(j2 == j1, ends, np.maximum(ends, got[2 * k : 3 * k]))
+    peak = np.where((j2 - j1 <= 1) & (beta > 0), ends + 1e-9 * r2 * (1 + y2), r2)
+    if theta is None:
+        return peak, -got[3 * k :]
+    return peak, -got[3 * k : 4 * k], -got[4 * k :]
+
+
+def _table_edges(ev, args, x, sign, steps: int = _TABLE_STEPS, *, first=None, left=False):
+    """Zeros of ``D`` from ``x`` near them (:func:`_table_friction`): at most ``steps`` (default
+    :data:`_TABLE_STEPS`) steps of :func:`_step`, each point dropped once the estimate of order 4
     of its error is below :data:`_EDGE_RTOL` times ``max(c + theta, 1)`` (its step below
     :data:`_EDGE_STEP`): ``(roots, doubt, good)`` as :func:`_edges` (``good``: converged inside
-    the window, with ``sign D`` increasing through the zero)."""
+    the window, with ``sign D`` increasing through the zero).  ``first``: the evaluation at ``x``
+    (``ev(x, *args)``, done already); ``left=True``: also the indices of the points still moving
+    after the last step and their next iterates."""
     root = np.full(x.size, np.nan)
     doubt = np.zeros(x.size, bool)
     good = np.zeros(x.size, bool)
     idx = np.arange(x.size)
     sub, sg = args, sign
     sc = _EDGE_RTOL * np.maximum(args[0] + x, 1.0)
-    for _ in range(_TABLE_STEPS):
-        D, D1, D2, D3, D4, T0, T1 = ev(x, *sub)
+    for it in range(steps):
+        D, D1, D2, D3, D4, T0, T1 = ev(x, *sub) if it or first is None else first
         s, err = _step(D, D1, D2, D3, D4)
         done = (err <= sc) & (np.abs(s) <= _EDGE_STEP)
         j = np.nonzero(done)[0]
@@ -1201,25 +1358,35 @@ def _table_edges(ev, args, x, sign):
             good[idx[j]] = (sg[j] * slope > 0) & (np.abs(r) < _HALF_PI)
         keep = ~done & np.isfinite(s)
         if not keep.any():
+            rest = (idx[:0], x[:0])
             break
         idx, x, sg, sc = idx[keep], (x - s)[keep], sg[keep], sc[keep]
         sub = tuple(v[keep] for v in sub)
-    return root, doubt, good
+    else:
+        rest = (idx, x)
+    return (root, doubt, good, rest) if left else (root, doubt, good)
 
 
-def _table_top(ev, parity, args, x):
+def _table_top(ev, parity, args, x, *, first=None):
     """The maximiser of ``D`` from ``x`` near it (:func:`_table_friction`): at most
     :data:`_TABLE_STEPS` Halley steps on ``D'``, a point dropped once its step is below
     :data:`_TOP_STEP` (``D`` there from its Taylor polynomial, as :func:`_maximiser`):
-    ``(top, D(top), ok)``, ``ok`` where that is a maximum (``D'' < 0``) inside the window, ``D``
-    below minus its rounding bound and the undamped indicator above ``1e-12``."""
+    ``(top, D(top), ok, high, (D''(top), D'''(top)))``, ``ok`` where that is a maximum
+    (``D'' < 0``) inside the window, ``D`` below minus its rounding bound and the undamped
+    indicator above ``1e-12``;
+    ``high`` where it is a maximum inside the window with ``D`` above its rounding bound (the
+    interval exists: :func:`_table_split` finds its edges).  ``first``: the evaluation at ``x``,
+    done already."""
     top = np.full(x.size, np.nan)
     dtop = np.full(x.size, np.nan)
+    curv = np.full(x.size, np.nan)
+    third = np.full(x.size, np.nan)
     ok = np.zeros(x.size, bool)
+    high = np.zeros(x.size, bool)
     idx = np.arange(x.size)
     sub = args
-    for _ in range(_TABLE_STEPS):
-        D, D1, D2, D3, _D4, T0, T1 = ev(x, *sub)
+    for it in range(_TABLE_STEPS):
+        D, D1, D2, D3, _D4, T0, T1 = ev(x, *sub) if it or first is None else first
         s = D1 / D2
         s = s / (1.0 - 0.5 * s * D3 / D2)
         done = np.abs(s) <= _TOP_STEP
@@ -1231,7 +1398,11 @@ def _table_top(ev, parity, args, x):
             at = np.abs(sub[0][j] + x[j])
             noise = NOISE_ULPS * 2.0**-53 * (np.abs(T0[j]) + at * np.abs(T1[j]))
             top[idx[j]], dtop[idx[j]] = t, d
-            ok[idx[j]] = (D2[j] < 0) & (d < -noise) & (np.abs(t) < _HALF_PI)
+            curv[idx[j]] = D2[j] - sj * D3[j]
+            third[idx[j]] = D3[j]
+            inner = (D2[j] < 0) & (np.abs(t) < _HALF_PI)
+            ok[idx[j]] = inner & (d < -noise)
+            high[idx[j]] = inner & (d > noise)
         keep = ~done & np.isfinite(s)
         if not keep.any():
             break
@@ -1239,11 +1410,52 @@ def _table_top(ev, parity, args, x):
         sub = tuple(v[keep] for v in sub)
     sel = np.nonzero(ok)[0]
     if sel.size:  # the undamped indicator there: D with u = g = 0 (the same derived form)
-        c, r2, _u, beta, _g = (v[sel] for v in args)
+        c, r2, _u, beta, _g = (v[sel] for v in args[:5])
         zero = np.zeros(sel.size)
         d0 = indicator(parity).compiled("numpy", 0)(top[sel], c, r2, zero, beta, zero)
         ok[sel] = np.asarray(d0, float) > 1e-12
-    return top, dtop, ok
+    return top, dtop, ok, high, (curv, third)
+
+
+#: the steps :func:`_table_split` takes at most from its starts (next to a threshold the edges are
+#: a near-double root; each step runs on the few points still moving)
+_SPLIT_STEPS = 6
+
+
+def _table_split(ev, args, top, dtop, curv, extra=None, third=None):
+    """Both edges of the entries whose maximum of ``D`` is above its rounding bound at ``top``
+    (:func:`_table_top`: the start tables had no edges at all four nodes, next to a threshold):
+    from ``top -+ sqrt(2 D(top)/|D''(top)|)`` (the parabola through the maximum; with ``third``,
+    ``D'''(top)``, two Newton steps on the cubic from there), at most
+    :data:`_SPLIT_STEPS` steps of :func:`_step` (:func:`_table_edges`): ``(lower, upper, lower
+    doubt, upper doubt, good)``, ``good`` where both converged inside the window with the edges'
+    slopes on either side of ``top`` (as the pair path of :func:`_table_friction` takes them).
+    ``extra = (args, x, sign)``: more zeros to iterate in the same calls (the table path's edges
+    that its first step did not converge), returned last as ``(roots, doubt, good)``."""
+    k = top.size
+    half = np.sqrt(2.0 * dtop / -curv)
+    h = np.concatenate([-half, half])
+    if third is not None:  # two Newton steps on the cubic through the maximum
+        d, c2, c3 = (np.concatenate([v, v]) for v in (dtop, 0.5 * curv, third / 6.0))
+        for _ in range(2):
+            hn = h - (d + h * h * (c2 + h * c3)) / (h * (2.0 * c2 + 3.0 * h * c3))
+            h = np.where(np.isfinite(hn) & (hn * h > 0), hn, h)
+    x0 = [top + h[:k], top + h[k:]]
+    sub = [(v, v) for v in args]
+    sign = [np.ones(k), -np.ones(k)]
+    if extra is not None:
+        x0.append(extra[1])
+        sub = [(*pair, v) for pair, v in zip(sub, extra[0], strict=True)]
+        sign.append(extra[2])
+    sub = tuple(np.concatenate(v) for v in sub)
+    root, doubt, good = _table_edges(
+        ev, sub, np.concatenate(x0), np.concatenate(sign), steps=_SPLIT_STEPS
+    )
+    lo, hi = root[:k], root[k : 2 * k]
+    ok = good[:k] & good[k : 2 * k] & (lo < top) & (top < hi)
+    ok &= hi - lo > 1e-8 * np.maximum(np.abs(args[0] + hi), 1.0)
+    more = (root[2 * k :], doubt[2 * k :], good[2 * k :])
+    return lo, hi, doubt[:k], doubt[k : 2 * k], ok, more
 
 
 # ---------------------------------------------------------------------------------------------
@@ -1382,7 +1594,7 @@ def boundary_grid(orders, m, *, Q=None, damping="exact", system="pendulum", duty
     The double path serves ``1 - m >= 2**-53`` (every double depth) and ``m >= 2**-1022``; exact
     depths outside, and the points next to a threshold or a closing gap where the double
     computation cannot decide the edges to that bound (a double root of the indicator), are
-    proved in ball arithmetic (:func:`_confirmed`) or, where that fails, computed by the
+    proved in ball arithmetic (:func:`_confirm`) or, where that fails, computed by the
     certified route (:func:`verify.solve.boundary`).  ``tests/test_grid.py`` and
     ``tests/test_grid_hard.py`` check the claim against the certified edges on log-spaced samples
     (``1 - m`` down to ``2**-53``, ``m`` down to 1e-300, orders 1-6 and up to 100).  The order-1
@@ -1438,13 +1650,11 @@ def boundary_grid(orders, m, *, Q=None, damping="exact", system="pendulum", duty
             out[:, :, cols] = part
         doubt[:, ~served] = True
     for i, j in zip(*np.nonzero(doubt), strict=True):
-        edges = out[i, :, j]
-        if (
-            Qx is not None
-            and served[j]
-            and _confirmed(orders[i], dep.exact(j), Qx, damping, sysv, edges)
-        ):
-            continue
+        if Qx is not None and served[j]:
+            got = _confirm(orders[i], dep.exact(j), Qx, damping, sysv, out[i, :, j])
+            if got is not None:
+                out[i, :, j] = got
+                continue
         out[i, :, j] = _certified_point(orders[i], dep.exact(j), Qx, damping, sysv)
     return out[..., 0] if scalar else out
 
@@ -1463,50 +1673,69 @@ def _blocks(cols, size: int):
         yield cols[start : start + size]
 
 
-#: working precision (bits) of :func:`_confirmed`
+#: working precision (bits) of :func:`_confirm`
 CONFIRM_BITS = 128
-#: :func:`_confirmed` proves each edge within this relative distance of the exact one (a proof,
+#: :func:`_confirm` proves each edge within this relative distance of the exact one (a proof,
 #: not an estimate: it needs no margin below the bound other than for the checks' own rounding,
 #: which ball arithmetic includes)
 CONFIRM_REL = 0.8 * ERROR_BOUND
 
 
 def _confirmed(n: int, m: Fraction, Q, damping: str, system, edges) -> bool:
-    """Whether the double edges ``edges = (lower, upper)`` (``T/T0``) of a friction entry that the
-    error estimate could not bound are within a relative :data:`CONFIRM_REL` of the exact edges,
-    proved in ball arithmetic: the indicator ``D`` of the normal form, with the parameters
-    enclosed at the exact depth, is negative at ``lower (1 - d)`` and positive at ``lower
-    (1 + d)``, and positive at ``upper (1 - d)`` and negative at ``upper (1 + d)`` (``d =``
-    :data:`CONFIRM_REL`, ``theta = pi (T w - n/2)``).  So each edge has a zero of ``D`` within
-    the bound, and the interval exists; that these zeros are the edges is the structure the
-    double path relies on everywhere (one zero of ``D`` each side of its maximiser, inside the
-    undamped interval).
-    ``False`` (the entry then goes to the certified route) where a sign is not decided, the
+    """Whether :func:`_confirm` proves the double edges ``edges = (lower, upper)`` (``T/T0``) of a
+    friction entry within a relative :data:`CONFIRM_REL` of the exact edges."""
+    return _confirm(n, m, Q, damping, system, edges) is not None
+
+
+def _confirm(n: int, m: Fraction, Q, damping: str, system, edges):
+    """The edges ``(lower, upper)`` (``T/T0``, doubles) of a friction entry whose double edges
+    ``edges`` the error estimate could not bound, where a proof in ball arithmetic puts them
+    within a relative :data:`CONFIRM_REL` of the exact edges; else ``None``.  The proof: the
+    indicator ``D`` of the normal form, with the parameters enclosed at the exact depth, is
+    negative at ``lower (1 - d)`` and positive at ``lower (1 + d)``, and positive at ``upper (1 -
+    d)`` and negative at ``upper (1 + d)`` (``d =`` :data:`CONFIRM_REL`, ``theta = pi (T w -
+    n/2)``).  So each edge has a zero of ``D`` within the bound, and the interval exists; that
+    these zeros are the edges is the structure the double path relies on everywhere (one zero of
+    ``D`` each side of its maximiser, inside the undamped interval).  Each edge returned is the
+    secant root of ``D`` through those two points (at the working precision, rounded once; ``D``
+    is smooth and its zero simple there, so it lands within about an ulp of the exact edge where
+    the double edge, set by the rounding of ``D`` near a double root, may be off by up to the
+    bound), kept inside the proved bracket.
+    ``None`` (the entry then goes to the certified route) where a sign is not decided, the
     entry is NaN, or the normal form does not apply (a half critically or over-damped)."""
     from flint import arb, ctx
 
     lo, hi = (float(e) for e in edges)
     if not (math.isfinite(lo) and math.isfinite(hi) and lo < hi):
-        return False
+        return None
     Qf = Fraction(Q) if not isinstance(Q, Fraction) else Q
     m = Fraction(m)
     a, b, p, q = Qf.numerator, Qf.denominator, m.numerator, m.denominator
     if damping == "exact" and not (4 * a * a - b * b) * q > p * b * b:  # 4 Q^2 - 1 - m > 0
-        return False
+        return None
     form = indicator(int(_parity(n))).compiled("arb", 0)
+    out = []
     with ctx.workprec(CONFIRM_BITS):
         P = normal_params(m, Qf, damping, backend("arb"), system)
         half_pi = arb.pi() / 2
-        c = n * half_pi
+        pi, n2, w = 2 * half_pi, arb(n) / 2, P.w
+        args = (n * half_pi, P.r2, P.u, P.beta, P.g)
         d = arb(CONFIRM_REL)  # the double, exactly
+        scales = ((-1, 1 - d), (1, 1 + d))
         for T, first in ((lo, -1), (hi, 1)):
-            for side in (-1, 1):
-                theta = 2 * half_pi * (arb(T) * (1 + side * d) * P.w - arb(n) / 2)
-                v = form(theta, c, P.r2, P.u, P.beta, P.g)
+            ends = []
+            aT = arb(T)
+            for side, scale in scales:
+                Tx = aT * scale
+                v = form(pi * (Tx * w - n2), *args)
                 want = first * side  # lower: -, +; upper: +, -
                 if not (v < 0 if want > 0 else v > 0):
-                    return False
-    return True
+                    return None
+                ends.append((Tx.mid(), v.mid()))
+            (t1, v1), (t2, v2) = ends  # D is close to linear in T across the bracket
+            root = float(t1 - v1 * (t2 - t1) / (v2 - v1))
+            out.append(root if float(t1) <= root <= float(t2) else T)
+    return out[0], out[1]
 
 
 def _certified_point(n: int, m: Fraction, Q, damping: str, system=None) -> tuple[float, float]:
@@ -1723,7 +1952,7 @@ def _fill_normal(
         # the edges from their own start tables where that proves them (the depths away from
         # m = 1); the bracketed path for the rest, its brackets at those depths alone
         sysv = system or _paper_system()
-        far = np.nonzero(P.bm >= NEAR_ONE)[0]
+        far = np.nonzero(P.bm >= TABLE_NEAR_MIN)[0]
         fast = _table_friction(orders_arr, P, np.sqrt(om), sysv, friction, far)
         need = np.nonzero(~fast["done"].all(axis=0))[0]
         Pn = NormalParams(*(getattr(P, f.name)[need] for f in fields(NormalParams)))
@@ -1731,45 +1960,58 @@ def _fill_normal(
             t1, t2 = _damped_brackets(orders_arr, Pn, om[need], sysv, friction)
     else:
         t1, t2 = normal_edges(orders_arr[:, None], P)  # the undamped roots of all orders at once
+    no = len(orders)
+    if fast is None:
+        res = {}
+    else:
+        res = fast
     for parity in (1, 0):
         rows = np.nonzero(orders_arr % 2 == parity)[0]
         if rows.size == 0:
             continue
-        n = orders_arr[rows][:, None]
         if fast is None:
-            res = _damped_normal(n, P, edges=(t1[rows], t2[rows]), split=True)
+            got = _damped_normal(
+                orders_arr[rows][:, None], P, edges=(t1[rows], t2[rows]), split=True
+            )
+            for k in _RESULT_KEYS:
+                if k not in res:
+                    res[k] = np.empty((no, ms.size), got[k].dtype)
+                res[k][rows] = got[k]
         else:
-            res = {k: fast[k][rows] for k in _RESULT_KEYS}
             ri, ci = np.nonzero(~fast["done"][rows][:, need])
             if ri.size:  # the entries left, one by one (orders and depths flattened)
                 Ps = NormalParams(*(getattr(Pn, f.name)[ci] for f in fields(NormalParams)))
                 ends = (t1[rows][ri, ci], t2[rows][ri, ci])
                 got = _damped_normal(orders_arr[rows][ri], Ps, ends, split=True, pair=False)
                 for k in _RESULT_KEYS:
-                    res[k][ri, need[ci]] = got[k]
-        near = near_one_forms()[2]
-        lo = _polish_near_one(res["lo"], orders_arr[rows], P, near)
-        hi = _polish_near_one(res["hi"], orders_arr[rows], P, near)
-        base = n / 2.0
-        out[rows, 0, :] = (base + lo / math.pi) / P.w
-        out[rows, 1, :] = (base + hi / math.pi) / P.w
-        top_doubt, lo_doubt, hi_doubt = _normal_doubt(n, P, res, lo, hi)
-        for k, i in enumerate(rows):
-            if orders_arr[i] != 1:
-                continue
-            near = (_HALF_PI + lo[k] < ORDER1_X_DAMPED) | (P.bm < NEAR_ONE)
-            cols = np.nonzero(np.isfinite(lo[k]) & near)[0]
-            if cols.size:
-                x, unsure = _order1_lower(
-                    P,
-                    cols,
-                    _HALF_PI + res["top"][k, cols],
-                    x_theta=_HALF_PI + lo[k, cols],
-                    doubt=True,
-                )
-                out[i, 0, cols] = x / (math.pi * P.w[cols])
-                lo_doubt[k, cols] = unsure
-        doubt[rows] = top_doubt | lo_doubt | hi_doubt
+                    res[k][rows[ri], need[ci]] = got[k]
+    # every order and both edges at once from here
+    n = orders_arr[:, None]
+    both = _polish_near_one(
+        np.concatenate([res["lo"], res["hi"]]),
+        np.concatenate([orders_arr] * 2),
+        P,
+        near_one_forms()[2],
+    )
+    lo, hi = both[:no], both[no:]
+    base = n / 2.0
+    out[:, 0, :] = (base + lo / math.pi) / P.w
+    out[:, 1, :] = (base + hi / math.pi) / P.w
+    top_doubt, lo_doubt, hi_doubt = _normal_doubt(n, P, res, lo, hi)
+    for i in np.nonzero(orders_arr == 1)[0]:
+        near = (_HALF_PI + lo[i] < ORDER1_X_DAMPED) | (P.bm < NEAR_ONE)
+        cols = np.nonzero(np.isfinite(lo[i]) & near)[0]
+        if cols.size:
+            x, unsure = _order1_lower(
+                P,
+                cols,
+                _HALF_PI + res["top"][i, cols],
+                x_theta=_HALF_PI + lo[i, cols],
+                doubt=True,
+            )
+            out[i, 0, cols] = x / (math.pi * P.w[cols])
+            lo_doubt[i, cols] = unsure
+    doubt[:] = top_doubt | lo_doubt | hi_doubt
     return doubt
 
 
@@ -1883,13 +2125,14 @@ def _normal_doubt(n, P, res, lo, hi):
     shape = np.broadcast_shapes(lo[:, cols].shape, *(np.shape(v) for v in params))
     args = tuple(_full(v, shape) for v in params)
     nearf = near_one_forms()[2]
-    with np.errstate(invalid="ignore", over="ignore"):
-        for bad, theta in zip(edges, (lo, hi), strict=True):
-            t = _full(theta[:, cols], shape)
-            sel = np.isfinite(t)
-            part = np.zeros(shape, bool)
-            if sel.any():
-                sub = tuple(a[sel] for a in args)
-                part[sel] = _root_doubt(nearf, t[sel], sub, sub[0] + t[sel])
-            bad[:, cols] = part
+    with np.errstate(invalid="ignore", over="ignore"):  # both edges in one call
+        t = np.concatenate([_full(lo[:, cols], shape), _full(hi[:, cols], shape)])
+        args = tuple(np.concatenate([a, a]) for a in args)
+        sel = np.isfinite(t)
+        part = np.zeros(t.shape, bool)
+        if sel.any():
+            sub = tuple(a[sel] for a in args)
+            part[sel] = _root_doubt(nearf, t[sel], sub, sub[0] + t[sel])
+        k = shape[0]
+        edges[0][:, cols], edges[1][:, cols] = part[:k], part[k:]
     return undecided, edges[0], edges[1]
