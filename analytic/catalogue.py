@@ -18,7 +18,7 @@ from functools import lru_cache
 
 from .cache import disk_cached
 
-__all__ = ["Row", "row", "catalogue", "PROVIDERS", "equation_key"]
+__all__ = ["Row", "row", "catalogue", "PROVIDERS", "equation_key", "written"]
 
 #: modules whose import registers providers
 PROVIDERS = ("analytic.catalogue_rows", "analytic.catalogue_series")
@@ -67,6 +67,15 @@ def row(equation: str):
         return fn
 
     return deco
+
+
+def written(lhs, rhs):
+    """The equation ``lhs = rhs`` as written, for printing or comparing (sympy's ``Eq`` without
+    its attempt to decide the equation, a symbolic test that costs more than the rest of building
+    it; a row's verdict comes from :mod:`analytic.identity`, never from ``Eq``)."""
+    import sympy as sp
+
+    return sp.Eq(lhs, rhs, evaluate=False)
 
 
 def equation_key(label: str) -> tuple:

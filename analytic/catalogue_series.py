@@ -15,7 +15,7 @@ from functools import lru_cache
 
 import sympy as sp
 
-from .catalogue import Row, row
+from .catalogue import Row, row, written
 from .closings import closings
 from .expansions import edge_series, small_m_parameters
 from .identity import prove_zero
@@ -325,7 +325,10 @@ def _printed_threshold_condition(label: str):
 def _threshold_row(label: str, n: int, title: str) -> Row:
     eq, tuning = _printed_threshold_condition(label)
     # expand the abbreviations (p = exp(-gamma T), ...) first, then put T at exact tuning
-    residual = physical((eq.lhs - eq.rhs).subs(derived_quantities()).subs(S.T, tuning))
+    # (symbols replaced by expressions free of them: ``xreplace``, one walk each)
+    residual = physical(
+        (eq.lhs - eq.rhs).xreplace(derived_quantities()).xreplace({S.T: tuning})
+    )
     terms = 6 if n % 2 else 10
     lam_printed = solve_for_lambda(residual, n, terms)
     lam_tuning = tuning_threshold(n, terms, "paper")
@@ -369,7 +372,7 @@ def _threshold_row(label: str, n: int, title: str) -> Row:
     return Row(
         label,
         status,
-        sp.latex(eq) + rf"\quad\text{{at }}{sp.latex(sp.Eq(S.T, tuning))}",
+        sp.latex(eq) + rf"\quad\text{{at }}{sp.latex(written(S.T, tuning))}",
         _latex_tuple(derived),
         how,
         title,
@@ -384,6 +387,18 @@ def _eq37() -> Row:
 @row("42")
 def _eq42() -> Row:
     return _threshold_row("42", 2, "Threshold condition of the second interval")
+
+
+def _limit_at_zero(expr: sp.Expr, var: sp.Symbol) -> sp.Expr:
+    """``lim expr`` as ``var -> 0``: for a quotient of polynomials in ``var`` whose denominator
+    does not vanish at 0 (a threshold series ``Q_min m^p = 1/lam(m)``, ``lam(0) > 0``) its value
+    there, the definition of continuity; otherwise sympy's ``limit``."""
+    num, den = sp.fraction(sp.together(expr))
+    if num.is_polynomial(var) and den.is_polynomial(var):
+        d0 = den.xreplace({var: sp.Integer(0)})
+        if d0.is_zero is False:
+            return num.xreplace({var: sp.Integer(0)}) / d0
+    return sp.limit(expr, var, 0)  # pragma: no cover - every threshold series is of that form
 
 
 def _mmin_row(label: str, n: int, printed_Qmin: sp.Expr, printed_mmin: sp.Expr, title: str) -> Row:
@@ -402,7 +417,7 @@ def _mmin_row(label: str, n: int, printed_Qmin: sp.Expr, printed_mmin: sp.Expr, 
             p_series = sp.expand((printed_mmin**2).subs(Q, 1 / inv))
             ok, k, a, b, vs = compare_through(p_series, d_series, inv, 1)
             nxt = next_term(d_series, inv, 1).subs(inv, 1 / Q)
-        lead_Q = sp.simplify(sp.limit(th.Q_min * m ** (1 if n % 2 else 2), m, 0))
+        lead_Q = sp.simplify(_limit_at_zero(th.Q_min * m ** (1 if n % 2 else 2), m))
         okQ = prove_zero(sp.simplify(lead_Q - printed_Qmin * m ** (1 if n % 2 else 2))).holds
         ok_all = ok_all and ok and okQ
         what = "$m_{\\min}$" if n % 2 else "$m_{\\min}^2$"
@@ -647,9 +662,9 @@ def _sec5() -> Row:
     printed = sp.latex(sp.Symbol(r"T_1 : T_2 \in \{2:1,\ 3:1,\ 3:2\}"))
     derived = sp.latex(
         sp.Tuple(
-            sp.Eq(S.omega1 * S.T / 2, sp.Symbol("a") * pi),
-            sp.Eq(S.omega2 * S.T / 2, sp.Symbol("b") * pi),
-            sp.Eq(
+            written(S.omega1 * S.T / 2, sp.Symbol("a") * pi),
+            written(S.omega2 * S.T / 2, sp.Symbol("b") * pi),
+            written(
                 m,
                 (sp.Symbol("b") ** 2 - sp.Symbol("a") ** 2)
                 / (sp.Symbol("b") ** 2 + sp.Symbol("a") ** 2),

@@ -23,7 +23,7 @@ from functools import lru_cache
 import sympy as sp
 
 from .cache import disk_cached
-from .identity import Verdict, prove_multiple, prove_zero
+from .identity import Verdict, prove_multiple, prove_zero, vanishes
 from .model import Damping, S, derived_quantities, physical
 from .normal_form import edge_factor_link
 from .stitching import EdgeKind, Parity, edge_system, general_system, paper_system
@@ -142,13 +142,12 @@ def _edge_chain(kind: EdgeKind, numbers: tuple[str, str, str, str, str], n0: int
     if w1 in sp.Mul.make_args(rhs):  # the bob-down factor (1+m)^2 omega_1 on the left, as printed
         lhs, rhs = rhs, lhs
     cross = sp.expand(lhs - rhs)
-    check = prove_zero(cross - det)
     steps.append(
         Step(
             numbers[2],
             _eq(lhs, rhs),
             "determinant of the two conditions = 0",
-            check if check.holds else prove_zero(cross + det),
+            _equal_up_to_sign(cross, det),
         )
     )
     # product to sum: the per-edge factor in q, omega_av, Delta omega
@@ -190,6 +189,17 @@ def _edge_chain(kind: EdgeKind, numbers: tuple[str, str, str, str, str], n0: int
         tuple(x for x in numbers if x),
         tuple(steps),
     )
+
+
+def _equal_up_to_sign(a: sp.Expr, b: sp.Expr) -> Verdict:
+    """The verdict that ``a = b``, else that of ``a = -b``: exact identities are looked for on
+    both signs first (:func:`~analytic.identity.vanishes`), so that the numeric route of
+    :func:`~analytic.identity.prove_zero` is taken only where neither sign is one."""
+    for c in (b, -b):
+        if vanishes(a - c):
+            return Verdict(True, "symbolic")
+    check = prove_zero(a - b)
+    return check if check.holds else prove_zero(a + b)
 
 
 def _follows_delta(new: sp.Expr, old: sp.Expr) -> Verdict:
@@ -354,7 +364,27 @@ def stationary_initial_condition(kind: EdgeKind) -> sp.Expr:
     seg1 = edge_system(EdgeKind(kind)).segments[0]
     ratio = seg1.dphi.subs(S.t, 0) / seg1.phi.subs(S.t, 0)
     # the amplitude cancels; sin/cos of one argument becomes tan (or 1/tan)
-    return sp.trigsimp(sp.cancel(ratio))
+    return _tan_form(sp.cancel(ratio))
+
+
+def _tan_form(e: sp.Expr) -> sp.Expr:
+    """``e`` with ``sin(x)**k cos(x)**-k`` written ``tan(x)**k`` (what ``trigsimp`` makes of a
+    product with one such pair, by the definition of ``tan``); ``trigsimp`` for anything else."""
+    powers: dict = {}
+    rest = []
+    for f in sp.Mul.make_args(e):
+        b, k = f.as_base_exp()
+        if isinstance(b, (sp.sin, sp.cos)) and k.is_Integer:
+            powers[b] = k
+        else:
+            rest.append(f)
+    args = {b.args[0] for b in powers}
+    if len(powers) == 2 and len(args) == 1:
+        (x,) = args
+        k = powers.get(sp.sin(x))
+        if k is not None and powers.get(sp.cos(x)) == -k:
+            return sp.Mul(*rest, sp.tan(x) ** k)
+    return sp.trigsimp(e)  # pragma: no cover - the stationary ratios are all of that form
 
 
 def _initial_conditions() -> Chain:
