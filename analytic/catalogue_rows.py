@@ -15,7 +15,7 @@ from collections import Counter
 
 import sympy as sp
 
-from .catalogue import Row, row, written
+from .catalogue import Row, latex, row, written
 from .identity import Verdict, prove_multiple, prove_zero
 from .model import Damping, S, inertia, segment
 from .printed import CLAIMS, dphi, phi, printed
@@ -28,7 +28,7 @@ __all__ = ["difference", "compare_equations"]
 def _latex(e) -> str:
     if isinstance(e, (tuple, list)):
         return r",\quad ".join(_latex(x) for x in e)
-    return sp.latex(e)
+    return latex(e)
 
 
 def difference(a: sp.Basic, b: sp.Basic) -> list[tuple[sp.Basic, sp.Basic]]:
@@ -89,7 +89,7 @@ def _how_agrees(verdicts: list[Verdict], extra: str = "") -> str:
     text = "Printed and derived forms are the same equation"
     if facs:
         text += " up to the non-vanishing factor" + ("s " if len(facs) > 1 else " ")
-        text += ", ".join(f"${sp.latex(f)}$" for f in facs)
+        text += ", ".join(f"${latex(f)}$" for f in facs)
     if routes == {"symbolic"}:
         text += (
             "; decided symbolically (exact rational identity after expanding the abbreviations)."
@@ -111,9 +111,9 @@ def _how_differs(pe: sp.Equality, de: sp.Equality) -> str:
     parts = min(difference(pe, de), difference(pe, flipped), key=len)
     de = de if parts == difference(pe, de) else flipped
     shown = "; ".join(
-        f"printed ${sp.latex(x)}$ where the derivation gives ${sp.latex(y)}$" for x, y in parts[:3]
+        f"printed ${latex(x)}$ where the derivation gives ${latex(y)}$" for x, y in parts[:3]
     )
-    return f"Misprint: {shown}. The correct form is ${sp.latex(de)}$."
+    return f"Misprint: {shown}. The correct form is ${latex(de)}$."
 
 
 def _compare_row(label: str, title: str, derived: tuple, extra: str = "") -> Row:
@@ -356,7 +356,7 @@ def _eq23() -> Row:
         follows = compare_equations(written(Mp.det(), 0), p24).holds
         note = (
             " The printed (24) does not follow from the printed (22)-(23) (their determinant is "
-            f"${sp.latex(sp.factor(Mp.det()))}$), but does follow from the corrected (23)."
+            f"${latex(sp.factor(Mp.det()))}$), but does follow from the corrected (23)."
             if not follows
             else ""
         )
@@ -418,7 +418,7 @@ def _eq2830() -> Row:
         + _decided(vs)
         + " As the text "
         "says, the printed velocity is not the derivative of the angle: it drops "
-        f"${sp.latex(dropped)}$ "
+        f"${latex(dropped)}$ "
         "(valid for $\\gamma \\ll \\omega$). The 'exact' model keeps it.",
         "Damped segments (paper model)",
     )
@@ -609,7 +609,7 @@ def _claim15() -> Row:
     status = "agrees" if same_as_13 and sign13 < 0 else "differs"
     how = (
         f"{text} Derived: for $n = 3$ the shape (8)-(9) of eqs. (10)-(11) gives "
-        f"${sp.latex(f13)}$, whose small-$m$ root has "
+        f"${latex(f13)}$, whose small-$m$ root has "
         f"$\\Delta T {'>' if sign13 > 0 else '<'} 0$: the {side} edge. Eq. (15) with "
         "$T_{av}/2 \\to 3T_{av}/2$ "
         f"{'is' if same_as_17 else 'is not'} the equation of the other shape (16)-(17), and it is "

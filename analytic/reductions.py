@@ -171,7 +171,7 @@ def _edge_chain(kind: EdgeKind, numbers: tuple[str, str, str, str, str], n0: int
     coeff = sp.simplify(lhs_x / sp.sin(th)) if lhs_x.has(sp.sin(th)) else None
     if coeff is None or coeff.has(th):  # pragma: no cover - f(n pi/2 + x) is always +-sin x here
         raise AssertionError("unexpected form of f(n pi/2 + x)")
-    delta = _eq(sp.sin(th), sp.simplify(eps * (q - 1) / (q + 1) / coeff) * f(arg))
+    delta = _eq(sp.sin(th), _sign_ratio(eps / coeff) * f(arg))
     res_old = _residual(reduced).subs(T, n0 * Tav / 2 + DT)
     steps.append(
         Step(
@@ -222,10 +222,14 @@ def odd_order_delta_form(kind: EdgeKind, n: int | sp.Expr) -> sp.Equality:
     th = wav * DT / 2
     lhs_x = sp.expand_trig(f(n * sp.pi / 2 + th))
     coeff = sp.simplify(lhs_x / sp.sin(th))
-    return _eq(
-        sp.sin(th),
-        sp.simplify(kind.epsilon * (q - 1) / (q + 1) / coeff) * f(dw * (n * Tav / 2 + DT) / 4),
-    )
+    return _eq(sp.sin(th), _sign_ratio(kind.epsilon / coeff) * f(dw * (n * Tav / 2 + DT) / 4))
+
+
+def _sign_ratio(sign: sp.Expr) -> sp.Expr:
+    """``sign (q - 1)/(q + 1)`` simplified: for ``sign = +-1`` it is already in its simplest form
+    (``(q - 1)/(q + 1)`` or ``(1 - q)/(q + 1)``, which ``simplify`` returns unchanged)."""
+    ratio = sign * (q - 1) / (q + 1)
+    return ratio if sign in (1, -1) else sp.simplify(ratio)
 
 
 # ------------------------------------------------------------------------------- with friction
