@@ -27,6 +27,7 @@ __all__ = [
     "factor_between",
     "prove_multiple",
     "vanishes",
+    "expanded_polynomial",
     "random_points",
     "DOMAIN",
 ]
@@ -439,6 +440,21 @@ def vanishes(expr: sp.Expr) -> bool:
     """Whether ``expr`` vanishes identically, decided exactly by the symbolic route of
     :func:`prove_zero` alone (``False`` where that route does not reach zero; no numeric look)."""
     return _symbolic_zero(sp.sympify(expr))
+
+
+def expanded_polynomial(expr: sp.Expr) -> sp.Expr | None:
+    """``expand(cancel(expr))`` where the cancelled ``expr`` is a polynomial (a sum of products of
+    symbols with rational coefficients), by the exact field arithmetic of the identity checks
+    (:func:`_field_elements`) instead of sympy's ``cancel``; ``None`` where it is not one (or
+    ``expr`` is not a rational function of its symbols)."""
+    try:
+        field, parts = _fast_parts([sp.sympify(expr)])
+        elem = _element(field, *parts[0])
+    except _Unfit:
+        return None
+    if elem is None or not elem.denom.is_ground:
+        return None
+    return sp.expand(elem.as_expr())
 
 
 def random_points(symbols, count: int, seed: int = 20130101):
