@@ -88,10 +88,22 @@ def _coefficient(e: sp.Expr, var: sp.Symbol):
     return lambda k: found.get(k, sp.Integer(0))
 
 
+#: while :mod:`analytic.generate_simplified` rebuilds the stored forms: the expressions asked for
+RECORDING: list | None = None
+
+
 @lru_cache(maxsize=256)
 def _simplified(c: sp.Expr) -> sp.Expr:
-    """``simplify(c)``, once per coefficient (rows ask for the same next terms)."""
-    return sp.simplify(c)
+    """``simplify(c)``, once per expression (rows ask for the same next terms), for a printed
+    form: taken from :mod:`analytic.simplified_generated` where ``c`` is one of the stored
+    inputs (``tests/test_simplified_generated.py`` simplifies every one again and compares)."""
+    if RECORDING is not None:
+        RECORDING.append(c)
+        return sp.simplify(c)
+    from .simplified_generated import FORMS
+
+    stored = FORMS.get(sp.srepr(c))
+    return stored if stored is not None else sp.simplify(c)
 
 
 def next_term(expr: sp.Expr, var: sp.Symbol, after: int) -> sp.Expr:
@@ -359,9 +371,7 @@ def _threshold_row(label: str, n: int, title: str) -> Row:
     eq, tuning = _printed_threshold_condition(label)
     # expand the abbreviations (p = exp(-gamma T), ...) first, then put T at exact tuning
     # (symbols replaced by expressions free of them: ``xreplace``, one walk each)
-    residual = physical(
-        (eq.lhs - eq.rhs).xreplace(derived_quantities()).xreplace({S.T: tuning})
-    )
+    residual = physical((eq.lhs - eq.rhs).xreplace(derived_quantities()).xreplace({S.T: tuning}))
     terms = 6 if n % 2 else 10
     lam_printed = solve_for_lambda(residual, n, terms)
     lam_tuning = tuning_threshold(n, terms, "paper")
@@ -390,7 +400,7 @@ def _threshold_row(label: str, n: int, title: str) -> Row:
         how = text + f" The two thresholds nevertheless agree through $m^{{{terms}}}$."
         status = "agrees"
     else:
-        rel = sp.simplify((b - a) / lam_tangent.coeff(m, 0))
+        rel = _simplified((b - a) / lam_tangent.coeff(m, 0))
         how = text + (
             f" So the threshold read off the printed condition is right through relative order "
             f"$m^{{{k - 1}}}$ and wrong at $m^{{{k}}}$ ($1/Q^{{{k // p_}}}$): with "
@@ -450,8 +460,9 @@ def _mmin_row(label: str, n: int, printed_Qmin: sp.Expr, printed_mmin: sp.Expr, 
             p_series = sp.expand((printed_mmin**2).subs(Q, 1 / inv))
             ok, k, a, b, vs = compare_through(p_series, d_series, inv, 1)
             nxt = next_term(d_series, inv, 1).subs(inv, 1 / Q)
-        lead_Q = sp.simplify(_limit_at_zero(th.Q_min * m ** (1 if n % 2 else 2), m))
-        okQ = prove_zero(sp.simplify(lead_Q - printed_Qmin * m ** (1 if n % 2 else 2))).holds
+        # the leading term against the printed one, decided exactly by the identity check
+        lead_Q = _limit_at_zero(th.Q_min * m ** (1 if n % 2 else 2), m)
+        okQ = prove_zero(lead_Q - printed_Qmin * m ** (1 if n % 2 else 2)).holds
         ok_all = ok_all and ok and okQ
         what = "$m_{\\min}$" if n % 2 else "$m_{\\min}^2$"
         texts.append(
@@ -580,7 +591,7 @@ def _centre_shift(centre: sp.Expr, damping: str) -> sp.Expr:
     inv = sp.Symbol("epsilon", positive=True)
     lead = sp.expand(threshold_series(1, 3, damping=damping).m_min.subs(Q, 1 / inv)).coeff(inv, 1)
     shift = term.subs(s_, sp.sqrt(1 - m_min**2 / m**2)).subs(m_min, lead / Q)
-    return sp.simplify(shift)
+    return _simplified(shift)
 
 
 @row("40")
