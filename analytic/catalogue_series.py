@@ -47,8 +47,8 @@ def compare_through(printed: sp.Expr, derived: sp.Expr, var: sp.Symbol, order: i
     Returns ``(holds, first, printed_coeff, derived_coeff, verdicts)``: ``first`` is the lowest
     power at which they differ (``None`` if they agree through ``order``).
     """
-    a = _coefficient(sp.expand(printed), var)
-    b = _coefficient(sp.expand(derived), var)
+    a = _coefficient(printed, var)
+    b = _coefficient(derived, var)
     verdicts = []
     for k in range(order + 1):
         ca, cb = a(k), b(k)
@@ -80,8 +80,11 @@ def _coefficients(e: sp.Expr, var: sp.Symbol) -> dict[int, sp.Expr] | None:
     return {k: sp.Add(*v) for k, v in parts.items()}
 
 
+@lru_cache(maxsize=256)
 def _coefficient(e: sp.Expr, var: sp.Symbol):
-    """``k -> e.coeff(var, k)`` for an expanded ``e`` (through :func:`_coefficients`)."""
+    """``k -> expand(e).coeff(var, k)`` (through :func:`_coefficients`), once per expression
+    (rows compare the same derived series with several printed ones)."""
+    e = sp.expand(e)
     found = _coefficients(e, var)
     if found is None:
         return lambda k: e.coeff(var, k)
