@@ -190,8 +190,8 @@ def _eq7() -> Row:
         sp.Eq(Tav, T0 * printed_T, evaluate=False),
     )
     derived = (
-        sp.Eq(S.omega_av / S.omega0, sp.Add(w, sp.Order(m**7)), evaluate=False),
-        sp.Eq(Tav / T0, sp.Add(invw, sp.Order(m**7)), evaluate=False),
+        sp.Eq(S.omega_av / S.omega0, _plus_order(w, sp.Order(m**7)), evaluate=False),
+        sp.Eq(Tav / T0, _plus_order(invw, sp.Order(m**7)), evaluate=False),
     )
     how = (
         "The exact form $\\omega_{av} = (\\omega_0/2)(1/\\sqrt{1+m} + 1/\\sqrt{1-m})$ follows from "
@@ -211,6 +211,13 @@ def _eq7() -> Row:
     )
 
 
+def _plus_order(series: sp.Expr, order: sp.Expr) -> sp.Expr:
+    """``series + order`` as printed, for a truncated series and the order term just beyond its
+    last power (built as written: no term of the series is of that order, and sympy's test of
+    every term against the order term costs more than the rest of the sum)."""
+    return sp.Add(*sp.Add.make_args(series), order, evaluate=False)
+
+
 def _latex_tuple(items) -> str:
     return r",\quad ".join(latex(e) for e in items)
 
@@ -227,10 +234,10 @@ def _edge_row(
     printed = _signed_pair(printed_Tav, Tav) + _signed_pair(printed_T0, T0)
     d = derived
     shown = (
-        sp.Eq(T_lo / Tav, sp.Add(d["Tav"]["lower"], sp.Order(m**5)), evaluate=False),
-        sp.Eq(T_hi / Tav, sp.Add(d["Tav"]["upper"], sp.Order(m**5)), evaluate=False),
-        sp.Eq(T_lo / T0, sp.Add(d["T0"]["lower"], sp.Order(m**5)), evaluate=False),
-        sp.Eq(T_hi / T0, sp.Add(d["T0"]["upper"], sp.Order(m**5)), evaluate=False),
+        sp.Eq(T_lo / Tav, _plus_order(d["Tav"]["lower"], sp.Order(m**5)), evaluate=False),
+        sp.Eq(T_hi / Tav, _plus_order(d["Tav"]["upper"], sp.Order(m**5)), evaluate=False),
+        sp.Eq(T_lo / T0, _plus_order(d["T0"]["lower"], sp.Order(m**5)), evaluate=False),
+        sp.Eq(T_hi / T0, _plus_order(d["T0"]["upper"], sp.Order(m**5)), evaluate=False),
     )
     if ok:
         how = (
@@ -305,10 +312,10 @@ def _eq19_shift() -> Row:
     derived = (
         sp.Eq(
             sp.Symbol(r"\text{centre}") / T0 - sp.Rational(3, 2),
-            sp.Add(centre, sp.Order(m**5)),
+            _plus_order(centre, sp.Order(m**5)),
             evaluate=False,
         ),
-        sp.Eq((T_hi - T_lo) / T0, sp.Add(width3, sp.Order(m**5)), evaluate=False),
+        sp.Eq((T_hi - T_lo) / T0, _plus_order(width3, sp.Order(m**5)), evaluate=False),
     )
     how = (
         "The centre of the third interval lies $(9/16)\\,m^2 T_0$ below $(3/2)\\,T_0$ and its "
@@ -385,7 +392,11 @@ def _threshold_row(label: str, n: int, title: str) -> Row:
     derived = (
         sp.Eq(sp.Symbol("N"), 0, evaluate=False),
         sp.Eq(sp.Derivative(sp.Symbol("N"), S.theta), 0, evaluate=False),
-        sp.Eq(1 / (Q_min * m**p_), sp.Add(lam_tangent, sp.Order(m ** (terms + 1))), evaluate=False),
+        sp.Eq(
+            1 / (Q_min * m**p_),
+            _plus_order(lam_tangent, sp.Order(m ** (terms + 1))),
+            evaluate=False,
+        ),
     )
     where = "$T = T_{av}/2$" if label == "37" else "$T = T_{av}$"
     text = (
@@ -536,7 +547,7 @@ def _sec6_n3() -> Row:
     d = scaled_edges(3, 3, "paper")
     derived = (
         sp.Eq(m_min, th.m_min, evaluate=False),
-        sp.Eq(T_lo / Tav, sp.Add(d["lower"]["Tav"], sp.Order(m**4)), evaluate=False),
+        sp.Eq(T_lo / Tav, _plus_order(d["lower"]["Tav"], sp.Order(m**4)), evaluate=False),
     )
     how = (
         "Threshold of the third interval (tangency, paper model): $m_{\\min} = \\pi/(2Q)$ at "
@@ -618,7 +629,7 @@ def _eq40() -> Row:
     derived = (
         *_signed_pair(MP * 3 * sp.sqrt(m**2 - m_min**2) / (2 * pi), 1, (S.DT / Tav, S.DT / Tav)),
         *_signed_pair(correct, Tav),
-        sp.Eq(T_lo / Tav, sp.Add(d["lower"]["Tav"], sp.Order(m**4)), evaluate=False),
+        sp.Eq(T_lo / Tav, _plus_order(d["lower"]["Tav"], sp.Order(m**4)), evaluate=False),
     )
     if ok:
         how = "Agrees with the derived near-threshold edges through order $m$."
@@ -669,8 +680,8 @@ def _eq45() -> Row:
         *_signed_pair(printed_Tav, Tav),
     )
     derived = (
-        sp.Eq(T_lo / Tav, sp.Add(d["lower"]["Tav"], sp.Order(m**5)), evaluate=False),
-        sp.Eq(T_hi / Tav, sp.Add(d["upper"]["Tav"], sp.Order(m**5)), evaluate=False),
+        sp.Eq(T_lo / Tav, _plus_order(d["lower"]["Tav"], sp.Order(m**5)), evaluate=False),
+        sp.Eq(T_hi / Tav, _plus_order(d["upper"]["Tav"], sp.Order(m**5)), evaluate=False),
     )
     how = (
         "Near-threshold edges of the second interval in the distinguished scaling "
