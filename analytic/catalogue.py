@@ -18,7 +18,7 @@ from functools import lru_cache
 
 from .cache import disk_cached
 
-__all__ = ["Row", "row", "catalogue", "PROVIDERS", "equation_key"]
+__all__ = ["Row", "row", "catalogue", "PROVIDERS", "equation_key", "written", "latex"]
 
 #: modules whose import registers providers
 PROVIDERS = ("analytic.catalogue_rows", "analytic.catalogue_series")
@@ -67,6 +67,24 @@ def row(equation: str):
         return fn
 
     return deco
+
+
+def written(lhs, rhs):
+    """The equation ``lhs = rhs`` as written, for printing or comparing (sympy's ``Eq`` without
+    its attempt to decide the equation, a symbolic test that costs more than the rest of building
+    it; a row's verdict comes from :mod:`analytic.identity`, never from ``Eq``)."""
+    import sympy as sp
+
+    return sp.Eq(lhs, rhs, evaluate=False)
+
+
+@lru_cache(maxsize=1024, typed=True)
+def latex(expr) -> str:
+    """``sympy.latex(expr)``, printed once per expression (rows show the same equations more
+    than once: a printed form in its own row and as the target of a cross-reference)."""
+    import sympy as sp
+
+    return sp.latex(expr)
 
 
 def equation_key(label: str) -> tuple:

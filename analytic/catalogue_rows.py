@@ -15,7 +15,7 @@ from collections import Counter
 
 import sympy as sp
 
-from .catalogue import Row, row
+from .catalogue import Row, latex, row, written
 from .identity import Verdict, prove_multiple, prove_zero
 from .model import Damping, S, inertia, segment
 from .printed import CLAIMS, dphi, phi, printed
@@ -28,7 +28,7 @@ __all__ = ["difference", "compare_equations"]
 def _latex(e) -> str:
     if isinstance(e, (tuple, list)):
         return r",\quad ".join(_latex(x) for x in e)
-    return sp.latex(e)
+    return latex(e)
 
 
 def difference(a: sp.Basic, b: sp.Basic) -> list[tuple[sp.Basic, sp.Basic]]:
@@ -89,7 +89,7 @@ def _how_agrees(verdicts: list[Verdict], extra: str = "") -> str:
     text = "Printed and derived forms are the same equation"
     if facs:
         text += " up to the non-vanishing factor" + ("s " if len(facs) > 1 else " ")
-        text += ", ".join(f"${sp.latex(f)}$" for f in facs)
+        text += ", ".join(f"${latex(f)}$" for f in facs)
     if routes == {"symbolic"}:
         text += (
             "; decided symbolically (exact rational identity after expanding the abbreviations)."
@@ -111,9 +111,9 @@ def _how_differs(pe: sp.Equality, de: sp.Equality) -> str:
     parts = min(difference(pe, de), difference(pe, flipped), key=len)
     de = de if parts == difference(pe, de) else flipped
     shown = "; ".join(
-        f"printed ${sp.latex(x)}$ where the derivation gives ${sp.latex(y)}$" for x, y in parts[:3]
+        f"printed ${latex(x)}$ where the derivation gives ${latex(y)}$" for x, y in parts[:3]
     )
-    return f"Misprint: {shown}. The correct form is ${sp.latex(de)}$."
+    return f"Misprint: {shown}. The correct form is ${latex(de)}$."
 
 
 def _compare_row(label: str, title: str, derived: tuple, extra: str = "") -> Row:
@@ -144,13 +144,13 @@ def _eq1() -> Row:
     Tav_m = 2 * sp.pi / ((S.omega0 / sp.sqrt(1 + S.m) + S.omega0 / sp.sqrt(1 - S.m)) / 2)
     T_lim = sp.limit(n * Tav_m / 2, S.m, 0)
     derived = (
-        sp.Eq(sp.Symbol(r"\omega"), 2 * sp.pi / T_lim),
-        sp.Eq(S.T, T_lim.subs(S.omega0, 2 * sp.pi / S.T0)),
+        written(sp.Symbol(r"\omega"), 2 * sp.pi / T_lim),
+        written(S.T, T_lim.subs(S.omega0, 2 * sp.pi / S.T0)),
     )
     pr = printed()["1"]
     v = [
-        prove_zero(sp.simplify(pr[0].rhs - derived[0].rhs)),
-        prove_zero(sp.simplify(pr[1].rhs - derived[1].rhs)),
+        prove_zero(pr[0].rhs - derived[0].rhs),
+        prove_zero(pr[1].rhs - derived[1].rhs),
     ]
     ok = all(x.holds for x in v)
     return Row(
@@ -186,10 +186,10 @@ def _eq23() -> Row:
     ]
     ok = all(x.holds for x in checks)
     derived = (
-        sp.Eq(eom.subs(l, l0 * (1 + S.m)), 0),
-        sp.Eq(S.gamma, gam),
-        sp.Eq(S.omega1, om0 / sp.sqrt(1 + S.m)),
-        sp.Eq(S.omega2, om0 / sp.sqrt(1 - S.m)),
+        written(eom.subs(l, l0 * (1 + S.m)), 0),
+        written(S.gamma, gam),
+        written(S.omega1, om0 / sp.sqrt(1 + S.m)),
+        written(S.omega2, om0 / sp.sqrt(1 - S.m)),
     )
     pr = printed()["2"] + printed()["3"]
     return Row(
@@ -210,7 +210,7 @@ def _eq4() -> Row:
     Mb, l0 = sp.symbols("M l_0", positive=True)
     J1, J2 = Mb * (l0 * (1 + S.m)) ** 2, Mb * (l0 * (1 - S.m)) ** 2
     d = sp.Function(r"\dot{\varphi}")
-    derived = (sp.Eq(sp.factor(J1 / (Mb * l0**2)) * d(1), sp.factor(J2 / (Mb * l0**2)) * d(2)),)
+    derived = (written(sp.factor(J1 / (Mb * l0**2)) * d(1), sp.factor(J2 / (Mb * l0**2)) * d(2)),)
     v = prove_zero(
         sp.expand(J1 / (Mb * l0**2) - inertia(1)) + sp.expand(J2 / (Mb * l0**2) - inertia(2))
     )
@@ -249,7 +249,7 @@ def _shape_row(labels: tuple[str, str], kind: EdgeKind, title: str, amp: dict) -
         dph_p = pr[1].rhs.subs(amp)
         same = prove_zero(ph_p - seg.phi)
         consistent = prove_zero(dph_p - sp.diff(pr[0].rhs, S.t).subs(amp))
-        derived = (sp.Eq(phi[half](S.t), seg.phi), sp.Eq(dphi[half](S.t), seg.dphi))
+        derived = (written(phi[half](S.t), seg.phi), written(dphi[half](S.t), seg.dphi))
         ok = same.holds and consistent.holds
         how = (
             f"The printed segment is the engine's edge shape {kind.value} and its printed "
@@ -353,10 +353,10 @@ def _eq23() -> Row:
         p22, p23, p24 = printed()["22"][0], printed()["23"][0], printed()["24"][0]
         rows = [sp.expand(e.lhs - e.rhs) for e in (p22, p23)]
         Mp = sp.Matrix([[sp.diff(x, u) for u in (S.A1, S.A2)] for x in rows])
-        follows = compare_equations(sp.Eq(Mp.det(), 0), p24).holds
+        follows = compare_equations(written(Mp.det(), 0), p24).holds
         note = (
             " The printed (24) does not follow from the printed (22)-(23) (their determinant is "
-            f"${sp.latex(sp.factor(Mp.det()))}$), but does follow from the corrected (23)."
+            f"${latex(sp.factor(Mp.det()))}$), but does follow from the corrected (23)."
             if not follows
             else ""
         )
@@ -399,14 +399,15 @@ def _eq2830() -> Row:
     s2 = segment(S.omega2, S.A2, S.B2, Damping.PAPER)
     pr = printed()["28"] + printed()["29"] + printed()["30"]
     derived = (
-        sp.Eq(phi[1](S.t), s1.phi),
-        sp.Eq(dphi[1](S.t), s1.dphi),
-        sp.Eq(phi[2](S.t), s2.phi),
-        sp.Eq(dphi[2](S.t), s2.dphi),
+        written(phi[1](S.t), s1.phi),
+        written(dphi[1](S.t), s1.dphi),
+        written(phi[2](S.t), s2.phi),
+        written(dphi[2](S.t), s2.dphi),
     )
     vs = [prove_zero(a.rhs - b.rhs) for a, b in zip(pr, derived, strict=True)]
     true_d = sp.diff(s1.phi, S.t)
-    dropped = sp.simplify(true_d - s1.dphi)
+    # the common factors taken out of the sum (``simplify`` finds no shorter form of it)
+    dropped = sp.factor_terms(true_d - s1.dphi)
     ok = all(v.holds for v in vs)
     return Row(
         "28-30",
@@ -417,7 +418,7 @@ def _eq2830() -> Row:
         + _decided(vs)
         + " As the text "
         "says, the printed velocity is not the derivative of the angle: it drops "
-        f"${sp.latex(dropped)}$ "
+        f"${latex(dropped)}$ "
         "(valid for $\\gamma \\ll \\omega$). The 'exact' model keeps it.",
         "Damped segments (paper model)",
     )
@@ -529,12 +530,12 @@ def _reference_row(label: str, title: str, candidates: tuple[str, ...]) -> Row:
     """A cross-reference 'X at p = 1 coincides with (Y)': find which candidate it coincides with."""
     text, eq_from, eq_to = CLAIMS[label]
     src = printed()[eq_from][0]
-    at_p1 = sp.Eq(src.lhs, src.rhs.subs(S.p, 1))
+    at_p1 = written(src.lhs, src.rhs.subs(S.p, 1))
     matches = []
     for cand in candidates:
         tgt = printed()[cand][0]
         # a +- form coincides with an equation if it does so for one of its signs: compare squares
-        squared = sp.Eq(tgt.lhs**2 - tgt.rhs**2, 0)
+        squared = written(tgt.lhs**2 - tgt.rhs**2, 0)
         if compare_equations(at_p1, squared).holds:
             matches.append(cand)
     ok = eq_to in matches
@@ -599,7 +600,7 @@ def _claim15() -> Row:
     f13 = odd_order_delta_form(EdgeKind.ODD_COS_SIN, 3)  # shape (8)-(9), i.e. eqs. (10)-(11)
     f17 = odd_order_delta_form(EdgeKind.ODD_SIN_COS, 3)  # shape (16)-(17)
     p15 = printed()["15"][0]
-    generalised = sp.Eq(p15.lhs, p15.rhs.subs(S.T_av / 2, 3 * S.T_av / 2))
+    generalised = written(p15.lhs, p15.rhs.subs(S.T_av / 2, 3 * S.T_av / 2))
     same_as_13 = compare_equations(generalised, f13).holds
     same_as_17 = compare_equations(generalised, f17).holds
     # sign of Delta T at small m for the eq.-(13) shape: sin(...) = s * (q-1)/(q+1) * cos(small)
@@ -608,7 +609,7 @@ def _claim15() -> Row:
     status = "agrees" if same_as_13 and sign13 < 0 else "differs"
     how = (
         f"{text} Derived: for $n = 3$ the shape (8)-(9) of eqs. (10)-(11) gives "
-        f"${sp.latex(f13)}$, whose small-$m$ root has "
+        f"${latex(f13)}$, whose small-$m$ root has "
         f"$\\Delta T {'>' if sign13 > 0 else '<'} 0$: the {side} edge. Eq. (15) with "
         "$T_{av}/2 \\to 3T_{av}/2$ "
         f"{'is' if same_as_17 else 'is not'} the equation of the other shape (16)-(17), and it is "

@@ -27,6 +27,7 @@ __all__ = [
     "factor_between",
     "prove_multiple",
     "vanishes",
+    "expanded_polynomial",
     "random_points",
     "DOMAIN",
 ]
@@ -441,6 +442,21 @@ def vanishes(expr: sp.Expr) -> bool:
     return _symbolic_zero(sp.sympify(expr))
 
 
+def expanded_polynomial(expr: sp.Expr) -> sp.Expr | None:
+    """``expand(cancel(expr))`` where the cancelled ``expr`` is a polynomial (a sum of products of
+    symbols with rational coefficients), by the exact field arithmetic of the identity checks
+    (:func:`_field_elements`) instead of sympy's ``cancel``; ``None`` where it is not one (or
+    ``expr`` is not a rational function of its symbols)."""
+    try:
+        field, parts = _fast_parts([sp.sympify(expr)])
+        elem = _element(field, *parts[0])
+    except _Unfit:
+        return None
+    if elem is None or not elem.denom.is_ground:
+        return None
+    return sp.expand(elem.as_expr())
+
+
 def random_points(symbols, count: int, seed: int = 20130101):
     """``count`` dicts of random values for ``symbols`` inside :data:`DOMAIN` (fixed seed)."""
     rng = random.Random(seed)
@@ -458,7 +474,29 @@ def random_points(symbols, count: int, seed: int = 20130101):
 def _mpmath_function(symbols: tuple, expr: sp.Expr):
     """``lambdify(symbols, expr)`` on mpmath, compiled once per expression (checks meet the same
     side twice); without the docstring, which would print the expression only to document it."""
-    return sp.lambdify(symbols, expr, modules="mpmath", dummify=True, docstring_limit=0)
+    dummied = _dummified(symbols, expr)
+    if dummied is None:  # pragma: no cover - a symbol of the expression named like a dummy
+        return sp.lambdify(symbols, expr, modules="mpmath", dummify=True, docstring_limit=0)
+    return sp.lambdify(*dummied, modules="mpmath", dummify=False, docstring_limit=0)
+
+
+def _dummified(symbols: tuple, expr: sp.Expr):
+    """What ``lambdify(symbols, expr, dummify=True)`` compiles: every symbol replaced by a fresh
+    symbol named after a new ``Dummy`` (created in the order ``lambdify`` creates them, so with the
+    same names), but in one walk of the expression instead of one walk per symbol; the same
+    expression and so the same compiled text.  ``None`` where a new name is taken already."""
+    from sympy.core.function import AppliedUndef
+    from sympy.core.sorting import ordered
+
+    taken = {s.name for s in expr.atoms(sp.Symbol)}
+    taken |= {f.func.__name__ for f in expr.atoms(AppliedUndef)}
+    new = {}
+    for arg, _ in reversed(list(ordered(zip(symbols, range(len(symbols)), strict=True)))):
+        name = sp.Dummy().name
+        if name in taken or not arg.is_symbol:
+            return None
+        new[arg] = sp.Symbol(name)
+    return tuple(new[s] for s in symbols), expr.xreplace(new)
 
 
 def _numeric_zero(expr: sp.Expr, scale: sp.Expr, points: int, dps: int) -> tuple[bool, float]:

@@ -668,21 +668,39 @@ def fixed_parts(
     """
     vary = frozenset(vary)
     memo: dict = {}
+    known: dict = {}
+
+    def varies(e) -> bool:
+        """Whether ``e`` has a free symbol in ``vary`` (its ``free_symbols``, found once per
+        sub-expression: sums, products, powers and functions have the free symbols of their
+        arguments)."""
+        hit = known.get(e)
+        if hit is None:
+            if e.is_Symbol:
+                hit = e in vary
+            elif e.is_Atom:
+                hit = False
+            elif e.is_Add or e.is_Mul or e.is_Pow or e.is_Function:
+                hit = any(varies(a) for a in e.args)
+            else:  # e.g. a derivative, whose variables are bound
+                hit = bool(e.free_symbols & vary)
+            known[e] = hit
+        return hit
 
     def walk(e) -> None:
         if e in memo or (_FIXED, e) in memo:
             return
-        if not (e.free_symbols & vary):
+        if not varies(e):
             evaluate(e, env, ring, prec, var=var, memo=memo)
             return
         if e.is_Add or e.is_Mul:
-            free = [a for a in e.args if not (a.free_symbols & vary)]
+            free = [a for a in e.args if not varies(a)]
             if len(free) > 1:
                 vals = [evaluate(a, env, ring, prec, var=var, memo=memo) for a in free]
                 out = vals[0]
                 for a in vals[1:]:
                     out = out + a if e.is_Add else out * a
-                memo[(_FIXED, e)] = (out, tuple(a for a in e.args if a.free_symbols & vary))
+                memo[(_FIXED, e)] = (out, tuple(a for a in e.args if varies(a)))
         for a in e.args:
             walk(a)
 

@@ -23,7 +23,7 @@ from functools import lru_cache
 import sympy as sp
 
 from .cache import disk_cached
-from .identity import Verdict, prove_multiple, prove_zero
+from .identity import Verdict, prove_multiple, prove_zero, vanishes
 from .model import Damping, S, derived_quantities, physical
 from .normal_form import edge_factor_link
 from .stitching import EdgeKind, Parity, edge_system, general_system, paper_system
@@ -142,13 +142,12 @@ def _edge_chain(kind: EdgeKind, numbers: tuple[str, str, str, str, str], n0: int
     if w1 in sp.Mul.make_args(rhs):  # the bob-down factor (1+m)^2 omega_1 on the left, as printed
         lhs, rhs = rhs, lhs
     cross = sp.expand(lhs - rhs)
-    check = prove_zero(cross - det)
     steps.append(
         Step(
             numbers[2],
             _eq(lhs, rhs),
             "determinant of the two conditions = 0",
-            check if check.holds else prove_zero(cross + det),
+            _equal_up_to_sign(cross, det),
         )
     )
     # product to sum: the per-edge factor in q, omega_av, Delta omega
@@ -172,7 +171,7 @@ def _edge_chain(kind: EdgeKind, numbers: tuple[str, str, str, str, str], n0: int
     coeff = sp.simplify(lhs_x / sp.sin(th)) if lhs_x.has(sp.sin(th)) else None
     if coeff is None or coeff.has(th):  # pragma: no cover - f(n pi/2 + x) is always +-sin x here
         raise AssertionError("unexpected form of f(n pi/2 + x)")
-    delta = _eq(sp.sin(th), sp.simplify(eps * (q - 1) / (q + 1) / coeff) * f(arg))
+    delta = _eq(sp.sin(th), _sign_ratio(eps / coeff) * f(arg))
     res_old = _residual(reduced).subs(T, n0 * Tav / 2 + DT)
     steps.append(
         Step(
@@ -190,6 +189,17 @@ def _edge_chain(kind: EdgeKind, numbers: tuple[str, str, str, str, str], n0: int
         tuple(x for x in numbers if x),
         tuple(steps),
     )
+
+
+def _equal_up_to_sign(a: sp.Expr, b: sp.Expr) -> Verdict:
+    """The verdict that ``a = b``, else that of ``a = -b``: exact identities are looked for on
+    both signs first (:func:`~analytic.identity.vanishes`), so that the numeric route of
+    :func:`~analytic.identity.prove_zero` is taken only where neither sign is one."""
+    for c in (b, -b):
+        if vanishes(a - c):
+            return Verdict(True, "symbolic")
+    check = prove_zero(a - b)
+    return check if check.holds else prove_zero(a + b)
 
 
 def _follows_delta(new: sp.Expr, old: sp.Expr) -> Verdict:
@@ -212,10 +222,14 @@ def odd_order_delta_form(kind: EdgeKind, n: int | sp.Expr) -> sp.Equality:
     th = wav * DT / 2
     lhs_x = sp.expand_trig(f(n * sp.pi / 2 + th))
     coeff = sp.simplify(lhs_x / sp.sin(th))
-    return _eq(
-        sp.sin(th),
-        sp.simplify(kind.epsilon * (q - 1) / (q + 1) / coeff) * f(dw * (n * Tav / 2 + DT) / 4),
-    )
+    return _eq(sp.sin(th), _sign_ratio(kind.epsilon / coeff) * f(dw * (n * Tav / 2 + DT) / 4))
+
+
+def _sign_ratio(sign: sp.Expr) -> sp.Expr:
+    """``sign (q - 1)/(q + 1)`` simplified: for ``sign = +-1`` it is already in its simplest form
+    (``(q - 1)/(q + 1)`` or ``(1 - q)/(q + 1)``, which ``simplify`` returns unchanged)."""
+    ratio = sign * (q - 1) / (q + 1)
+    return ratio if sign in (1, -1) else sp.simplify(ratio)
 
 
 # ------------------------------------------------------------------------------- with friction
@@ -354,7 +368,27 @@ def stationary_initial_condition(kind: EdgeKind) -> sp.Expr:
     seg1 = edge_system(EdgeKind(kind)).segments[0]
     ratio = seg1.dphi.subs(S.t, 0) / seg1.phi.subs(S.t, 0)
     # the amplitude cancels; sin/cos of one argument becomes tan (or 1/tan)
-    return sp.trigsimp(sp.cancel(ratio))
+    return _tan_form(sp.cancel(ratio))
+
+
+def _tan_form(e: sp.Expr) -> sp.Expr:
+    """``e`` with ``sin(x)**k cos(x)**-k`` written ``tan(x)**k`` (what ``trigsimp`` makes of a
+    product with one such pair, by the definition of ``tan``); ``trigsimp`` for anything else."""
+    powers: dict = {}
+    rest = []
+    for f in sp.Mul.make_args(e):
+        b, k = f.as_base_exp()
+        if isinstance(b, (sp.sin, sp.cos)) and k.is_Integer:
+            powers[b] = k
+        else:
+            rest.append(f)
+    args = {b.args[0] for b in powers}
+    if len(powers) == 2 and len(args) == 1:
+        (x,) = args
+        k = powers.get(sp.sin(x))
+        if k is not None and powers.get(sp.cos(x)) == -k:
+            return sp.Mul(*rest, sp.tan(x) ** k)
+    return sp.trigsimp(e)  # pragma: no cover - the stationary ratios are all of that form
 
 
 def _initial_conditions() -> Chain:

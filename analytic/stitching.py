@@ -30,7 +30,7 @@ from functools import cache
 import sympy as sp
 from sympy.polys.rings import sring
 
-from .identity import factor_between
+from .identity import expanded_polynomial, factor_between
 from .model import Damping, Regime, S, Segment, inertia, segment
 
 __all__ = [
@@ -307,7 +307,8 @@ def paper_system(parity: Parity) -> StitchingSystem:
                 / (inertia(2) * S.omega2)
             )
         # a polynomial in A, B, C_i, S_i, p, q once the inertia factors cancel
-        rows.append(sp.expand(sp.cancel(res)))
+        poly = expanded_polynomial(res)
+        rows.append(poly if poly is not None else sp.expand(sp.cancel(res)))
     M = _linear_matrix(rows, (S.A, S.B))
     conds = tuple(
         Condition(c.label, r, sp.Integer(0)) for c, r in zip(gen.conditions[2:], rows, strict=True)

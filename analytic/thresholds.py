@@ -687,11 +687,14 @@ def solve_for_lambda(expr: sp.Expr, order, terms: int) -> sp.Expr:
     printed conditions (37), (42) and off ``R(theta = 0) = 0``."""
     p = scaling_power(order)
     ring = LaurentRing(_gens(order))
-    e = sp.sympify(expr).subs(Q_SYM, 1 / (LAM * S.m**p))
+    # a symbol replaced by an expression free of it: one walk (the same series as ``subs``)
+    e = sp.sympify(expr).xreplace({Q_SYM: 1 / (LAM * S.m**p)})
     hi = terms + 2 * p
+    # the parts of the condition free of lam, evaluated once for all the iterations below
+    fixed = fixed_parts([e], {S.n: "n"}, ring, hi, var=S.m, vary={LAM})
 
     def F(lam: Series) -> Series:
-        return _eval(e, {LAM: lam.padded(hi)}, ring, hi).shift(-2 * p)
+        return _eval(e, {LAM: lam.padded(hi)}, ring, hi, dict(fixed)).shift(-2 * p)
 
     lead = [F(Series.constant(ring, ring.const(v), terms)).c[0] for v in (0, 1, 2)]
     a_, b_ = lead[0], ring.sub(lead[1], lead[0])
@@ -717,7 +720,7 @@ def threshold_lambda(order, terms: int, damping: str) -> sp.Expr:
 def tuning_threshold(order, terms: int, damping: str = "paper") -> sp.Expr:
     """``lam(m)`` from the radicand set to zero at exact tuning (``R(theta = 0) = 0``, the way the
     paper's eqs. (37), (42) are used), to compare with the tangency of :func:`threshold_series`."""
-    N = _scaled_model(order, damping)["N"].subs(S.theta, 0)
+    N = _scaled_model(order, damping)["N"].xreplace({S.theta: sp.Integer(0)})
     return solve_for_lambda(N, order, terms)
 
 
