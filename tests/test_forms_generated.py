@@ -85,11 +85,7 @@ def test_linear_runs_load_their_maps_without_sympy():
         "simulate(order=1, m=m, edge='lower', periods=2, Q=3)\n"
         "print('sympy' in sys.modules)\n"
     )
-    proc = subprocess.run(
-        [sys.executable, "-c", code], cwd=ROOT, capture_output=True, text=True, timeout=600
-    )
-    assert proc.returncode == 0, proc.stderr
-    assert proc.stdout.strip() == "False"
+    assert _output_of(code) == "False"
 
 
 def test_time_domain_edge_shapes_are_the_derivations():
@@ -121,11 +117,7 @@ def test_built_in_parameter_forms_load_without_sympy():
         "        trace_values(s, Fraction(1, 5), Fraction(7), backend('arb'))\n"
         "print('sympy' in sys.modules)\n"
     )
-    proc = subprocess.run(
-        [sys.executable, "-c", code], cwd=ROOT, capture_output=True, text=True, timeout=600
-    )
-    assert proc.returncode == 0, proc.stderr
-    assert proc.stdout.strip() == "False"
+    assert _output_of(code) == "False"
 
 
 @pytest.mark.parametrize("name", ["pendulum", "torsion", "meissner"])
@@ -153,3 +145,13 @@ def test_regime_changes_from_the_stored_roots(name, Q):
             want.add(Fraction(int(root.p), int(root.q)))
     assert _regime_changes(Fraction(Q), sysm) == want
     assert _regime_changes(Fraction(Q), system("custom", omega_sq=("1/2", "3/2"))) == set()
+
+
+def _output_of(code: str) -> str:
+    """What ``code`` prints, run in a fresh interpreter from the repository (which must end it
+    with status 0)."""
+    proc = subprocess.run(
+        [sys.executable, "-c", code], cwd=ROOT, capture_output=True, text=True, timeout=600
+    )
+    assert proc.returncode == 0, proc.stderr
+    return proc.stdout.strip()
