@@ -473,30 +473,23 @@ def random_points(symbols, count: int, seed: int = 20130101):
 @functools.lru_cache(maxsize=256)
 def _mpmath_function(symbols: tuple, expr: sp.Expr):
     """``lambdify(symbols, expr)`` on mpmath, compiled once per expression (checks meet the same
-    side twice); without the docstring, which would print the expression only to document it."""
-    dummied = _dummified(symbols, expr)
-    if dummied is None:  # pragma: no cover - a symbol of the expression named like a dummy
-        return sp.lambdify(symbols, expr, modules="mpmath", dummify=True, docstring_limit=0)
-    return sp.lambdify(*dummied, modules="mpmath", dummify=False, docstring_limit=0)
-
-
-def _dummified(symbols: tuple, expr: sp.Expr):
-    """What ``lambdify(symbols, expr, dummify=True)`` compiles: every symbol replaced by a fresh
-    symbol named after a new ``Dummy`` (created in the order ``lambdify`` creates them, so with the
-    same names), but in one walk of the expression instead of one walk per symbol; the same
-    expression and so the same compiled text.  ``None`` where a new name is taken already."""
-    from sympy.core.function import AppliedUndef
-    from sympy.core.sorting import ordered
-
-    taken = {s.name for s in expr.atoms(sp.Symbol)}
-    taken |= {f.func.__name__ for f in expr.atoms(AppliedUndef)}
-    new = {}
-    for arg, _ in reversed(list(ordered(zip(symbols, range(len(symbols)), strict=True)))):
-        name = sp.Dummy().name
-        if name in taken or not arg.is_symbol:
-            return None
-        new[arg] = sp.Symbol(name)
-    return tuple(new[s] for s in symbols), expr.xreplace(new)
+    side twice); without the docstring, which would print the expression only to document it.
+    The symbols (whose names need not be Python identifiers) are renamed to ``_a0``, ``_a1``, ...
+    in one walk of the expression, prefixed with underscores until no name of the expression is
+    taken."""
+    taken = {str(a) for a in expr.atoms(sp.Symbol, sp.Function, sp.core.function.AppliedUndef)}
+    taken |= {type(f).__name__ for f in expr.atoms(sp.core.function.AppliedUndef)}
+    prefix = "_a"
+    while any(t.startswith(prefix) for t in taken):
+        prefix = "_" + prefix
+    new = {s: sp.Symbol(f"{prefix}{i}") for i, s in enumerate(symbols)}
+    return sp.lambdify(
+        tuple(new[s] for s in symbols),
+        expr.xreplace(new),
+        modules="mpmath",
+        dummify=False,
+        docstring_limit=0,
+    )
 
 
 def _numeric_zero(expr: sp.Expr, scale: sp.Expr, points: int, dps: int) -> tuple[bool, float]:

@@ -34,6 +34,28 @@ def test_false_identity_is_refused_numerically():
     assert not v.holds and v.route == "numeric" and v.worst > 1e-3
 
 
+def test_numeric_route_with_names_that_are_not_identifiers_or_clash():
+    # the numeric route compiles expressions whose symbols are named like LaTeX or like the names
+    # it renames them to; each compiled function must take its arguments in the order given
+    # (reference: the same expression evaluated by mpmath directly)
+    import mpmath
+
+    from analytic.identity import _mpmath_function
+
+    w = sp.Symbol(r"\omega_{0}", positive=True)
+    a0, aa0 = sp.Symbol("_a0"), sp.Symbol("__a0")
+    expr = sp.sin(w) * 3 + a0**2 - aa0 / 7
+    for order in ((w, a0, aa0), (aa0, w, a0)):
+        f = _mpmath_function(order, expr)
+        vals = {w: mpmath.mpf("0.3"), a0: mpmath.mpf("1.7"), aa0: mpmath.mpf("-2.5")}
+        with mpmath.workdps(30):
+            want = mpmath.sin(vals[w]) * 3 + vals[a0] ** 2 - vals[aa0] / 7
+            got = f(*(vals[s] for s in order))
+            assert abs(got - want) < mpmath.mpf(10) ** -28
+    v = prove_zero(sp.sin(w + a0) - sp.sin(w) * sp.cos(a0) - sp.cos(w) * sp.sin(a0) + aa0 / 10**6)
+    assert not v.holds and 1e-7 < v.worst < 1e-5
+
+
 def test_factor_between_finds_non_oscillating_factor():
     fac = factor_between((1 + b) * sp.sin(2 * x), sp.sin(x) * sp.cos(x))
     assert sp.simplify(fac - 2 * (1 + b)) == 0
