@@ -40,6 +40,21 @@ def test_every_step_of_the_derivation_checks_out():
     assert len(steps) == 10
     assert all(s.verdict.holds for s in steps), [s.claim for s in steps if not s.verdict.holds]
     assert closings(3).proven
+    # every step states what it checks: none is an equation sympy evaluated to True or False,
+    # which the report could not print
+    for s in steps:
+        assert not isinstance(s.expr, (bool, sp.logic.boolalg.BooleanAtom)), s.claim
+        for eq in s.expr.atoms(sp.Eq) if isinstance(s.expr, sp.Basic) else ():
+            assert not isinstance(eq, sp.logic.boolalg.BooleanAtom)
+    # the sums of the two edge factors the steps show are the ones they prove
+    for s in steps:
+        if s.claim.startswith(("odd orders: F_+ + F_-", "even orders: F_+ + F_-")):
+            (_, (fp, fm)) = s.expr.args
+            f = sp.cos if s.claim.startswith("odd") else sp.sin
+            x, y = sorted(fp.atoms(sp.Symbol) - {sp.Symbol("r", positive=True)}, key=str)
+            r = sp.Symbol("r", positive=True)
+            assert sp.expand(fp + fm - 2 * f(x)) == 0
+            assert sp.expand(fm - fp - 2 * r * f(y)) == 0
 
 
 def test_list_up_to_order_12():
