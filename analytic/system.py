@@ -25,6 +25,7 @@ from __future__ import annotations
 from collections.abc import Callable
 from dataclasses import dataclass
 from fractions import Fraction
+from functools import lru_cache
 
 from paramres.inputs import InputError, as_number
 
@@ -119,6 +120,15 @@ class System:
     duty: Fraction = Fraction(1, 2)
     omega_sq: tuple[Fraction, Fraction] | None = None
     jump_value: Fraction | None = None
+
+    def __hash__(self) -> int:
+        """The hash of the fields, computed once (a system keys the caches of every numeric
+        call, and hashing its Fractions costs more than a 15-digit edge's parameters)."""
+        h = self.__dict__.get("_hash")
+        if h is None:
+            h = hash((self.name, self.duty, self.omega_sq, self.jump_value))
+            object.__setattr__(self, "_hash", h)
+        return h
 
     # -- what the laws give ---------------------------------------------------------------
 
@@ -285,7 +295,14 @@ def system(name="pendulum", *, duty="1/2", omega_sq=None, jump=None) -> System:
         raise InputError(
             f"omega_sq and jump are only for system custom (system {key} has its own laws)"
         )
-    return System(key, _as_duty(duty))
+    return _built_in(key, _as_duty(duty))
+
+
+@lru_cache(maxsize=512)
+def _built_in(name: str, duty: Fraction) -> System:
+    """The built-in system ``name`` at ``duty``, one object per value (so that the caches it
+    keys find it by identity)."""
+    return System(name, duty)
 
 
 #: the paper's system (pendulum, equal halves)

@@ -182,6 +182,45 @@ def test_general_parameters_match_the_paper_fast_path(m, Q):
                 assert abs(a - b) <= mpmath.mpf(10) ** -28 * max(abs(a), abs(b), 10**-300), key
 
 
+@pytest.mark.parametrize(
+    "sysv",
+    [
+        system("torsion"),
+        system("meissner", duty="1/3"),
+        system("pendulum", duty="1/3"),
+        custom(("3/2", "1/5"), jump="2", duty="2/5"),
+    ],
+    ids=lambda s: s.label,
+)
+def test_exact_atoms_from_integers_are_the_rational_ones(sysv):
+    """The exact atoms of the parameter forms, computed from the integers of ``m = p/q`` and
+    ``Q = P/R``, are the rational atoms rounded once: the same balls, bit for bit (reference:
+    the atoms' text in rational arithmetic, ``atoms | fraction``), for depths of 1 to 40 digits,
+    next to 0 and 1."""
+    from verify.system_params import _atoms, _compiled, canonical
+
+    rng = random.Random(7)
+    sysv = canonical(sysv)
+    B = backend("arb")
+    depths = [Fraction(1, 10**40), Fraction(10**40 - 1, 10**40), Fraction(3, 10)]
+    depths += [Fraction(rng.randrange(1, 10**k), 10**k) for k in range(1, 41, 3)]
+    for damping in ("none", "paper", "exact"):
+        _, rational, _ = _compiled(sysv, damping)
+        for m in depths:
+            Q = (
+                None
+                if damping == "none"
+                else Fraction(rng.randrange(2, 10**6), rng.randrange(1, 99))
+            )
+            mm = m if sysv.uses_depth else None
+            got = _atoms(sysv, damping, mm, Q, B)
+            want = rational(Fraction(0) if mm is None else m, Fraction(1) if Q is None else Q)
+            assert len(got) == len(want)
+            for a, w in zip(got, want, strict=True):
+                b = B.num(Fraction(w))
+                assert a.mid() == b.mid() and a.rad() == b.rad(), (m, Q, a, w)
+
+
 def test_paper_system_unchanged():
     """The paper's system through the new interface gives the same digits as before
     (reference: `paramres boundary --order 3 --m 3/5 --digits 40`, the closing of eq. 19's

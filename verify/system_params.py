@@ -27,6 +27,7 @@ from __future__ import annotations
 
 from fractions import Fraction
 from functools import cache
+from math import gcd
 
 from analytic.system import System
 
@@ -110,6 +111,7 @@ def _derive(system: System, damping: str, backends=STORED_BACKENDS) -> dict[str,
     out = {
         key("names"): f"{' '.join(names)} | {' '.join(vnames)}",
         key("atoms | fraction"): _source((S.m, S.Q), exprs, _FRACTION_NS),
+        key("atoms | integers"): _source(_pq_symbols(), _integer_pairs(exprs), {}),
     }
     if backends:
         om = sp.Symbol("om", positive=True)
@@ -119,6 +121,36 @@ def _derive(system: System, damping: str, backends=STORED_BACKENDS) -> dict[str,
         out[key(f"values | {b}")] = _source(args, values, ns, cse=True)
         out[key(f"atoms | {b}")] = _source((S.m, S.Q), exprs, ns)
         out[key(f"atoms_om | {b}")] = _source((om, S.Q), near_one, ns)
+    return out
+
+
+def _pq_symbols():
+    """``p, q, P, R``: the integers of ``m = p/q`` and ``Q = P/R``."""
+    import sympy as sp
+
+    return sp.symbols("p q P R", integer=True)
+
+
+def _integer_pairs(exprs) -> list:
+    """Each atom ``e(m, Q)`` as a pair ``(N, D)`` of polynomials with integer coefficients in the
+    integers ``p, q, P, R`` of ``m = p/q`` and ``Q = P/R``, with ``e = N/D`` (checked exactly):
+    an exact atom then costs a few integer products and one ``gcd`` instead of rational
+    arithmetic at every step."""
+    import sympy as sp
+
+    from analytic.model import S
+
+    p, q, P, R = _pq_symbols()
+    out = []
+    for e in exprs:
+        num, den = sp.fraction(sp.cancel(sp.together(e.subs({S.m: p / q, S.Q: P / R}))))
+        num, den = sp.expand(num), sp.expand(den)
+        for part in (num, den):
+            if not sp.Poly(part, p, q, P, R).domain.is_ZZ:  # pragma: no cover - derivation guard
+                raise AssertionError(f"{part} has coefficients that are not integers")
+        if sp.cancel(num / den - e.subs({S.m: p / q, S.Q: P / R})) != 0:  # pragma: no cover
+            raise AssertionError(f"{num}/{den} is not {e}")
+        out.append(sp.Tuple(num, den))
     return out
 
 
@@ -149,7 +181,9 @@ def _load(system: System, damping: str, part: str, namespace):
         text = SOURCES.get(key)
     if text is None:
         kind, _, b = part.partition(" | ")
-        text = _derive(system, damping, (b,) if kind != "names" and b != "fraction" else ())[key]
+        text = _derive(
+            system, damping, (b,) if kind != "names" and b not in ("fraction", "integers") else ()
+        )[key]
     if namespace is None:
         return text
     ns = dict(namespace)
@@ -180,14 +214,18 @@ def _atoms(system: System, damping: str, m, Q, B: Backend, om=None) -> tuple:
     """The atoms at ``m, Q``: exact Fractions when both are exact, else numbers of ``B``; with
     ``om = 1 - m`` given (float arrays), the depths ``m >= 1/2`` use the atoms written in ``om``
     (factored again after ``m = 1 - om``), so that ``1 - m`` enters to its own accuracy."""
-    names, atoms, _ = _compiled(system, damping)
-    exact = isinstance(m, Fraction | int | type(None)) and isinstance(
-        Q, Fraction | int | type(None)
-    )
-    if exact:
-        with_q = Fraction(1) if Q is None else Fraction(Q)
-        vals = atoms(Fraction(m) if m is not None else Fraction(0), with_q)
-        return tuple(B.num(Fraction(v)) for v in vals)
+    mq, Qq = _integers(m, 0), _integers(Q, 1)
+    if mq is not None and Qq is not None:
+        rat = B.namespace["_q"]
+        out = []
+        for num, den in _integer_atoms(system, damping)(*mq, *Qq):
+            if den == 0:
+                raise ZeroDivisionError(f"an atom of {system.label} is infinite at m = {m}")
+            g = gcd(num, den)
+            if den < 0:
+                g = -g
+            out.append(rat(num // g, den // g))  # lowest terms: the rounding of the Fraction
+        return tuple(out)
     lift = lambda x: B.num(x) if isinstance(x, Fraction | int) else x  # noqa: E731
     fn, fn_om = _numeric_atoms(system, damping, B.name)
     mm = lift(Fraction(0) if m is None else m)
@@ -202,6 +240,27 @@ def _atoms(system: System, damping: str, m, Q, B: Backend, om=None) -> tuple:
         return vals
     vals_om = tuple(lift(v) for v in fn_om(om, QQ))
     return tuple(np.where(high, b, a) for a, b in zip(vals, vals_om, strict=True))
+
+
+def _integers(x, default: int) -> tuple[int, int] | None:
+    """``(p, q)`` with ``x = p/q`` for an exact ``x`` (``default`` for ``None``), else ``None``."""
+    if x is None:
+        return default, 1
+    t = type(x)
+    if t is Fraction:
+        return x.numerator, x.denominator
+    if t is int:
+        return x, 1
+    if isinstance(x, Fraction | int):
+        return Fraction(x).numerator, Fraction(x).denominator
+    return None
+
+
+@cache
+def _integer_atoms(system: System, damping: str):
+    """The atoms of ``system`` in ``damping`` as integer pairs ``(N, D)`` of ``p, q, P, R``
+    (:func:`_integer_pairs`)."""
+    return _load(system, damping, "atoms | integers", {})
 
 
 @cache
