@@ -107,6 +107,10 @@ LAWS: dict[str, Law] = {
 NAMES = (*LAWS, "custom")
 
 
+#: equal phases, the paper's duty
+_HALF = Fraction(1, 2)
+
+
 @dataclass(frozen=True)
 class System:
     """One member of the family: a built-in ``name`` (laws in :data:`LAWS`) or ``"custom"``
@@ -140,7 +144,7 @@ class System:
     @property
     def is_paper(self) -> bool:
         """The paper's own system: the pendulum with equal halves."""
-        return self.name == "pendulum" and self.duty == Fraction(1, 2)
+        return self.name == "pendulum" and self.duty == _HALF
 
     @property
     def picture(self) -> str:

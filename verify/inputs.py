@@ -2,6 +2,9 @@
 which :mod:`analytic` uses too, so that :mod:`analytic` never imports :mod:`verify`), and
 :func:`as_system`, the check of the oscillator (a member of :mod:`analytic.system`)."""
 
+from fractions import Fraction
+from functools import lru_cache
+
 from paramres import inputs as _inputs
 from paramres.inputs import *  # noqa: F401,F403
 from paramres.inputs import __all__ as _all
@@ -15,9 +18,23 @@ def as_system(system="pendulum", duty="1/2", omega_sq=None, jump=None):
     duty ``0 < D < 1``."""
     if system == "pendulum" and duty == "1/2" and omega_sq is None and jump is None:
         return _paper()  # the default, without parsing it again
+    if omega_sq is None and jump is None and type(system) is str and type(duty) in _PLAIN:
+        return _named(system, duty)
     from analytic.system import system as make
 
     return make(system, duty=duty, omega_sq=omega_sq, jump=jump)
+
+
+#: the types of a duty whose parse :func:`_named` keeps (hashable, compared by value and type)
+_PLAIN = (str, int, Fraction)
+
+
+@lru_cache(maxsize=256)
+def _named(name: str, duty):
+    """A built-in system by name (or the error it raises, every time), parsed once per input."""
+    from analytic.system import system as make
+
+    return make(name, duty=duty)
 
 
 _PAPER: list = []

@@ -270,7 +270,8 @@ def normal_params(
     if system is not PAPER and not system.is_paper:
         from .system_params import normal_values
 
-        return NormalParams(**normal_values(system, m, Q, damping, B, om))
+        v = normal_values(system, m, Q, damping, B, om)
+        return _normal(*(v[k] for k in _NORMAL_FIELDS))
     if (
         Q is not None
         and damping != "paper"

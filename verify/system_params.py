@@ -199,10 +199,6 @@ def _compiled(system: System, damping: str):
     return tuple(names.split()), atoms, tuple(vnames.split())
 
 
-def _values_fn(system: System, damping: str, B: Backend):
-    return _values_named(system, damping, B.name)
-
-
 @cache
 def _values_named(system: System, damping: str, backend_name: str):
     from .derived import backend
@@ -277,9 +273,14 @@ def _numeric_atoms(system: System, damping: str, backend_name: str):
 def _evaluate(system: System, m, Q, damping: str, B: Backend, om=None) -> dict:
     model = "none" if Q is None else damping
     system = canonical(system)
-    vals = _values_fn(system, model, B)(*_atoms(system, model, m, Q, B, om))
-    _, _, vnames = _compiled(system, model)
-    return dict(zip(vnames, vals, strict=True))
+    values, vnames = _values_and_names(system, model, B.name)
+    return dict(zip(vnames, values(*_atoms(system, model, m, Q, B, om)), strict=True))
+
+
+@cache
+def _values_and_names(system: System, damping: str, backend_name: str):
+    """The values' function on back end ``backend_name`` and their names (one lookup)."""
+    return _values_named(system, damping, backend_name), _compiled(system, damping)[2]
 
 
 def normal_values(system: System, m, Q, damping: str, B: Backend, om=None) -> dict:
