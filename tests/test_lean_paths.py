@@ -16,6 +16,7 @@ import pytest
 
 import verify.hump as hump
 import verify.undamped as undamped
+from analytic.system import custom
 from verify.solve import boundary
 
 DEPTHS = ("1e-12", "1e-6", "0.05", "3/10", "3/5", "0.77", "0.9", "0.999", "0.999999")
@@ -70,6 +71,42 @@ def test_friction_lean_is_general(monkeypatch, order, digits, damping):
                 _same(fast, slow)
 
 
+SYSTEMS = (
+    {"system": "torsion"},
+    {"system": "meissner"},
+    {"duty": "1/3"},
+    {"system": "meissner", "duty": "1/3"},
+    {"system": custom(("4/5", "6/5"), jump="3/2", duty="2/5")},
+)
+
+
+@pytest.mark.parametrize("kw", SYSTEMS, ids=lambda kw: "-".join(str(v)[:8] for v in kw.values()))
+@pytest.mark.parametrize("digits", [15, 50])
+def test_lean_paths_are_general_for_every_system(monkeypatch, kw, digits):
+    """The other members of the family take the same short paths, with and without friction:
+    the same balls as their general path."""
+    for order in (1, 2, 3):
+        depthless = getattr(kw.get("system"), "uses_depth", True) is False
+        for m in (None,) if depthless else ("0.05", "3/10", "0.9"):
+            for Q in (None, "2", "7", "1000", "100000"):
+                for damping in ("exact", "paper") if Q else ("exact",):
+                    try:
+                        fast = boundary(order, m, Q=Q, damping=damping, digits=digits, **kw)
+                    except ArithmeticError as exc:
+                        fast = repr(exc)
+                    with monkeypatch.context() as mp:
+                        mp.setattr(hump, "_LEAN_BITS", 0)
+                        mp.setattr(undamped, "_LEAN_BITS", 0)
+                        try:
+                            slow = boundary(order, m, Q=Q, damping=damping, digits=digits, **kw)
+                        except ArithmeticError as exc:
+                            slow = repr(exc)
+                    if isinstance(fast, str) or isinstance(slow, str):
+                        assert fast == slow
+                    else:
+                        _same(fast, slow)
+
+
 def test_lean_paths_are_taken(monkeypatch):
     """The short paths run where they are meant to (else the tests above compare nothing)."""
     used = []
@@ -86,3 +123,9 @@ def test_lean_paths_are_taken(monkeypatch):
         boundary(3, "3/10", digits=digits)
         boundary(3, "3/10", Q=7, digits=digits)
     assert used == [("_lean", True), ("_lean_normal", True)] * 2
+    used.clear()
+    for kw in SYSTEMS:
+        m = "3/10" if getattr(kw.get("system"), "uses_depth", True) else None
+        boundary(3, m, digits=15, **kw)
+        boundary(3, m, Q=1000, digits=15, **kw)  # an interval for each (at Q = 7 not all)
+    assert used == [("_lean", True), ("_lean_normal", True)] * len(SYSTEMS)

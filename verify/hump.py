@@ -671,7 +671,7 @@ _START_BITS = 50  # quick_root's start_bits
 
 
 def _lean_normal(req: Request, bits: int) -> Boundary | None:
-    """The normal form with friction (``bits <= _LEAN_BITS``, the paper's system) in one
+    """The normal form with friction (``bits <= _LEAN_BITS``, any system) in one
     function: the steps of :func:`hump_normal` and :func:`_solve_hump` where everything succeeds
     at once -- the bracket proven by the two evaluations with both signs, both float edges
     refined and proven by the steps of :func:`verify.certify.quick_root` (the same balls: the
@@ -688,7 +688,7 @@ def _lean_normal(req: Request, bits: int) -> Boundary | None:
         # the parameters and c = n pi/2 at the proof's precision, as hump_normal's AtPrecision
         # objects compute them (12 bits above it)
         ctx.prec = top + 12
-        pt = normal_params(req.m, req.Q, req.damping, _ARB)
+        pt = normal_params(req.m, req.Q, req.damping, _ARB, req.system)
         c = arb.pi() * n / 2
         if float(pt.bm) < NEAR_ONE:
             return None
@@ -827,7 +827,7 @@ _HALF = arb(0.5)
 
 def normal_damped(req: Request) -> Boundary:
     bits = bits_for_digits(req.digits + 2)
-    if bits <= _LEAN_BITS and req.system is PAPER:
+    if bits <= _LEAN_BITS:
         lean = _lean_normal(req, bits)
         if lean is not None:
             return lean
