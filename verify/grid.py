@@ -58,8 +58,10 @@ Method (all orders and depths at once):
   slope at the edge); next to a threshold or a closing gap, where the edges are a near-double
   root, the few entries that cannot meet the bound are proved in ball arithmetic
   (:func:`_confirm`: the sign of the indicator at the exact depth on both sides of each edge,
-  and the secant root between)
-  and go to the certified route only where that fails.
+  and the secant root between; an edge that misses the bound is moved once to the secant root
+  through the two points and tested there) and go to the certified route only where that fails;
+* with friction the table path takes both parities in one pass (:class:`_ByParity`: each
+  evaluation calls the form of each parity on its part of the points).
 """
 
 from __future__ import annotations
@@ -1149,7 +1151,10 @@ def _table_friction(orders, P, rho, system, friction, cols) -> dict:
     interval) where they converge (step below :data:`_TOP_STEP`) to a maximum ``D'' < 0`` with
     ``D`` below minus its rounding bound there and the undamped indicator ``D0`` (``D`` with
     ``u = g = 0``) above ``1e-12`` (so the point lies between the undamped roots, where ``D`` has
-    its one maximum): ``D < 0`` on the whole window."""
+    its one maximum): ``D < 0`` on the whole window.
+
+    Both parities in one pass: every set of points keeps those of the odd orders first, and each
+    evaluation calls the form of each parity on its part (:class:`_ByParity`)."""
     no, N = len(orders), rho.size
     out = {
         "lo": np.full((no, N), np.nan),
@@ -1167,85 +1172,150 @@ def _table_friction(orders, P, rho, system, friction, cols) -> dict:
     stack = np.concatenate(tables)  # (3 no, K)
     start = np.empty((3 * no, cols.size))
     _start_values(stack, rho[cols], start, np.empty_like(start))
-    start = start.reshape(no, 3, cols.size)
     params = (P.r2[cols], P.u[cols], P.beta[cols], P.g[cols])
     near = np.asarray(P.bm)[cols] < NEAR_ONE
+    ev, powers = _indicator_both()
+    named = dict(zip(("r2", "u", "beta", "g"), params, strict=True))
+    pars = params + tuple(named[v] ** k for v, k in powers)  # (once per depth)
+    # the rows of the odd orders first (row-major selections below keep their points first)
+    rows = np.argsort(orders % 2 == 0, kind="stable")
+    oddrow = orders[rows] % 2 == 1
+    crow = orders[rows] * _HALF_PI
+    start = start.reshape(no, 3, cols.size)[rows]
+    lo0, hi0, top0 = start[:, 0], start[:, 1], start[:, 2]
+    done = out["done"]
     with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
-        for parity in (1, 0):
-            rows = np.nonzero(orders % 2 == parity)[0]
-            if rows.size == 0:
-                continue
-            form = int(_parity(int(orders[rows[0]])))
-            ev, powers = _indicator_powers(form)
-            named = dict(zip(("r2", "u", "beta", "g"), params, strict=True))
-            pars = params + tuple(named[v] ** k for v, k in powers)  # (once per depth)
-            c = (orders[rows] * _HALF_PI)[:, None] * np.ones(cols.size)
-            lo0, hi0, top0 = start[rows, 0], start[rows, 1], start[rows, 2]
-            pair = np.isfinite(lo0) & np.isfinite(hi0) & (lo0 < hi0)
-            ri, ci = np.nonzero(pair)
-            ti, tci = np.nonzero(np.isfinite(top0) & ~pair & ~near)
-            k, kt = ri.size, ti.size
-            if k + kt:
-                # one evaluation for the first step of both edges of the entries whose four nodes
-                # have the interval and the maximiser of the others
-                x0 = np.concatenate([lo0[ri, ci], hi0[ri, ci], top0[ti, tci]])
-                cp = c[ri, ci]
-                at = np.concatenate([ci, ci, tci])  # the depth of each point
-                sub = (np.concatenate([cp, cp, c[ti, tci]]),) + tuple(v[at] for v in pars)
-                first = ev(x0, *sub)
-                e = 2 * k
-                psub = tuple(v[:e] for v in sub)
-                sign = np.concatenate([np.ones(k), -np.ones(k)])
-                root, doubt, good, (moving, xm) = _table_edges(
-                    ev, psub, x0[:e], sign, first=tuple(v[:e] for v in first), left=True
-                )
-                high = np.zeros(0, bool)
-                if kt:
-                    tsub = tuple(v[e:] for v in sub)
-                    top, dtop, ok, high, (curv, third) = _table_top(
-                        ev, form, tsub, x0[e:], first=tuple(v[e:] for v in first)
-                    )
-                    r, q = rows[ti[ok]], cols[tci[ok]]
-                    out["top"][r, q], out["dtop"][r, q] = top[ok], dtop[ok]
-                    out["done"][r, q] = True
-                if high.any() or moving.size:
-                    # an interval whose edges the tables did not give (split at the maximiser), and
-                    # the edges that one step did not converge: more steps, in the same calls
-                    hsub = tuple(v[high] for v in tsub) if kt else tuple(v[:0] for v in psub)
-                    hx = (top[high], dtop[high], curv[high]) if kt else (np.zeros(0),) * 3
-                    h3 = third[high] if kt else None
-                    extra = (tuple(v[moving] for v in psub), xm, sign[moving])
-                    lo, hi, lo_d, hi_d, ok, more = _table_split(
-                        ev, hsub, *hx, extra=extra, third=h3
-                    )
-                    root[moving], doubt[moving], good[moving] = more
-                    if ok.any():
-                        hi_, hci = ti[high][ok], tci[high][ok]
-                        r, q = rows[hi_], cols[hci]
-                        out["lo"][r, q], out["hi"][r, q] = lo[ok], hi[ok]
-                        out["lo_doubt"][r, q], out["hi_doubt"][r, q] = lo_d[ok], hi_d[ok]
-                        out["top"][r, q] = hx[0][ok]
-                        out["dtop"][r, q] = np.inf
-                        out["done"][r, q] = True
-                if k:
-                    lo, hi = root[:k], root[k:]
-                    ok = good[:k] & good[k:] & (lo < hi)
-                    at = np.maximum(np.abs(cp + hi), 1.0)
-                    ok &= hi - lo > np.where(near[ci], _NEAR_GAP, 1e-8) * at
-                    r, q = rows[ri[ok]], cols[ci[ok]]
-                    out["lo"][r, q], out["hi"][r, q] = lo[ok], hi[ok]
-                    out["lo_doubt"][r, q], out["hi_doubt"][r, q] = doubt[:k][ok], doubt[k:][ok]
-                    out["top"][r, q] = 0.5 * (lo[ok] + hi[ok])  # (D > 0 between the edges)
-                    out["dtop"][r, q] = np.inf
-                    out["done"][r, q] = True
-            # the entries left (mostly a maximiser at an end of the undamped interval, at small
-            # depths): no interval wherever the bound of :func:`_no_interval` proves it
-            ri, ci = np.nonzero(~out["done"][rows][:, cols] & ~near)
-            if ri.size:
-                sub = (c[ri, ci],) + tuple(v[ci] for v in params)
-                ok = _no_interval(form, *sub)
-                out["done"][rows[ri[ok]], cols[ci[ok]]] = True
+        pair = np.isfinite(lo0) & np.isfinite(hi0) & (lo0 < hi0)
+        ri, ci = np.nonzero(pair)
+        ti, tci = np.nonzero(np.isfinite(top0) & ~pair & ~near)
+        k, kt = ri.size, ti.size
+        moving = xm = None
+        if k:
+            # both edges of the entries whose four nodes have the interval: the lower and upper
+            # edges of the odd orders, then those of the even
+            k1 = int(np.count_nonzero(oddrow[ri]))
+            lo_x, hi_x = lo0[ri, ci], hi0[ri, ci]
+            x0 = np.concatenate([lo_x[:k1], hi_x[:k1], lo_x[k1:], hi_x[k1:]])
+            ent = np.arange(k)
+            ent = np.concatenate([ent[:k1], ent[:k1], ent[k1:], ent[k1:]])  # each point's entry
+            sign = np.ones(2 * k)
+            sign[k1 : 2 * k1] = -1.0
+            sign[k + k1 :] = -1.0
+            at = ci[ent]
+            psub = (crow[ri[ent]],) + tuple(v[at] for v in pars) + (oddrow[ri[ent]],)
+            root, doubt, good, (moving, xm) = _table_edges(ev, psub, x0, sign, left=True)
+        high = np.zeros(0, bool)
+        if kt:
+            # the maximiser of D where the four nodes all lack the interval
+            tsub = (crow[ti],) + tuple(v[tci] for v in pars) + (oddrow[ti],)
+            top, dtop, ok, high, (curv, third) = _table_top(ev, tsub, top0[ti, tci])
+            r, q = rows[ti[ok]], cols[tci[ok]]
+            out["top"][r, q], out["dtop"][r, q] = top[ok], dtop[ok]
+            done[r, q] = True
+        if high.any() or (moving is not None and moving.size):
+            # an interval whose edges the tables did not give (split at the maximiser), and the
+            # edges that one step did not converge: more steps, in the same calls
+            hsub = tuple(v[high] for v in tsub) if kt else tuple(v[:0] for v in psub)
+            hx = (top[high], dtop[high], curv[high]) if kt else (np.zeros(0),) * 3
+            h3 = third[high] if kt else None
+            extra = None
+            if moving is not None:
+                extra = (tuple(v[moving] for v in psub), xm, sign[moving])
+            lo, hi, lo_d, hi_d, ok, more = _table_split(ev, hsub, *hx, extra=extra, third=h3)
+            if moving is not None:
+                root[moving], doubt[moving], good[moving] = more
+            if ok.any():
+                hi_, hci = ti[high][ok], tci[high][ok]
+                r, q = rows[hi_], cols[hci]
+                out["lo"][r, q], out["hi"][r, q] = lo[ok], hi[ok]
+                out["lo_doubt"][r, q], out["hi_doubt"][r, q] = lo_d[ok], hi_d[ok]
+                out["top"][r, q] = hx[0][ok]
+                out["dtop"][r, q] = np.inf
+                done[r, q] = True
+        if k:
+            lp, hp = np.nonzero(sign > 0)[0], np.nonzero(sign < 0)[0]  # (in the entries' order)
+            lo, hi = root[lp], root[hp]
+            ok = good[lp] & good[hp] & (lo < hi)
+            gap = np.maximum(np.abs(psub[0][hp] + hi), 1.0)
+            ok &= hi - lo > np.where(near[ci], _NEAR_GAP, 1e-8) * gap
+            r, q = rows[ri[ok]], cols[ci[ok]]
+            out["lo"][r, q], out["hi"][r, q] = lo[ok], hi[ok]
+            out["lo_doubt"][r, q], out["hi_doubt"][r, q] = doubt[lp][ok], doubt[hp][ok]
+            out["top"][r, q] = 0.5 * (lo[ok] + hi[ok])  # (D > 0 between the edges)
+            out["dtop"][r, q] = np.inf
+            done[r, q] = True
+        # the entries left (mostly a maximiser at an end of the undamped interval, at small
+        # depths): no interval wherever the bound of :func:`_no_interval` proves it
+        ri, ci = np.nonzero(~done[rows][:, cols] & ~near)
+        if ri.size:
+            ok = _no_interval(oddrow[ri], crow[ri], *(v[ci] for v in params))
+            done[rows[ri[ok]], cols[ci[ok]]] = True
     return out
+
+
+def _parity_call(fn_odd, fn_even, odd, x, args):
+    """``fn_odd(x, *args)`` at the points where ``odd`` and ``fn_even(x, *args)`` at the others
+    (arrays of one length), as one result (a tuple of arrays where the functions give tuples):
+    on two slices where the odd points come first (the order the table path keeps), else on
+    the gathered points."""
+    k = int(np.count_nonzero(odd))
+    if k == odd.size:
+        return fn_odd(x, *args)
+    if k == 0:
+        return fn_even(x, *args)
+    if not odd[k:].any():
+        a = fn_odd(x[:k], *(v[:k] for v in args))
+        b = fn_even(x[k:], *(v[k:] for v in args))
+        if isinstance(a, tuple):
+            return tuple(np.concatenate((p, q)) for p, q in zip(a, b, strict=True))
+        return np.concatenate((a, b))
+    even = ~odd
+    a = fn_odd(x[odd], *(v[odd] for v in args))
+    b = fn_even(x[even], *(v[even] for v in args))
+
+    def put(p, q):
+        r = np.empty(x.shape, np.result_type(p, q))
+        r[odd], r[even] = p, q
+        return r
+
+    if isinstance(a, tuple):
+        return tuple(put(p, q) for p, q in zip(a, b, strict=True))
+    return put(a, b)
+
+
+class _ByParity:
+    """A compiled form of each parity as one callable: ``f(x, *args, odd)`` evaluates the form of
+    the odd orders where the bool array ``odd`` is true and that of the even orders elsewhere
+    (:func:`_parity_call`).  The mask rides last among the arguments, so that the iterations
+    that carry their arguments along (compacting every one with the same mask) carry it too."""
+
+    __slots__ = ("odd_fn", "even_fn")
+
+    def __init__(self, odd_fn, even_fn):
+        self.odd_fn, self.even_fn = odd_fn, even_fn
+
+    def __call__(self, x, *args):
+        return _parity_call(self.odd_fn, self.even_fn, args[-1], x, args[:-1])
+
+
+@cache
+def _indicator_both():
+    """:func:`_indicator_powers` of both parities as one :class:`_ByParity` (called as ``fn(theta,
+    c, r2, u, beta, g, *powers, odd)``) and the powers, which the two stored forms share."""
+    odd_fn, p_odd = _indicator_powers(int(_parity(1)))
+    even_fn, p_even = _indicator_powers(int(_parity(2)))
+    if p_odd != p_even:  # pragma: no cover - the stored forms hoist the same powers
+        raise RuntimeError(f"the indicators hoist different powers: {p_odd} and {p_even}")
+    return _ByParity(odd_fn, even_fn), p_odd
+
+
+@cache
+def _plain_both():
+    """The indicator ``D`` of both parities, value only, as one :class:`_ByParity`."""
+    return _ByParity(
+        indicator(int(_parity(1))).compiled("numpy", 0),
+        indicator(int(_parity(2))).compiled("numpy", 0),
+    )
 
 
 #: :func:`_no_interval` bounds ``D`` on this many pieces of the range where it can be positive,
@@ -1268,12 +1338,17 @@ def _no_interval(parity, c, r2, u, beta, g):
     nearest 0): an entry is taken where every piece's bound is below minus ``1e-10`` times the
     sizes of its terms.  The terms are the indicator's own (the compiled form at ``theta = 0``
     with ``u = 0`` or ``r2 = 0``, and with ``r2 = u = 0`` for ``sin^2``); ``s_0``, ``s_1`` are
-    rounded up (by more than the rounding of ``c -+ s``)."""
-    form = indicator(parity).compiled("numpy", 0)
+    rounded up (by more than the rounding of ``c -+ s``).  ``parity``: that of every entry (an
+    int, as :func:`verify.derived.indicator` takes it), or a bool array, true for the entries of
+    odd orders."""
+    if np.ndim(parity) == 0:
+        form, odd = indicator(parity).compiled("numpy", 0), None
+    else:
+        form, odd = _plain_both(), np.asarray(parity, bool)
     with np.errstate(invalid="ignore", over="ignore", divide="ignore"):
         pad = 1e-15 * c
         s = np.arcsin(np.sqrt(np.clip(r2, 0.0, 1.0))) * (1.0 + 1e-12) + pad
-        peak, damp = _f2_peak(form, c - s, c + s, r2, u, beta, g)
+        peak, damp = _f2_peak(form, c - s, c + s, r2, u, beta, g, odd=odd)
         taken = (c - s > 0) & (r2 >= 0) & (2.0 * peak < damp)
         rest = np.nonzero(~taken & (peak < r2) & (r2 >= 0))[0]
         if rest.size == 0:
@@ -1288,21 +1363,24 @@ def _no_interval(parity, c, r2, u, beta, g):
         rep = tuple(np.repeat(v, N) for v in (rr, uu, bb, gg))
         a, b = e[:, :-1].ravel(), e[:, 1:].ravel()
         near = np.where(a * b <= 0, 0.0, np.minimum(np.abs(a), np.abs(b)))
-        P, S, sin2 = _f2_peak(form, X[:, :-1].ravel(), X[:, 1:].ravel(), *rep, theta=near)
+        ends = (X[:, :-1].ravel(), X[:, 1:].ravel())
+        oddN = None if odd is None else np.repeat(odd[rest], N)
+        P, S, sin2 = _f2_peak(form, *ends, *rep, theta=near, odd=oddN)
         bound = P - S - sin2
         ok = (X[:, :-1].ravel() > 0) & (bound < -1e-10 * (P + S + sin2 + rep[0]))
         taken[rest] = ok.reshape(k, N).all(axis=1)
     return taken
 
 
-def _f2_peak(form, x1, x2, r2, u, beta, g, *, theta=None):
+def _f2_peak(form, x1, x2, r2, u, beta, g, *, theta=None, odd=None):
     """``(P, S)``: an upper bound ``P`` of ``r2 f(beta x)^2`` on ``[x1, x2]`` and ``S = u sinh(g
     x1)^2`` (:func:`_no_interval`; ``form`` the compiled indicator, ``r2 f(beta x)^2 - u sinh(g
     x)^2`` at ``theta = 0``, taken with ``u = 0`` or ``r2 = 0``): ``f^2`` is monotone between the
     multiples of ``pi/2`` of ``beta x``, so its largest value is at an end or at the one multiple
     inside (``r2`` where there are more); the multiples are counted on the range widened by a
     relative 1e-12 and the bound raised by what ``f^2`` can change over that.  ``theta``: also
-    ``sin(theta)^2`` there (the form with ``r2 = u = 0``), in the same call: ``(P, S, sin^2)``."""
+    ``sin(theta)^2`` there (the form with ``r2 = u = 0``), in the same call: ``(P, S, sin^2)``.
+    ``odd``: ``form`` is :func:`_plain_both`, and this is its mask of the odd orders."""
     k = x1.size
     zero = np.zeros(k)
     q = 2.0 / math.pi
@@ -1311,7 +1389,7 @@ def _f2_peak(form, x1, x2, r2, u, beta, g, *, theta=None):
     mid = j2 / (q * beta)  # the multiple of pi/2 inside (where there is one)
     cat = np.concatenate
     blocks = 4 if theta is None else 5
-    got = form(
+    args = (
         np.zeros(4 * k) if theta is None else cat([np.zeros(4 * k), theta]),
         cat([x1, x2, mid, x1, x1][:blocks]),
         cat([r2, r2, r2, zero, zero][:blocks]),
@@ -1319,6 +1397,7 @@ def _f2_peak(form, x1, x2, r2, u, beta, g, *, theta=None):
         cat([beta] * blocks),
         cat([g] * blocks),
     )
+    got = form(*args) if odd is None else form(*args, cat([odd] * blocks))
     got = np.asarray(got, float)
     ends = np.maximum(got[:k], got[k : 2 * k])
     ends = np.where(j2 == j1, ends, np.maximum(ends, got[2 * k : 3 * k]))
@@ -1367,7 +1446,7 @@ def _table_edges(ev, args, x, sign, steps: int = _TABLE_STEPS, *, first=None, le
     return (root, doubt, good, rest) if left else (root, doubt, good)
 
 
-def _table_top(ev, parity, args, x, *, first=None):
+def _table_top(ev, args, x, *, first=None):
     """The maximiser of ``D`` from ``x`` near it (:func:`_table_friction`): at most
     :data:`_TABLE_STEPS` Halley steps on ``D'``, a point dropped once its step is below
     :data:`_TOP_STEP` (``D`` there from its Taylor polynomial, as :func:`_maximiser`):
@@ -1376,7 +1455,8 @@ def _table_top(ev, parity, args, x, *, first=None):
     indicator above ``1e-12``;
     ``high`` where it is a maximum inside the window with ``D`` above its rounding bound (the
     interval exists: :func:`_table_split` finds its edges).  ``first``: the evaluation at ``x``,
-    done already."""
+    done already.  ``ev`` is :func:`_indicator_both` (the last of ``args`` the mask of the odd
+    orders)."""
     top = np.full(x.size, np.nan)
     dtop = np.full(x.size, np.nan)
     curv = np.full(x.size, np.nan)
@@ -1412,7 +1492,7 @@ def _table_top(ev, parity, args, x, *, first=None):
     if sel.size:  # the undamped indicator there: D with u = g = 0 (the same derived form)
         c, r2, _u, beta, _g = (v[sel] for v in args[:5])
         zero = np.zeros(sel.size)
-        d0 = indicator(parity).compiled("numpy", 0)(top[sel], c, r2, zero, beta, zero)
+        d0 = _plain_both()(top[sel], c, r2, zero, beta, zero, args[-1][sel])
         ok[sel] = np.asarray(d0, float) > 1e-12
     return top, dtop, ok, high, (curv, third)
 
@@ -1651,7 +1731,7 @@ def boundary_grid(orders, m, *, Q=None, damping="exact", system="pendulum", duty
         doubt[:, ~served] = True
     for i, j in zip(*np.nonzero(doubt), strict=True):
         if Qx is not None and served[j]:
-            got = _confirm(orders[i], dep.exact(j), Qx, damping, sysv, out[i, :, j])
+            got = _confirm(orders[i], dep.exact(j), Qx, damping, sysv, out[i, :, j], refine=True)
             if got is not None:
                 out[i, :, j] = got
                 continue
@@ -1687,7 +1767,7 @@ def _confirmed(n: int, m: Fraction, Q, damping: str, system, edges) -> bool:
     return _confirm(n, m, Q, damping, system, edges) is not None
 
 
-def _confirm(n: int, m: Fraction, Q, damping: str, system, edges):
+def _confirm(n: int, m: Fraction, Q, damping: str, system, edges, *, refine: bool = False):
     """The edges ``(lower, upper)`` (``T/T0``, doubles) of a friction entry whose double edges
     ``edges`` the error estimate could not bound, where a proof in ball arithmetic puts them
     within a relative :data:`CONFIRM_REL` of the exact edges; else ``None``.  The proof: the
@@ -1701,41 +1781,70 @@ def _confirm(n: int, m: Fraction, Q, damping: str, system, edges):
     is smooth and its zero simple there, so it lands within about an ulp of the exact edge where
     the double edge, set by the rounding of ``D`` near a double root, may be off by up to the
     bound), kept inside the proved bracket.
+    ``refine=True``: an edge whose bracket fails the test (a double edge off by more than the
+    bound, as the rounding of ``D`` next to a double root can leave it) is moved once to the
+    secant root through the two points and tested again with the same proof around that point.
     ``None`` (the entry then goes to the certified route) where a sign is not decided, the
     entry is NaN, or the normal form does not apply (a half critically or over-damped)."""
-    from flint import arb, ctx
-
-    lo, hi = (float(e) for e in edges)
+    arb, ctx = _flint()
+    lo, hi = float(edges[0]), float(edges[1])
     if not (math.isfinite(lo) and math.isfinite(hi) and lo < hi):
         return None
-    Qf = Fraction(Q) if not isinstance(Q, Fraction) else Q
-    m = Fraction(m)
+    Qf = Q if isinstance(Q, Fraction) else Fraction(Q)
+    m = m if isinstance(m, Fraction) else Fraction(m)
     a, b, p, q = Qf.numerator, Qf.denominator, m.numerator, m.denominator
     if damping == "exact" and not (4 * a * a - b * b) * q > p * b * b:  # 4 Q^2 - 1 - m > 0
         return None
-    form = indicator(int(_parity(n))).compiled("arb", 0)
+    form = _arb_indicator(n % 2)
     out = []
     with ctx.workprec(CONFIRM_BITS):
-        P = normal_params(m, Qf, damping, backend("arb"), system)
+        P = normal_params(m, Qf, damping, _ARB, system)
         half_pi = arb.pi() / 2
         pi, n2, w = 2 * half_pi, arb(n) / 2, P.w
         args = (n * half_pi, P.r2, P.u, P.beta, P.g)
         d = arb(CONFIRM_REL)  # the double, exactly
         scales = ((-1, 1 - d), (1, 1 + d))
         for T, first in ((lo, -1), (hi, 1)):
-            ends = []
-            aT = arb(T)
-            for side, scale in scales:
-                Tx = aT * scale
-                v = form(pi * (Tx * w - n2), *args)
-                want = first * side  # lower: -, +; upper: +, -
-                if not (v < 0 if want > 0 else v > 0):
+            for again in (refine, False):
+                ends = []
+                ok = True
+                aT = arb(T)
+                for side, scale in scales:
+                    Tx = aT * scale
+                    v = form(pi * (Tx * w - n2), *args)
+                    want = first * side  # lower: -, +; upper: +, -
+                    if not (v < 0 if want > 0 else v > 0):
+                        if not again:
+                            return None
+                        ok = False
+                    ends.append((Tx.mid(), v.mid()))
+                (t1, v1), (t2, v2) = ends  # D is close to linear in T across the bracket
+                root = float(t1 - v1 * (t2 - t1) / (v2 - v1))
+                if ok:
+                    out.append(root if float(t1) <= root <= float(t2) else T)
+                    break
+                if not (math.isfinite(root) and root > 0):
                     return None
-                ends.append((Tx.mid(), v.mid()))
-            (t1, v1), (t2, v2) = ends  # D is close to linear in T across the bracket
-            root = float(t1 - v1 * (t2 - t1) / (v2 - v1))
-            out.append(root if float(t1) <= root <= float(t2) else T)
-    return out[0], out[1]
+                T = root  # (the secant root through the two points: the bracket again there)
+    return (out[0], out[1]) if out[0] < out[1] else None
+
+
+@cache
+def _flint():
+    """``(arb, ctx)`` of python-flint (imported on first use)."""
+    from flint import arb, ctx
+
+    return arb, ctx
+
+
+@cache
+def _arb_indicator(odd: int):
+    """The indicator ``D`` of the parity of the orders ``n`` with ``n % 2 == odd``, compiled for
+    ``arb`` (:func:`_confirm`)."""
+    return indicator(int(_parity(2 - odd))).compiled("arb", 0)
+
+
+_ARB = backend("arb")
 
 
 def _certified_point(n: int, m: Fraction, Q, damping: str, system=None) -> tuple[float, float]:
