@@ -1825,12 +1825,22 @@ def boundary_grid(orders, m, *, Q=None, damping="exact", system="pendulum", duty
             )
             out[:, :, cols] = part
         doubt[:, ~served] = True
-    for i, j in zip(*np.nonzero(doubt), strict=True):
-        if Qx is not None and served[j]:
-            got = _confirm(orders[i], dep.exact(j), Qx, damping, sysv, out[i, :, j], refine=True)
-            if got is not None:
-                out[i, :, j] = got
-                continue
+    todo = list(zip(*np.nonzero(doubt), strict=True))
+    if Qx is not None and todo:  # the proof in ball arithmetic, all entries at one precision
+        mine = [(i, j) for i, j in todo if served[j]]
+        got = _confirm_many(
+            [(orders[i], dep.exact(j), out[i, :, j]) for i, j in mine],
+            Qx,
+            damping,
+            sysv,
+            refine=True,
+        )
+        for (i, j), edges in zip(mine, got, strict=True):
+            if edges is not None:
+                out[i, :, j] = edges
+                doubt[i, j] = False
+        todo = list(zip(*np.nonzero(doubt), strict=True))
+    for i, j in todo:
         out[i, :, j] = _certified_point(orders[i], dep.exact(j), Qx, damping, sysv)
     return out[..., 0] if scalar else out
 
@@ -1882,46 +1892,59 @@ def _confirm(n: int, m: Fraction, Q, damping: str, system, edges, *, refine: boo
     secant root through the two points and tested again with the same proof around that point.
     ``None`` (the entry then goes to the certified route) where a sign is not decided, the
     entry is NaN, or the normal form does not apply (a half critically or over-damped)."""
+    return _confirm_many([(n, m, edges)], Q, damping, system, refine=refine)[0]
+
+
+def _confirm_many(entries, Q, damping: str, system, *, refine: bool = False) -> list:
+    """:func:`_confirm` of every ``(n, m, edges)`` of ``entries`` (one working precision and its
+    constants for all): a list of the results."""
     arb, ctx = _flint()
+    Qf = Q if isinstance(Q, Fraction) else Fraction(Q)
+    with ctx.workprec(CONFIRM_BITS):
+        half_pi = arb.pi() / 2
+        d = arb(CONFIRM_REL)  # the double, exactly
+        consts = (half_pi, 2 * half_pi, ((-1, 1 - d), (1, 1 + d)))
+        return [_confirm_at(n, m, Qf, damping, system, e, refine, consts) for n, m, e in entries]
+
+
+def _confirm_at(n, m, Qf, damping, system, edges, refine, consts):
+    """:func:`_confirm` at the working precision, with its constants ``consts``."""
     lo, hi = float(edges[0]), float(edges[1])
     if not (math.isfinite(lo) and math.isfinite(hi) and lo < hi):
         return None
-    Qf = Q if isinstance(Q, Fraction) else Fraction(Q)
     m = m if isinstance(m, Fraction) else Fraction(m)
     a, b, p, q = Qf.numerator, Qf.denominator, m.numerator, m.denominator
     if damping == "exact" and not (4 * a * a - b * b) * q > p * b * b:  # 4 Q^2 - 1 - m > 0
         return None
+    arb = _flint()[0]
     form = _arb_indicator(n % 2)
     out = []
-    with ctx.workprec(CONFIRM_BITS):
-        P = normal_params(m, Qf, damping, _ARB, system)
-        half_pi = arb.pi() / 2
-        pi, n2, w = 2 * half_pi, arb(n) / 2, P.w
-        args = (n * half_pi, P.r2, P.u, P.beta, P.g)
-        d = arb(CONFIRM_REL)  # the double, exactly
-        scales = ((-1, 1 - d), (1, 1 + d))
-        for T, first in ((lo, -1), (hi, 1)):
-            for again in (refine, False):
-                ends = []
-                ok = True
-                aT = arb(T)
-                for side, scale in scales:
-                    Tx = aT * scale
-                    v = form(pi * (Tx * w - n2), *args)
-                    want = first * side  # lower: -, +; upper: +, -
-                    if not (v < 0 if want > 0 else v > 0):
-                        if not again:
-                            return None
-                        ok = False
-                    ends.append((Tx.mid(), v.mid()))
-                (t1, v1), (t2, v2) = ends  # D is close to linear in T across the bracket
-                root = float(t1 - v1 * (t2 - t1) / (v2 - v1))
-                if ok:
-                    out.append(root if float(t1) <= root <= float(t2) else T)
-                    break
-                if not (math.isfinite(root) and root > 0):
-                    return None
-                T = root  # (the secant root through the two points: the bracket again there)
+    half_pi, pi, scales = consts
+    P = normal_params(m, Qf, damping, _ARB, system)
+    n2, w = arb(n) / 2, P.w
+    args = (n * half_pi, P.r2, P.u, P.beta, P.g)
+    for T, first in ((lo, -1), (hi, 1)):
+        for again in (refine, False):
+            ends = []
+            ok = True
+            aT = arb(T)
+            for side, scale in scales:
+                Tx = aT * scale
+                v = form(pi * (Tx * w - n2), *args)
+                want = first * side  # lower: -, +; upper: +, -
+                if not (v < 0 if want > 0 else v > 0):
+                    if not again:
+                        return None
+                    ok = False
+                ends.append((Tx.mid(), v.mid()))
+            (t1, v1), (t2, v2) = ends  # D is close to linear in T across the bracket
+            root = float(t1 - v1 * (t2 - t1) / (v2 - v1))
+            if ok:
+                out.append(root if float(t1) <= root <= float(t2) else T)
+                break
+            if not (math.isfinite(root) and root > 0):
+                return None
+            T = root  # (the secant root through the two points: the bracket again there)
     return (out[0], out[1]) if out[0] < out[1] else None
 
 
