@@ -2004,13 +2004,18 @@ def _double_grid(orders, dep: _Depths, cols, Qx, damping):
     h1, h2 = _halves(dep, cols, Qexact)
     u1 = (4 * float(Qexact) ** 2 - 1 - ms) / (1 + ms)
     normal = (h1 == 1) & (u1 >= NEAR_CRITICAL**2)
+    fr = (float(Qexact), "exact")
+    if normal.all():  # (every depth: no subset to gather and put back)
+        P = normal_params(ms, float(Qexact), "exact", _NP, om=om)
+        P = _exact_near_critical(P, ms, lambda k: dep.exact(int(cols[k])), Qexact)
+        doubt[:] = _fill_normal(out, orders, ms, P, damped=True, om=om, friction=fr)
+        return out, doubt
     if normal.any():
         idx = np.nonzero(normal)[0]
         sub = ms[idx]
         P = normal_params(sub, float(Qexact), "exact", _NP, om=om[idx])
         P = _exact_near_critical(P, sub, lambda k: dep.exact(int(cols[idx[k]])), Qexact)
         part = np.full((len(orders), 2, sub.size), np.nan)
-        fr = (float(Qexact), "exact")
         doubt[:, idx] = _fill_normal(part, orders, sub, P, damped=True, om=om[idx], friction=fr)
         out[:, :, idx] = part
     for j in np.nonzero(~normal)[0]:
