@@ -291,3 +291,25 @@ def test_confirmation_returns_the_secant_root():
             assert got is not None
             for g, want in zip(got, (b.lower, b.upper), strict=True):
                 assert abs(g - float(want)) <= 1e-15 * abs(float(want))
+
+
+def test_confirmation_refines_an_edge_beyond_the_bound():
+    """With ``refine=True`` (the grid's call) an escalated edge that misses the bound -- a double
+    edge off by a relative 1e-14 .. 3e-14, as the rounding of ``D`` next to a double root can
+    leave it (order 5 at m = 0.5095, paper model, left the lower edge 8.5e-15 off) -- is moved
+    to the secant root through the two tested points and proved there: both edges returned are
+    within 1e-15 of the certified ones; without ``refine`` the same edges are refused.
+    Reference: the certified edges at 30 digits."""
+    from verify.grid import _confirm
+    from verify.inputs import as_system
+
+    sysv = as_system("pendulum", "1/2")
+    for n, m, damping in ((5, "0.5095", "paper"), (3, "0.4825", "exact")):
+        b = boundary(n, Fraction(m), Q=7, damping=damping, digits=30)
+        lo, hi = float(b.lower), float(b.upper)
+        for moved in ((lo * (1 + 3e-14), hi), (lo, hi * (1 - 1e-14)), (lo * (1 - 2e-14), hi)):
+            assert _confirm(n, Fraction(m), 7, damping, sysv, moved) is None
+            got = _confirm(n, Fraction(m), 7, damping, sysv, moved, refine=True)
+            assert got is not None
+            for g, want in zip(got, (b.lower, b.upper), strict=True):
+                assert abs(g - float(want)) <= 1e-15 * abs(float(want))

@@ -58,8 +58,10 @@ Method (all orders and depths at once):
   slope at the edge); next to a threshold or a closing gap, where the edges are a near-double
   root, the few entries that cannot meet the bound are proved in ball arithmetic
   (:func:`_confirm`: the sign of the indicator at the exact depth on both sides of each edge,
-  and the secant root between)
-  and go to the certified route only where that fails.
+  and the secant root between; an edge that misses the bound is moved once to the secant root
+  through the two points and tested there) and go to the certified route only where that fails;
+* with friction the table path takes both parities in one pass (:class:`_ByParity`: each
+  evaluation calls the form of each parity on its part of the points).
 """
 
 from __future__ import annotations
@@ -531,10 +533,12 @@ _WORK = _Workspace()
 _WORK_EDGES = 1 << 14
 
 
-def _start_values(table, rho, out, tmp) -> None:
+def _start_values(table, rho, out, tmp, axis: int = 1) -> None:
     """``out`` (``(rows, len(rho))``) = the rows of ``table`` (values at the nodes of
-    :func:`_start_tables`) interpolated at ``rho`` by the cubic through the four nearest nodes."""
-    K = table.shape[1]
+    :func:`_start_tables`) interpolated at ``rho`` by the cubic through the four nearest nodes.
+    ``axis=0``: ``table`` holds the nodes along its rows (``(K, columns)``, one gather per node
+    fetches every column) and ``out`` is ``(len(rho), columns)``; the same numbers."""
+    K = table.shape[axis]
     u = rho * K - 0.5  # the position in units of the node spacing
     j = np.floor(u)
     np.clip(j - 1, 0, K - 4, out=j)
@@ -543,11 +547,12 @@ def _start_values(table, rho, out, tmp) -> None:
     v01, v23 = v * v1, v2 * v3
     j = j.astype(np.intp)
     # the Lagrange weights of the nodes j .. j+3 (uniform spacing)
-    np.take(table, j, axis=1, out=out, mode="clip")  # (j is in range: no checks)
-    out *= v1 * v23 * (-1 / 6)
+    np.take(table, j, axis=axis, out=out, mode="clip")  # (j is in range: no checks)
+    w = v1 * v23 * (-1 / 6)
+    out *= w if axis else w[:, None]
     for i, w in ((1, v * v23 * 0.5), (2, v01 * v3 * -0.5), (3, v01 * v2 * (1 / 6))):
-        np.take(table, j + i, axis=1, out=tmp, mode="clip")
-        tmp *= w
+        np.take(table, j + i, axis=axis, out=tmp, mode="clip")
+        tmp *= w if axis else w[:, None]
         out += tmp
 
 
@@ -1149,103 +1154,244 @@ def _table_friction(orders, P, rho, system, friction, cols) -> dict:
     interval) where they converge (step below :data:`_TOP_STEP`) to a maximum ``D'' < 0`` with
     ``D`` below minus its rounding bound there and the undamped indicator ``D0`` (``D`` with
     ``u = g = 0``) above ``1e-12`` (so the point lies between the undamped roots, where ``D`` has
-    its one maximum): ``D < 0`` on the whole window."""
+    its one maximum): ``D < 0`` on the whole window.
+
+    Both parities in one pass (:class:`_FrictionPlan`): the rows of the odd orders first, every
+    set of points in that order, and each evaluation calls the form of each parity on its part
+    (:class:`_ByParity`); the first step of the edges and of the maximisers from one evaluation;
+    the results gathered in that order of the rows with masks, and put in the caller's order once
+    at the end."""
     no, N = len(orders), rho.size
-    out = {
-        "lo": np.full((no, N), np.nan),
-        "hi": np.full((no, N), np.nan),
-        "top": np.full((no, N), np.nan),
-        "dtop": np.full((no, N), np.nan),
-        "undecided": np.zeros((no, N), bool),
-        "lo_doubt": np.zeros((no, N), bool),
-        "hi_doubt": np.zeros((no, N), bool),
-        "done": np.zeros((no, N), bool),
-    }
-    if cols.size == 0:
+    keys = ("lo", "hi", "top", "dtop", "undecided", "lo_doubt", "hi_doubt", "done")
+    nc = cols.size
+    full = nc == N  # (then cols is every column, in order)
+    out = {k: np.full((no, N), np.nan) if k in keys[:4] else np.zeros((no, N), bool) for k in keys}
+    if nc == 0:
         return out
-    tables = _edge_tables(system, list(orders), friction)
-    stack = np.concatenate(tables)  # (3 no, K)
-    start = np.empty((3 * no, cols.size))
-    _start_values(stack, rho[cols], start, np.empty_like(start))
-    start = start.reshape(no, 3, cols.size)
-    params = (P.r2[cols], P.u[cols], P.beta[cols], P.g[cols])
-    near = np.asarray(P.bm)[cols] < NEAR_ONE
+    plan = _friction_plan(system, orders, friction)
+    R1, crow, oddrow = plan.n_odd, plan.c, plan.odd
+    start = np.empty((nc, 3 * no))
+    _start_values(plan.table, rho if full else rho[cols], start, np.empty_like(start), axis=0)
+    st = np.ascontiguousarray(start.T).reshape(no, 3, nc)  # rows in the plan's order
+    lo0, hi0, top0 = st[:, 0], st[:, 1], st[:, 2]
+    if full:
+        params = (P.r2, P.u, P.beta, P.g)
+        near = np.asarray(P.bm) < NEAR_ONE
+    else:
+        params = (P.r2[cols], P.u[cols], P.beta[cols], P.g[cols])
+        near = np.asarray(P.bm)[cols] < NEAR_ONE
+    ev, powers = _indicator_both()
+    named = dict(zip(("r2", "u", "beta", "g"), params, strict=True))
+    pars = np.array(params + tuple(named[v] ** k for v, k in powers))  # (once per depth)
+    nrows = len(pars) + 2  # the arguments of ev: c, the parameters and powers, the parity mask
+
+    def gather(rc, at):
+        """The arguments of ev (one row each) at the entries ``(rc, at)`` (plan's rows)."""
+        args = np.empty((nrows, at.size))
+        args[0] = crow[rc]
+        np.take(pars, at, axis=1, out=args[1:-1], mode="clip")
+        args[-1] = oddrow[rc]
+        return args
+
+    # results in the plan's order of the rows
+    LO, HI, TOP, DTOP = (np.full((no, nc), np.nan) for _ in range(4))
+    LOD, HID, DONE = (np.zeros((no, nc), bool) for _ in range(3))
     with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
-        for parity in (1, 0):
-            rows = np.nonzero(orders % 2 == parity)[0]
-            if rows.size == 0:
-                continue
-            form = int(_parity(int(orders[rows[0]])))
-            ev, powers = _indicator_powers(form)
-            named = dict(zip(("r2", "u", "beta", "g"), params, strict=True))
-            pars = params + tuple(named[v] ** k for v, k in powers)  # (once per depth)
-            c = (orders[rows] * _HALF_PI)[:, None] * np.ones(cols.size)
-            lo0, hi0, top0 = start[rows, 0], start[rows, 1], start[rows, 2]
-            pair = np.isfinite(lo0) & np.isfinite(hi0) & (lo0 < hi0)
-            ri, ci = np.nonzero(pair)
-            ti, tci = np.nonzero(np.isfinite(top0) & ~pair & ~near)
-            k, kt = ri.size, ti.size
-            if k + kt:
-                # one evaluation for the first step of both edges of the entries whose four nodes
-                # have the interval and the maximiser of the others
-                x0 = np.concatenate([lo0[ri, ci], hi0[ri, ci], top0[ti, tci]])
-                cp = c[ri, ci]
-                at = np.concatenate([ci, ci, tci])  # the depth of each point
-                sub = (np.concatenate([cp, cp, c[ti, tci]]),) + tuple(v[at] for v in pars)
-                first = ev(x0, *sub)
-                e = 2 * k
-                psub = tuple(v[:e] for v in sub)
-                sign = np.concatenate([np.ones(k), -np.ones(k)])
-                root, doubt, good, (moving, xm) = _table_edges(
-                    ev, psub, x0[:e], sign, first=tuple(v[:e] for v in first), left=True
-                )
-                high = np.zeros(0, bool)
-                if kt:
-                    tsub = tuple(v[e:] for v in sub)
-                    top, dtop, ok, high, (curv, third) = _table_top(
-                        ev, form, tsub, x0[e:], first=tuple(v[e:] for v in first)
-                    )
-                    r, q = rows[ti[ok]], cols[tci[ok]]
-                    out["top"][r, q], out["dtop"][r, q] = top[ok], dtop[ok]
-                    out["done"][r, q] = True
-                if high.any() or moving.size:
-                    # an interval whose edges the tables did not give (split at the maximiser), and
-                    # the edges that one step did not converge: more steps, in the same calls
-                    hsub = tuple(v[high] for v in tsub) if kt else tuple(v[:0] for v in psub)
-                    hx = (top[high], dtop[high], curv[high]) if kt else (np.zeros(0),) * 3
-                    h3 = third[high] if kt else None
-                    extra = (tuple(v[moving] for v in psub), xm, sign[moving])
-                    lo, hi, lo_d, hi_d, ok, more = _table_split(
-                        ev, hsub, *hx, extra=extra, third=h3
-                    )
-                    root[moving], doubt[moving], good[moving] = more
-                    if ok.any():
-                        hi_, hci = ti[high][ok], tci[high][ok]
-                        r, q = rows[hi_], cols[hci]
-                        out["lo"][r, q], out["hi"][r, q] = lo[ok], hi[ok]
-                        out["lo_doubt"][r, q], out["hi_doubt"][r, q] = lo_d[ok], hi_d[ok]
-                        out["top"][r, q] = hx[0][ok]
-                        out["dtop"][r, q] = np.inf
-                        out["done"][r, q] = True
-                if k:
-                    lo, hi = root[:k], root[k:]
-                    ok = good[:k] & good[k:] & (lo < hi)
-                    at = np.maximum(np.abs(cp + hi), 1.0)
-                    ok &= hi - lo > np.where(near[ci], _NEAR_GAP, 1e-8) * at
-                    r, q = rows[ri[ok]], cols[ci[ok]]
-                    out["lo"][r, q], out["hi"][r, q] = lo[ok], hi[ok]
-                    out["lo_doubt"][r, q], out["hi_doubt"][r, q] = doubt[:k][ok], doubt[k:][ok]
-                    out["top"][r, q] = 0.5 * (lo[ok] + hi[ok])  # (D > 0 between the edges)
-                    out["dtop"][r, q] = np.inf
-                    out["done"][r, q] = True
-            # the entries left (mostly a maximiser at an end of the undamped interval, at small
-            # depths): no interval wherever the bound of :func:`_no_interval` proves it
-            ri, ci = np.nonzero(~out["done"][rows][:, cols] & ~near)
-            if ri.size:
-                sub = (c[ri, ci],) + tuple(v[ci] for v in params)
-                ok = _no_interval(form, *sub)
-                out["done"][rows[ri[ok]], cols[ci[ok]]] = True
+        pair = np.isfinite(lo0) & np.isfinite(hi0) & (lo0 < hi0)
+        tmask = np.isfinite(top0) & ~pair & ~near
+        pr, pc = np.nonzero(pair)  # (row-major: the odd orders' entries first)
+        tr, tc = np.nonzero(tmask)
+        k, kt = pr.size, tr.size
+        k1, t1 = int(np.searchsorted(pr, R1)), int(np.searchsorted(tr, R1))
+        k0 = k - k1
+        if k + kt:
+            # one evaluation for the first step of both edges where the four nodes have the
+            # interval and of the maximiser where they all lack it: the points [lower, upper,
+            # maximiser] of the odd orders, then of the even
+            lo_p, hi_p, top_t = lo0[pair], hi0[pair], top0[tmask]
+
+            def order(p, q, r):  # [p, q, r] of the odd orders, then of the even
+                return np.concatenate([p[:k1], q[:k1], r[:t1], p[k1:], q[k1:], r[t1:]])
+
+            x_all = order(lo_p, hi_p, top_t)
+            args_all = gather(order(pr, pr, tr), order(pc, pc, tc))
+            first = ev(x_all, *args_all)
+            odd_n = 2 * k1 + t1
+            e_sl = (slice(0, 2 * k1), slice(odd_n, odd_n + 2 * k0))
+            t_sl = (slice(2 * k1, odd_n), slice(odd_n + 2 * k0, None))
+
+            def part(a, sls):
+                return np.concatenate([a[..., sl] for sl in sls], axis=-1)
+
+        moving = None
+        if k:
+            psub, x0 = part(args_all, e_sl), part(x_all, e_sl)
+            sign = np.ones(2 * k)
+            sign[k1 : 2 * k1] = -1.0
+            sign[2 * k1 + k0 :] = -1.0
+            root, doubt, good, (moving, xm) = _table_edges(
+                ev, psub, x0, sign, first=tuple(part(f, e_sl) for f in first), left=True
+            )
+        high = np.zeros(0, bool)
+        if kt:
+            tsub = part(args_all, t_sl)
+            top, dtop, ok, high, (curv, third) = _table_top(
+                ev, tsub, part(x_all, t_sl), first=tuple(part(f, t_sl) for f in first)
+            )
+            TOP[tmask] = np.where(ok, top, np.nan)
+            DTOP[tmask] = np.where(ok, dtop, np.nan)
+            DONE[tmask] = ok
+        if high.any() or (moving is not None and moving.size):
+            # an interval whose edges the tables did not give (split at the maximiser), and the
+            # edges that one step did not converge: more steps, in the same calls
+            hsub = tsub[:, high] if kt else psub[:, :0]
+            hx = (top[high], dtop[high], curv[high]) if kt else (np.zeros(0),) * 3
+            h3 = third[high] if kt else None
+            extra = None if moving is None else (psub[:, moving], xm, sign[moving])
+            lo, hi, lo_d, hi_d, ok, more = _table_split(ev, hsub, *hx, extra=extra, third=h3)
+            if moving is not None:
+                root[moving], doubt[moving], good[moving] = more
+            if ok.any():
+                at = np.flatnonzero(tmask)[high][ok]
+                LO.flat[at], HI.flat[at] = lo[ok], hi[ok]
+                LOD.flat[at], HID.flat[at] = lo_d[ok], hi_d[ok]
+                TOP.flat[at] = hx[0][ok]
+                DTOP.flat[at] = np.inf
+                DONE.flat[at] = True
+        if k:
+            # the edges in the entries' order (that of the mask): [odd orders, even orders]
+            lp = np.concatenate([np.arange(k1), np.arange(2 * k1, 2 * k1 + k0)])
+            hp = np.concatenate([np.arange(k1, 2 * k1), np.arange(2 * k1 + k0, 2 * k)])
+            lo, hi = root[lp], root[hp]
+            ok = good[lp] & good[hp] & (lo < hi)
+            gap = np.maximum(np.abs(crow[pr] + hi), 1.0)
+            ok &= hi - lo > np.where(near[pc], _NEAR_GAP, 1e-8) * gap
+            LO[pair], HI[pair] = np.where(ok, lo, np.nan), np.where(ok, hi, np.nan)
+            LOD[pair], HID[pair] = doubt[lp] & ok, doubt[hp] & ok
+            TOP[pair] = np.where(ok, 0.5 * (lo + hi), np.nan)  # (D > 0 between the edges)
+            DTOP[pair] = np.where(ok, np.inf, np.nan)
+            DONE[pair] = ok
+        # the entries left (mostly a maximiser at an end of the undamped interval, at small
+        # depths): no interval wherever the bound of :func:`_no_interval` proves it
+        ri, ci = np.nonzero(~DONE & ~near)
+        if ri.size:
+            ok = _no_interval(oddrow[ri], crow[ri], *np.take(pars[:4], ci, axis=1))
+            DONE[ri[ok], ci[ok]] = True
+    inv = plan.inverse
+    for key, got in zip(keys, (LO, HI, TOP, DTOP, None, LOD, HID, DONE), strict=True):
+        if got is None:
+            continue
+        if full:
+            out[key] = got[inv]
+        else:
+            out[key][:, cols] = got[inv]
     return out
+
+
+#: the plans of :func:`_table_friction`, ``(system, orders, friction) -> _FrictionPlan``
+#: (cleared when it holds :data:`_TABLES_MAX`)
+_FRICTION_PLANS: dict = {}
+
+
+class _FrictionPlan:
+    """What :func:`_table_friction` needs of ``orders`` besides the depths: the order of its rows
+    (``rows``, the odd orders first, each parity in the caller's order; ``inverse`` puts them
+    back), ``c = n pi/2`` and the parity of each row in that order, the number of odd rows, and
+    the start tables (:func:`_edge_tables`) of every row in that order stacked node by node,
+    ``(K, 3 len(orders))`` (columns: lower edge, upper edge, maximiser of each row), so that
+    one gather per node of the cubic fetches every row (:func:`_start_values` with ``axis=0``)."""
+
+    __slots__ = ("rows", "inverse", "c", "odd", "n_odd", "table")
+
+    def __init__(self, system, orders, friction):
+        orders = np.asarray(orders)
+        self.rows = np.argsort(orders % 2 == 0, kind="stable")
+        self.inverse = np.argsort(self.rows)
+        self.c = orders[self.rows] * _HALF_PI
+        self.odd = orders[self.rows] % 2 == 1
+        self.n_odd = int(np.count_nonzero(self.odd))
+        tables = _edge_tables(system, orders.tolist(), friction)
+        table = np.concatenate([tables[i] for i in self.rows]).T.copy()
+        table.flags.writeable = False
+        self.table = table
+
+
+def _friction_plan(system, orders, friction) -> _FrictionPlan:
+    key = (system, tuple(int(n) for n in orders), friction)
+    plan = _FRICTION_PLANS.get(key)
+    if plan is None:
+        if len(_FRICTION_PLANS) >= _TABLES_MAX:
+            _FRICTION_PLANS.clear()
+        plan = _FRICTION_PLANS[key] = _FrictionPlan(system, orders, friction)
+    return plan
+
+
+def _parity_call(fn_odd, fn_even, odd, x, args):
+    """``fn_odd(x, *args)`` at the points where ``odd`` and ``fn_even(x, *args)`` at the others
+    (arrays of one length), as one result (a tuple of arrays where the functions give tuples):
+    on two slices where the odd points come first (the order the table path keeps), else on
+    the gathered points."""
+    k = int(np.count_nonzero(odd))
+    if k == odd.size:
+        return fn_odd(x, *args)
+    if k == 0:
+        return fn_even(x, *args)
+    if not odd[k:].any():
+        a = fn_odd(x[:k], *(v[:k] for v in args))
+        b = fn_even(x[k:], *(v[k:] for v in args))
+        if isinstance(a, tuple):
+            return tuple(np.concatenate((p, q)) for p, q in zip(a, b, strict=True))
+        return np.concatenate((a, b))
+    even = ~odd
+    a = fn_odd(x[odd], *(v[odd] for v in args))
+    b = fn_even(x[even], *(v[even] for v in args))
+
+    def put(p, q):
+        r = np.empty(x.shape, np.result_type(p, q))
+        r[odd], r[even] = p, q
+        return r
+
+    if isinstance(a, tuple):
+        return tuple(put(p, q) for p, q in zip(a, b, strict=True))
+    return put(a, b)
+
+
+class _ByParity:
+    """A compiled form of each parity as one callable: ``f(x, *args, odd)`` evaluates the form of
+    the odd orders where the bool array ``odd`` is true and that of the even orders elsewhere
+    (:func:`_parity_call`).  The mask rides last among the arguments, so that the iterations
+    that carry their arguments along (compacting every one with the same mask) carry it too."""
+
+    __slots__ = ("odd_fn", "even_fn")
+
+    def __init__(self, odd_fn, even_fn):
+        self.odd_fn, self.even_fn = odd_fn, even_fn
+
+    def __call__(self, x, *args):
+        odd = args[-1]  # (a row of a 2-D array of arguments holds it as 0.0 and 1.0)
+        return _parity_call(
+            self.odd_fn, self.even_fn, odd if odd.dtype == bool else odd != 0, x, args[:-1]
+        )
+
+
+@cache
+def _indicator_both():
+    """:func:`_indicator_powers` of both parities as one :class:`_ByParity` (called as ``fn(theta,
+    c, r2, u, beta, g, *powers, odd)``) and the powers, which the two stored forms share."""
+    odd_fn, p_odd = _indicator_powers(int(_parity(1)))
+    even_fn, p_even = _indicator_powers(int(_parity(2)))
+    if p_odd != p_even:  # pragma: no cover - the stored forms hoist the same powers
+        raise RuntimeError(f"the indicators hoist different powers: {p_odd} and {p_even}")
+    return _ByParity(odd_fn, even_fn), p_odd
+
+
+@cache
+def _plain_both():
+    """The indicator ``D`` of both parities, value only, as one :class:`_ByParity`."""
+    return _ByParity(
+        indicator(int(_parity(1))).compiled("numpy", 0),
+        indicator(int(_parity(2))).compiled("numpy", 0),
+    )
 
 
 #: :func:`_no_interval` bounds ``D`` on this many pieces of the range where it can be positive,
@@ -1268,12 +1414,17 @@ def _no_interval(parity, c, r2, u, beta, g):
     nearest 0): an entry is taken where every piece's bound is below minus ``1e-10`` times the
     sizes of its terms.  The terms are the indicator's own (the compiled form at ``theta = 0``
     with ``u = 0`` or ``r2 = 0``, and with ``r2 = u = 0`` for ``sin^2``); ``s_0``, ``s_1`` are
-    rounded up (by more than the rounding of ``c -+ s``)."""
-    form = indicator(parity).compiled("numpy", 0)
+    rounded up (by more than the rounding of ``c -+ s``).  ``parity``: that of every entry (an
+    int, as :func:`verify.derived.indicator` takes it), or a bool array, true for the entries of
+    odd orders."""
+    if np.ndim(parity) == 0:
+        form, odd = indicator(parity).compiled("numpy", 0), None
+    else:
+        form, odd = _plain_both(), np.asarray(parity, bool)
     with np.errstate(invalid="ignore", over="ignore", divide="ignore"):
         pad = 1e-15 * c
         s = np.arcsin(np.sqrt(np.clip(r2, 0.0, 1.0))) * (1.0 + 1e-12) + pad
-        peak, damp = _f2_peak(form, c - s, c + s, r2, u, beta, g)
+        peak, damp = _f2_peak(form, c - s, c + s, r2, u, beta, g, odd=odd)
         taken = (c - s > 0) & (r2 >= 0) & (2.0 * peak < damp)
         rest = np.nonzero(~taken & (peak < r2) & (r2 >= 0))[0]
         if rest.size == 0:
@@ -1288,21 +1439,24 @@ def _no_interval(parity, c, r2, u, beta, g):
         rep = tuple(np.repeat(v, N) for v in (rr, uu, bb, gg))
         a, b = e[:, :-1].ravel(), e[:, 1:].ravel()
         near = np.where(a * b <= 0, 0.0, np.minimum(np.abs(a), np.abs(b)))
-        P, S, sin2 = _f2_peak(form, X[:, :-1].ravel(), X[:, 1:].ravel(), *rep, theta=near)
+        ends = (X[:, :-1].ravel(), X[:, 1:].ravel())
+        oddN = None if odd is None else np.repeat(odd[rest], N)
+        P, S, sin2 = _f2_peak(form, *ends, *rep, theta=near, odd=oddN)
         bound = P - S - sin2
         ok = (X[:, :-1].ravel() > 0) & (bound < -1e-10 * (P + S + sin2 + rep[0]))
         taken[rest] = ok.reshape(k, N).all(axis=1)
     return taken
 
 
-def _f2_peak(form, x1, x2, r2, u, beta, g, *, theta=None):
+def _f2_peak(form, x1, x2, r2, u, beta, g, *, theta=None, odd=None):
     """``(P, S)``: an upper bound ``P`` of ``r2 f(beta x)^2`` on ``[x1, x2]`` and ``S = u sinh(g
     x1)^2`` (:func:`_no_interval`; ``form`` the compiled indicator, ``r2 f(beta x)^2 - u sinh(g
     x)^2`` at ``theta = 0``, taken with ``u = 0`` or ``r2 = 0``): ``f^2`` is monotone between the
     multiples of ``pi/2`` of ``beta x``, so its largest value is at an end or at the one multiple
     inside (``r2`` where there are more); the multiples are counted on the range widened by a
     relative 1e-12 and the bound raised by what ``f^2`` can change over that.  ``theta``: also
-    ``sin(theta)^2`` there (the form with ``r2 = u = 0``), in the same call: ``(P, S, sin^2)``."""
+    ``sin(theta)^2`` there (the form with ``r2 = u = 0``), in the same call: ``(P, S, sin^2)``.
+    ``odd``: ``form`` is :func:`_plain_both`, and this is its mask of the odd orders."""
     k = x1.size
     zero = np.zeros(k)
     q = 2.0 / math.pi
@@ -1311,7 +1465,7 @@ def _f2_peak(form, x1, x2, r2, u, beta, g, *, theta=None):
     mid = j2 / (q * beta)  # the multiple of pi/2 inside (where there is one)
     cat = np.concatenate
     blocks = 4 if theta is None else 5
-    got = form(
+    args = (
         np.zeros(4 * k) if theta is None else cat([np.zeros(4 * k), theta]),
         cat([x1, x2, mid, x1, x1][:blocks]),
         cat([r2, r2, r2, zero, zero][:blocks]),
@@ -1319,6 +1473,7 @@ def _f2_peak(form, x1, x2, r2, u, beta, g, *, theta=None):
         cat([beta] * blocks),
         cat([g] * blocks),
     )
+    got = form(*args) if odd is None else form(*args, cat([odd] * blocks))
     got = np.asarray(got, float)
     ends = np.maximum(got[:k], got[k : 2 * k])
     ends = np.where(j2 == j1, ends, np.maximum(ends, got[2 * k : 3 * k]))
@@ -1335,7 +1490,8 @@ def _table_edges(ev, args, x, sign, steps: int = _TABLE_STEPS, *, first=None, le
     :data:`_EDGE_STEP`): ``(roots, doubt, good)`` as :func:`_edges` (``good``: converged inside
     the window, with ``sign D`` increasing through the zero).  ``first``: the evaluation at ``x``
     (``ev(x, *args)``, done already); ``left=True``: also the indices of the points still moving
-    after the last step and their next iterates."""
+    after the last step and their next iterates.  ``args``: a 2-D array, one row per argument
+    (compacted as one)."""
     root = np.full(x.size, np.nan)
     doubt = np.zeros(x.size, bool)
     good = np.zeros(x.size, bool)
@@ -1347,7 +1503,15 @@ def _table_edges(ev, args, x, sign, steps: int = _TABLE_STEPS, *, first=None, le
         s, err = _step(D, D1, D2, D3, D4)
         done = (err <= sc) & (np.abs(s) <= _EDGE_STEP)
         j = np.nonzero(done)[0]
-        if j.size:
+        if it == 0 and 2 * j.size > x.size:  # most points at once: no gathers (the same values)
+            r = x - s
+            slope = D1 - D2 * s
+            at = np.abs(sub[0] + r)
+            noise = NOISE_ULPS * 2.0**-53 * (np.abs(T0) + at * np.abs(T1))
+            root = np.where(done, r, np.nan)
+            doubt = ~(noise / (np.abs(slope) * at) <= DOUBT) & done
+            good = (sg * slope > 0) & (np.abs(r) < _HALF_PI) & done
+        elif j.size:
             sj = s[j]
             r = x[j] - sj
             slope = D1[j] - D2[j] * sj
@@ -1361,13 +1525,13 @@ def _table_edges(ev, args, x, sign, steps: int = _TABLE_STEPS, *, first=None, le
             rest = (idx[:0], x[:0])
             break
         idx, x, sg, sc = idx[keep], (x - s)[keep], sg[keep], sc[keep]
-        sub = tuple(v[keep] for v in sub)
+        sub = sub[:, keep]
     else:
         rest = (idx, x)
     return (root, doubt, good, rest) if left else (root, doubt, good)
 
 
-def _table_top(ev, parity, args, x, *, first=None):
+def _table_top(ev, args, x, *, first=None):
     """The maximiser of ``D`` from ``x`` near it (:func:`_table_friction`): at most
     :data:`_TABLE_STEPS` Halley steps on ``D'``, a point dropped once its step is below
     :data:`_TOP_STEP` (``D`` there from its Taylor polynomial, as :func:`_maximiser`):
@@ -1376,7 +1540,8 @@ def _table_top(ev, parity, args, x, *, first=None):
     indicator above ``1e-12``;
     ``high`` where it is a maximum inside the window with ``D`` above its rounding bound (the
     interval exists: :func:`_table_split` finds its edges).  ``first``: the evaluation at ``x``,
-    done already."""
+    done already.  ``ev`` is :func:`_indicator_both`, ``args`` a 2-D array, one row per argument
+    (the last the mask of the odd orders)."""
     top = np.full(x.size, np.nan)
     dtop = np.full(x.size, np.nan)
     curv = np.full(x.size, np.nan)
@@ -1391,7 +1556,17 @@ def _table_top(ev, parity, args, x, *, first=None):
         s = s / (1.0 - 0.5 * s * D3 / D2)
         done = np.abs(s) <= _TOP_STEP
         j = np.nonzero(done)[0]
-        if j.size:
+        if it == 0 and 2 * j.size > x.size:  # most points at once: no gathers (the same values)
+            t = x - s
+            d = D - s * (D1 - s * (0.5 * D2 - s * D3 / 6.0))
+            at = np.abs(sub[0] + x)
+            noise = NOISE_ULPS * 2.0**-53 * (np.abs(T0) + at * np.abs(T1))
+            top, dtop = np.where(done, t, np.nan), np.where(done, d, np.nan)
+            curv, third = np.where(done, D2 - s * D3, np.nan), np.where(done, D3, np.nan)
+            inner = (D2 < 0) & (np.abs(t) < _HALF_PI) & done
+            ok = inner & (d < -noise)
+            high = inner & (d > noise)
+        elif j.size:
             sj = s[j]
             t = x[j] - sj
             d = D[j] - sj * (D1[j] - sj * (0.5 * D2[j] - sj * D3[j] / 6.0))
@@ -1407,12 +1582,12 @@ def _table_top(ev, parity, args, x, *, first=None):
         if not keep.any():
             break
         idx, x = idx[keep], (x - s)[keep]
-        sub = tuple(v[keep] for v in sub)
+        sub = sub[:, keep]
     sel = np.nonzero(ok)[0]
     if sel.size:  # the undamped indicator there: D with u = g = 0 (the same derived form)
-        c, r2, _u, beta, _g = (v[sel] for v in args[:5])
+        c, r2, _u, beta, _g = args[:5, sel]
         zero = np.zeros(sel.size)
-        d0 = indicator(parity).compiled("numpy", 0)(top[sel], c, r2, zero, beta, zero)
+        d0 = _plain_both()(top[sel], c, r2, zero, beta, zero, args[-1, sel])
         ok[sel] = np.asarray(d0, float) > 1e-12
     return top, dtop, ok, high, (curv, third)
 
@@ -1430,6 +1605,7 @@ def _table_split(ev, args, top, dtop, curv, extra=None, third=None):
     :data:`_SPLIT_STEPS` steps of :func:`_step` (:func:`_table_edges`): ``(lower, upper, lower
     doubt, upper doubt, good)``, ``good`` where both converged inside the window with the edges'
     slopes on either side of ``top`` (as the pair path of :func:`_table_friction` takes them).
+    ``args`` (and the ``args`` of ``extra``): 2-D, one row per argument of ``ev``.
     ``extra = (args, x, sign)``: more zeros to iterate in the same calls (the table path's edges
     that its first step did not converge), returned last as ``(roots, doubt, good)``."""
     k = top.size
@@ -1441,13 +1617,13 @@ def _table_split(ev, args, top, dtop, curv, extra=None, third=None):
             hn = h - (d + h * h * (c2 + h * c3)) / (h * (2.0 * c2 + 3.0 * h * c3))
             h = np.where(np.isfinite(hn) & (hn * h > 0), hn, h)
     x0 = [top + h[:k], top + h[k:]]
-    sub = [(v, v) for v in args]
+    sub = [args, args]
     sign = [np.ones(k), -np.ones(k)]
     if extra is not None:
         x0.append(extra[1])
-        sub = [(*pair, v) for pair, v in zip(sub, extra[0], strict=True)]
+        sub.append(extra[0])
         sign.append(extra[2])
-    sub = tuple(np.concatenate(v) for v in sub)
+    sub = np.concatenate(sub, axis=1)
     root, doubt, good = _table_edges(
         ev, sub, np.concatenate(x0), np.concatenate(sign), steps=_SPLIT_STEPS
     )
@@ -1649,12 +1825,22 @@ def boundary_grid(orders, m, *, Q=None, damping="exact", system="pendulum", duty
             )
             out[:, :, cols] = part
         doubt[:, ~served] = True
-    for i, j in zip(*np.nonzero(doubt), strict=True):
-        if Qx is not None and served[j]:
-            got = _confirm(orders[i], dep.exact(j), Qx, damping, sysv, out[i, :, j])
-            if got is not None:
-                out[i, :, j] = got
-                continue
+    todo = list(zip(*np.nonzero(doubt), strict=True))
+    if Qx is not None and todo:  # the proof in ball arithmetic, all entries at one precision
+        mine = [(i, j) for i, j in todo if served[j]]
+        got = _confirm_many(
+            [(orders[i], dep.exact(j), out[i, :, j]) for i, j in mine],
+            Qx,
+            damping,
+            sysv,
+            refine=True,
+        )
+        for (i, j), edges in zip(mine, got, strict=True):
+            if edges is not None:
+                out[i, :, j] = edges
+                doubt[i, j] = False
+        todo = list(zip(*np.nonzero(doubt), strict=True))
+    for i, j in todo:
         out[i, :, j] = _certified_point(orders[i], dep.exact(j), Qx, damping, sysv)
     return out[..., 0] if scalar else out
 
@@ -1687,7 +1873,7 @@ def _confirmed(n: int, m: Fraction, Q, damping: str, system, edges) -> bool:
     return _confirm(n, m, Q, damping, system, edges) is not None
 
 
-def _confirm(n: int, m: Fraction, Q, damping: str, system, edges):
+def _confirm(n: int, m: Fraction, Q, damping: str, system, edges, *, refine: bool = False):
     """The edges ``(lower, upper)`` (``T/T0``, doubles) of a friction entry whose double edges
     ``edges`` the error estimate could not bound, where a proof in ball arithmetic puts them
     within a relative :data:`CONFIRM_REL` of the exact edges; else ``None``.  The proof: the
@@ -1701,41 +1887,83 @@ def _confirm(n: int, m: Fraction, Q, damping: str, system, edges):
     is smooth and its zero simple there, so it lands within about an ulp of the exact edge where
     the double edge, set by the rounding of ``D`` near a double root, may be off by up to the
     bound), kept inside the proved bracket.
+    ``refine=True``: an edge whose bracket fails the test (a double edge off by more than the
+    bound, as the rounding of ``D`` next to a double root can leave it) is moved once to the
+    secant root through the two points and tested again with the same proof around that point.
     ``None`` (the entry then goes to the certified route) where a sign is not decided, the
     entry is NaN, or the normal form does not apply (a half critically or over-damped)."""
-    from flint import arb, ctx
+    return _confirm_many([(n, m, edges)], Q, damping, system, refine=refine)[0]
 
-    lo, hi = (float(e) for e in edges)
+
+def _confirm_many(entries, Q, damping: str, system, *, refine: bool = False) -> list:
+    """:func:`_confirm` of every ``(n, m, edges)`` of ``entries`` (one working precision and its
+    constants for all): a list of the results."""
+    arb, ctx = _flint()
+    Qf = Q if isinstance(Q, Fraction) else Fraction(Q)
+    with ctx.workprec(CONFIRM_BITS):
+        half_pi = arb.pi() / 2
+        d = arb(CONFIRM_REL)  # the double, exactly
+        consts = (half_pi, 2 * half_pi, ((-1, 1 - d), (1, 1 + d)))
+        return [_confirm_at(n, m, Qf, damping, system, e, refine, consts) for n, m, e in entries]
+
+
+def _confirm_at(n, m, Qf, damping, system, edges, refine, consts):
+    """:func:`_confirm` at the working precision, with its constants ``consts``."""
+    lo, hi = float(edges[0]), float(edges[1])
     if not (math.isfinite(lo) and math.isfinite(hi) and lo < hi):
         return None
-    Qf = Fraction(Q) if not isinstance(Q, Fraction) else Q
-    m = Fraction(m)
+    m = m if isinstance(m, Fraction) else Fraction(m)
     a, b, p, q = Qf.numerator, Qf.denominator, m.numerator, m.denominator
     if damping == "exact" and not (4 * a * a - b * b) * q > p * b * b:  # 4 Q^2 - 1 - m > 0
         return None
-    form = indicator(int(_parity(n))).compiled("arb", 0)
+    arb = _flint()[0]
+    form = _arb_indicator(n % 2)
     out = []
-    with ctx.workprec(CONFIRM_BITS):
-        P = normal_params(m, Qf, damping, backend("arb"), system)
-        half_pi = arb.pi() / 2
-        pi, n2, w = 2 * half_pi, arb(n) / 2, P.w
-        args = (n * half_pi, P.r2, P.u, P.beta, P.g)
-        d = arb(CONFIRM_REL)  # the double, exactly
-        scales = ((-1, 1 - d), (1, 1 + d))
-        for T, first in ((lo, -1), (hi, 1)):
+    half_pi, pi, scales = consts
+    P = normal_params(m, Qf, damping, _ARB, system)
+    n2, w = arb(n) / 2, P.w
+    args = (n * half_pi, P.r2, P.u, P.beta, P.g)
+    for T, first in ((lo, -1), (hi, 1)):
+        for again in (refine, False):
             ends = []
+            ok = True
             aT = arb(T)
             for side, scale in scales:
                 Tx = aT * scale
                 v = form(pi * (Tx * w - n2), *args)
                 want = first * side  # lower: -, +; upper: +, -
                 if not (v < 0 if want > 0 else v > 0):
-                    return None
+                    if not again:
+                        return None
+                    ok = False
                 ends.append((Tx.mid(), v.mid()))
             (t1, v1), (t2, v2) = ends  # D is close to linear in T across the bracket
             root = float(t1 - v1 * (t2 - t1) / (v2 - v1))
-            out.append(root if float(t1) <= root <= float(t2) else T)
-    return out[0], out[1]
+            if ok:
+                out.append(root if float(t1) <= root <= float(t2) else T)
+                break
+            if not (math.isfinite(root) and root > 0):
+                return None
+            T = root  # (the secant root through the two points: the bracket again there)
+    return (out[0], out[1]) if out[0] < out[1] else None
+
+
+@cache
+def _flint():
+    """``(arb, ctx)`` of python-flint (imported on first use)."""
+    from flint import arb, ctx
+
+    return arb, ctx
+
+
+@cache
+def _arb_indicator(odd: int):
+    """The indicator ``D`` of the parity of the orders ``n`` with ``n % 2 == odd``, compiled for
+    ``arb`` (:func:`_confirm`)."""
+    return indicator(int(_parity(2 - odd))).compiled("arb", 0)
+
+
+_ARB = backend("arb")
 
 
 def _certified_point(n: int, m: Fraction, Q, damping: str, system=None) -> tuple[float, float]:
@@ -1776,13 +2004,18 @@ def _double_grid(orders, dep: _Depths, cols, Qx, damping):
     h1, h2 = _halves(dep, cols, Qexact)
     u1 = (4 * float(Qexact) ** 2 - 1 - ms) / (1 + ms)
     normal = (h1 == 1) & (u1 >= NEAR_CRITICAL**2)
+    fr = (float(Qexact), "exact")
+    if normal.all():  # (every depth: no subset to gather and put back)
+        P = normal_params(ms, float(Qexact), "exact", _NP, om=om)
+        P = _exact_near_critical(P, ms, lambda k: dep.exact(int(cols[k])), Qexact)
+        doubt[:] = _fill_normal(out, orders, ms, P, damped=True, om=om, friction=fr)
+        return out, doubt
     if normal.any():
         idx = np.nonzero(normal)[0]
         sub = ms[idx]
         P = normal_params(sub, float(Qexact), "exact", _NP, om=om[idx])
         P = _exact_near_critical(P, sub, lambda k: dep.exact(int(cols[idx[k]])), Qexact)
         part = np.full((len(orders), 2, sub.size), np.nan)
-        fr = (float(Qexact), "exact")
         doubt[:, idx] = _fill_normal(part, orders, sub, P, damped=True, om=om[idx], friction=fr)
         out[:, :, idx] = part
     for j in np.nonzero(~normal)[0]:
@@ -1860,10 +2093,14 @@ def _order1_lower(P, cols, x_hi, eps=None, *, x_theta=None, doubt=False):
     # Newton from there (the points not yet converged only); a point that leaves the bracket or
     # does not converge is solved again by the safeguarded iteration
     idx = np.arange(x.size)
-    for _ in range(12):
-        f, d = f01(x[idx], *(a[idx] for a in args))
+    slope = np.empty(x.size) if doubt else None
+    for it in range(12):
+        f, d = f01(x if it == 0 else x[idx], *(args if it == 0 else (a[idx] for a in args)))
+        d = np.asarray(d, float)
+        if doubt:
+            slope[idx] = d  # (at the last iterate: a step of at most 8e-16 x from the root)
         with np.errstate(invalid="ignore", divide="ignore"):
-            step = np.asarray(f, float) / np.asarray(d, float)
+            step = np.asarray(f, float) / d
         x[idx] -= step
         idx = idx[~(np.abs(step) <= 8e-16 * np.abs(x[idx]))]
         if not idx.size:
@@ -1875,8 +2112,10 @@ def _order1_lower(P, cols, x_hi, eps=None, *, x_theta=None, doubt=False):
         x[bad] = _bisect_newton(
             lambda z: f01(z, *sub), 0 * x_hi[bad], x_hi[bad], 0.5 * x_hi[bad], eps is None
         )
+        if doubt:
+            slope[bad] = np.asarray(form.compiled("numpy", 1)(x[bad], *sub), float)
     if doubt:
-        return x, _root_doubt(form, x, args, x)
+        return x, _root_doubt(form, x, args, x, slope=slope)
     return x
 
 
@@ -1890,13 +2129,14 @@ ORDER1_X_DAMPED = 1.0
 NEAR_ONE = 0.2
 
 
-def _polish_near_one(theta, n, P, form):
+def _polish_near_one(theta, n, P, form, slope: bool = False):
     """Newton steps on a :func:`verify.derived.near_one_forms` form for the depths with
     ``1 - beta < NEAR_ONE`` (where the standard forms lose ``log10(1/bm)`` digits to
-    cancellation); ``theta`` has rows of orders ``n``."""
+    cancellation); ``theta`` has rows of orders ``n``.  ``slope=True``: also the form's
+    derivative of the last step at those depths (``(rows, depths)``, for :func:`_root_doubt`)."""
     cols = np.nonzero(P.bm < NEAR_ONE)[0]
     if cols.size == 0:
-        return theta
+        return (theta, None) if slope else theta
     theta = np.array(theta, float, copy=True)
     c = (np.asarray(n, float) * _HALF_PI).reshape(-1, 1)
     fn = form.compiled("numpy", (0, 1))
@@ -1911,7 +2151,7 @@ def _polish_near_one(theta, n, P, form):
             step = np.asarray(f, float) / np.asarray(d, float)
         t = t - np.where(np.isfinite(step), step, 0.0)
     theta[:, cols] = t
-    return theta
+    return (theta, np.asarray(d, float) * np.ones(t.shape)) if slope else theta
 
 
 def _fill_normal(
@@ -1987,17 +2227,18 @@ def _fill_normal(
                     res[k][rows[ri], need[ci]] = got[k]
     # every order and both edges at once from here
     n = orders_arr[:, None]
-    both = _polish_near_one(
+    both, slope = _polish_near_one(
         np.concatenate([res["lo"], res["hi"]]),
         np.concatenate([orders_arr] * 2),
         P,
         near_one_forms()[2],
+        slope=True,
     )
     lo, hi = both[:no], both[no:]
     base = n / 2.0
     out[:, 0, :] = (base + lo / math.pi) / P.w
     out[:, 1, :] = (base + hi / math.pi) / P.w
-    top_doubt, lo_doubt, hi_doubt = _normal_doubt(n, P, res, lo, hi)
+    top_doubt, lo_doubt, hi_doubt = _normal_doubt(n, P, res, lo, hi, slope)
     for i in np.nonzero(orders_arr == 1)[0]:
         near = (_HALF_PI + lo[i] < ORDER1_X_DAMPED) | (P.bm < NEAR_ONE)
         cols = np.nonzero(np.isfinite(lo[i]) & near)[0]
@@ -2094,23 +2335,27 @@ def _noise(form, v, args, scale):
     return NOISE_ULPS * 2.0**-53 * (np.abs(total) + np.abs(scale) * np.abs(slope))
 
 
-def _root_doubt(form, root, args, scale):
+def _root_doubt(form, root, args, scale, slope=None):
     """Whether a root ``root`` of ``form`` may be off by more than :data:`DOUBT` relative to
     ``scale`` (where ``T`` is proportional to ``scale``): the rounding error of the form over its
-    slope at the root."""
+    slope at the root (``slope``: that slope where the caller has it, e.g. from the last Newton
+    step, a rounding away from the root)."""
     with np.errstate(invalid="ignore", divide="ignore"):
-        slope = np.abs(np.asarray(form.compiled("numpy", 1)(root, *args), float))
+        if slope is None:
+            slope = form.compiled("numpy", 1)(root, *args)
+        slope = np.abs(np.asarray(slope, float))
         err = _noise(form, root, args, scale) / (slope * np.abs(scale))
         return np.isfinite(root) & ~(err <= DOUBT)
 
 
-def _normal_doubt(n, P, res, lo, hi):
+def _normal_doubt(n, P, res, lo, hi, slope=None):
     """Masks of the entries of the normal-form friction path that must be escalated: ``(top,
     lower, upper)``: the sign of ``D`` at its maximiser within rounding (existence undecided),
     and each edge whose estimated error exceeds :data:`DOUBT` (near a threshold or a closing gap,
     where the edges are a near-double root).  :func:`_damped_normal` gave them for the standard
     form; the depths polished on the form for ``m -> 1`` (``1 - beta <`` :data:`NEAR_ONE`) are
-    judged here on that form."""
+    judged here on that form (``slope``: its derivative at those depths from the last step of
+    :func:`_polish_near_one`, rows lower edges then upper)."""
     undecided, edges = res["undecided"], [res["lo_doubt"].copy(), res["hi_doubt"].copy()]
     cols = np.nonzero(np.asarray(P.bm) < NEAR_ONE)[0]
     if cols.size == 0:
@@ -2132,7 +2377,8 @@ def _normal_doubt(n, P, res, lo, hi):
         part = np.zeros(t.shape, bool)
         if sel.any():
             sub = tuple(a[sel] for a in args)
-            part[sel] = _root_doubt(nearf, t[sel], sub, sub[0] + t[sel])
+            d = None if slope is None else _full(slope, t.shape)[sel]
+            part[sel] = _root_doubt(nearf, t[sel], sub, sub[0] + t[sel], slope=d)
         k = shape[0]
         edges[0][:, cols], edges[1][:, cols] = part[:k], part[k:]
     return undecided, edges[0], edges[1]
