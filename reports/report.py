@@ -136,10 +136,13 @@ def _picklable(value) -> bool:
     return True
 
 
-def _second_process(conn, counter, config: Config, directory, packages, names, queue, lang):
-    """The second process: build ``names``, then the sections of ``queue`` the first process has
-    not taken yet, and send back ``("ok", parts, shares, messages)``, or ``("error",
-    exception)``."""
+def _second_process(
+    conn, counter, config: Config, directory, packages, names, queue, lang, prepare=()
+):
+    """The second process: build ``names``, compute what the sections ``prepare`` (built by the
+    first process once this one is done) share with them (their ``prepare(ctx)``), then build
+    the sections of ``queue`` the first process has not taken yet, and send back ``("ok", parts,
+    shares, messages)``, or ``("error", exception)``."""
     try:
         messages: list[str] = []
         ctx = Context(config=config, cache=Cache(directory, packages), log=messages.append)
@@ -152,6 +155,8 @@ def _second_process(conn, counter, config: Config, directory, packages, names, q
 
             for name in names:
                 build(name)
+            for name in prepare:
+                load(name).prepare(ctx)
             while (k := _claim(counter, len(queue))) is not None:
                 build(queue[k])
         shares = {k: v for k, v in ctx.memo.items() if _picklable(v)}  # shared with others
@@ -196,7 +201,14 @@ class _Second:
     """The second process, the counter of the shared list of sections and the pipe its results
     come back through."""
 
-    def __init__(self, ctx: Context, names: tuple[str, ...], queue: tuple[str, ...], lang: str):
+    def __init__(
+        self,
+        ctx: Context,
+        names: tuple[str, ...],
+        queue: tuple[str, ...],
+        lang: str,
+        prepare: tuple[str, ...] = (),
+    ):
         import multiprocessing
 
         from analytic.cache import cache_dir
@@ -224,6 +236,7 @@ class _Second:
                 names,
                 queue,
                 lang,
+                prepare,
             ),
             daemon=True,
         )
@@ -280,7 +293,10 @@ def _assemble(ctx: Context, sections, lang: str, command: str | None, jobs: int)
             queue = tuple(n for n in LONGEST_FIRST if n in rest) + tuple(
                 n for n in rest if n not in LONGEST_FIRST
             )
-            second = _Second(ctx, second_names, queue, lang)
+            # what the sections waiting for the second process share with it, computed there
+            # (where the sections they share it with were built) before the shared list
+            prepare = tuple(n for n in later if hasattr(load(n), "prepare"))
+            second = _Second(ctx, second_names, queue, lang, prepare)
             for name in second_names:
                 ctx.log(f"{title(name)} ... (in a second process)")
             while (name := second.claim()) is not None:
