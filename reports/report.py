@@ -212,12 +212,13 @@ def _start_method() -> str:
 
 
 def _preload(names) -> None:
-    """Import what both processes need before the fork, so that it is imported once: the section
-    modules, matplotlib (every process draws figures), the numeric namespaces of sympy's
-    ``lambdify`` and the units package ``sympy.simplify`` imports on its first call."""
+    """Import before the fork what both processes need, so that it is imported once: the modules
+    of the second process's own sections ``names``, the numeric namespaces of sympy's
+    ``lambdify`` and the units package ``sympy.simplify`` imports on its first call.  Not
+    matplotlib (about 1 s): the second process's own sections draw no figures, so it starts on
+    them while the first imports matplotlib with its first section (the second imports it too if
+    it takes a section with figures from the shared list later)."""
     import sympy
-
-    from . import figures  # noqa: F401 -- matplotlib
 
     for name in names:
         load(name)
@@ -249,7 +250,7 @@ class _Second:
             Cache(base / "analytic").ensure_key()
         method = _start_method()
         if method == "fork":
-            _preload(names + queue)
+            _preload(names)
         mp = multiprocessing.get_context(method)
         self.queue = queue
         self.counter = mp.Value("i", 0)
