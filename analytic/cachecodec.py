@@ -417,6 +417,10 @@ def _build(node, classes: dict, constants: dict):
         raise DecodeError(f"keywords for {name} not allowed")
     args = [_build(a, classes, constants) for a in node.args]
     _require_basic(args)
+    if issubclass(cls, sympy.core.relational.Relational):
+        # a relation read back as written: sympy would otherwise try to decide it (for the
+        # report's equations most of the time of reading them) and may return another object
+        return cls(*args, evaluate=False)
     return cls(*args)
 
 

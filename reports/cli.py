@@ -57,8 +57,9 @@ def build_parser(only: str | None = None) -> argparse.ArgumentParser:
 
 
 #: commands whose parser is built alone when named first (a long-running server should start
-#: without importing every other command's modules)
-_ALONE = ("explore",)
+#: without importing every other command's modules; the report should not import, before it
+#: forks its second process, what only one of its processes needs)
+_ALONE = ("explore", "report")
 
 
 def main(argv: list[str] | None = None) -> int:

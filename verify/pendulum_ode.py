@@ -9,7 +9,11 @@ the run and for all half periods at once; the segments only when asked for.
 
 from __future__ import annotations
 
+import importlib.machinery
+import importlib.util
 import math
+import os
+import sys
 
 import numpy as np
 
@@ -22,10 +26,18 @@ __all__ = ["amplitude_factor", "saturation_estimate", "run_nonlinear"]
 
 def amplitude_factor(A: float) -> float:
     """The period of the free pendulum of amplitude ``A`` over that of small swings,
-    ``2 K(sin^2(A/2)) / pi`` (``K`` the complete elliptic integral of the first kind)."""
-    from scipy.special import ellipk
+    ``2 K(sin^2(A/2)) / pi`` (``K`` the complete elliptic integral of the first kind, from
+    mpmath with guard bits, rounded to a double: ``scipy.special`` would cost its import, about
+    0.3 s, for this one function)."""
+    import mpmath
 
-    return float(2 * ellipk(math.sin(A / 2) ** 2) / math.pi)
+    with mpmath.workprec(_ELLIPK_BITS):
+        k = float(mpmath.ellipk(math.sin(A / 2) ** 2))
+    return 2 * k / math.pi
+
+
+#: working precision of the elliptic integral (a double's 53 bits and guard bits)
+_ELLIPK_BITS = 80
 
 
 def saturation_estimate(tau, interval) -> float | None:
@@ -116,34 +128,64 @@ def run_nonlinear(m, Q, tau, s0, loop, K, samples, rtol, atol, system=PAPER):
     return strobe, dense, env
 
 
+def _dop853_module():
+    """The compiled DOP853 behind :class:`scipy.integrate.ode` (``scipy.integrate._dop``).
+
+    Loaded from its file without running ``scipy/integrate/__init__.py``, whose imports
+    (``scipy.optimize``, ``scipy.sparse``, ``scipy.linalg``, ...) cost about 0.5 s and are not
+    needed here; the usual import where ``scipy.integrate`` is already loaded or the file is not
+    where scipy keeps it."""
+    name = "scipy.integrate._dop"
+    if name in sys.modules:
+        return sys.modules[name]
+    if "scipy.integrate" in sys.modules:
+        from scipy.integrate import _dop
+
+        return _dop
+    spec = importlib.util.find_spec("scipy")
+    where = spec.submodule_search_locations if spec is not None else None
+    for suffix in importlib.machinery.EXTENSION_SUFFIXES if where else ():
+        path = os.path.join(where[0], "integrate", "_dop" + suffix)
+        if os.path.isfile(path):
+            spec = importlib.util.spec_from_file_location(name, path)
+            module = importlib.util.module_from_spec(spec)
+            spec.loader.exec_module(module)
+            sys.modules[name] = module  # what ``from scipy.integrate import _dop`` finds later
+            return module
+    from scipy.integrate import _dop  # pragma: no cover - another layout of scipy
+
+    return _dop  # pragma: no cover
+
+
 class _Halves:
-    """DOP853 of :class:`scipy.integrate.ode` (``rtol``, ``atol``, the step callback ``solout``)
-    run from ``t = 0`` over one half period at a time, the integrator's arrays made once and its
-    first step given: :meth:`run`."""
+    """DOP853 as :class:`scipy.integrate.ode` runs it (``set_integrator("dop853", rtol=rtol,
+    atol=atol, nsteps=10**7)``, the step callback ``solout``, scipy's defaults for the step
+    control), run from ``t = 0`` over one half period at a time, the integrator's arrays made
+    once and its first step given: :meth:`run`."""
+
+    #: scipy's ``dop853`` defaults: WORK(2) safety factor, WORK(3) and WORK(4) the bounds of the
+    #: step ratio, WORK(5) beta of the step control, WORK(6) the largest step (0: no limit)
+    _SAFETY, _DFACTOR, _IFACTOR, _BETA, _MAX_STEP = 0.9, 0.3, 6.0, 0.0, 0.0
 
     def __init__(self, rhs, rtol, atol, solout):
-        from scipy.integrate import ode
-
-        solver = ode(rhs).set_integrator("dop853", rtol=rtol, atol=atol, nsteps=10**7)
-        solver.set_solout(solout)
-        solver.set_initial_value([0.0, 0.0], 0.0)  # makes the integrator's work arrays
+        n = 2
+        work = np.zeros(11 * n + 21)
+        work[1:6] = (self._SAFETY, self._DFACTOR, self._IFACTOR, self._BETA, self._MAX_STEP)
+        iwork = np.zeros(21, dtype=np.int32)
         self.rhs = rhs
-        self.integrator = solver._integrator
-        self.work = self.integrator.work
+        self.runner = _dop853_module().dopri853
+        self.args = (rtol, atol, solout, 1, work, iwork, 10**7, -1, ())
+        self.work = work
 
     def run(self, state, length: float, first: float) -> tuple[float, float]:
         """The state ``(phi, phi')`` after ``length`` from ``state``, the first step ``first``
         (``0``: DOP853's own initial guess)."""
         self.work[6] = first  # DOP853's WORK(7): the initial step
-        y, _ = self.integrator.run(self.rhs, _no_jacobian, np.array(state), 0.0, length, (), ())
-        if not self.integrator.success:  # pragma: no cover - DOP853 on a smooth right-hand side
-            raise RuntimeError("the integration of a half period failed")
+        _, y, istate = self.runner(self.rhs, 0.0, np.array(state), length, *self.args)
+        if istate < 0:  # pragma: no cover - DOP853 on a smooth right-hand side
+            raise RuntimeError(f"the integration of a half period failed (DOP853 status {istate})")
         p, v = y.tolist()
         return p, v
-
-
-def _no_jacobian():  # pragma: no cover - DOP853 uses none
-    return None
 
 
 def _hermite_envelope(steps, halves, w2, g, K) -> tuple[float, ...]:

@@ -65,6 +65,20 @@ def register(subparsers) -> None:
 
 
 def run(args) -> int:
+    import gc
+
+    # no cyclic garbage collection during the imports and the build either (they make few
+    # cycles; see reports.report.collector_paused)
+    collecting = gc.isenabled()
+    gc.disable()
+    try:
+        return _run(args)
+    finally:
+        if collecting:
+            gc.enable()
+
+
+def _run(args) -> int:
     from analytic.cache import cache_dir
 
     from ..build import BuildError, how_to_get_pdf

@@ -56,10 +56,13 @@ SECTIONS = (
 #: ``jobs=2``), in this order, the shared results (:func:`shared`) that process returns with
 #: them, and the sections that need those results and are therefore built after it is done.  The
 #: catalogue's derivations share the slow reductions (:mod:`analytic.reductions`) with the
-#: stitching section and the threshold series (:mod:`analytic.thresholds`) with the expansions,
-#: so those go with the catalogue, after it; the other sections need neither.
-SECOND_PROCESS = ("catalogue", "stitching", "expansions")
-SECOND_SHARES = ("catalogue-rows",)
+#: stitching section, the threshold series (:mod:`analytic.thresholds`) with the expansions and
+#: the closings (:func:`analytic.closings.closings`) with the closings section, so those go with
+#: the catalogue, after it; the other sections need none of them.  A section waiting for the
+#: second process may define ``prepare(ctx)``: what it shares with that process's sections,
+#: computed there before the shared list (the summary: the closings and the leading thresholds).
+SECOND_PROCESS = ("catalogue", "stitching", "expansions", "closings")
+SECOND_SHARES = ("catalogue-rows", "closings-theorem", "threshold-leading")
 AFTER_SECOND = ("summary", "conclusions")
 
 #: the other sections of a cold build, the longest first (CPU seconds of a cold build: the

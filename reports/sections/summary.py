@@ -59,6 +59,14 @@ def _thresholds():
     return out
 
 
+def prepare(ctx: Context) -> None:
+    """Compute the results :func:`findings` shares with the catalogue, the closings and the
+    expansions (the closings and the threshold series), in the process that built those
+    sections, where they are cheap (:func:`reports.report.assemble` with ``jobs=2``)."""
+    shared(ctx, "closings-theorem", _closings)
+    shared(ctx, "threshold-leading", _thresholds)
+
+
 def findings(ctx: Context) -> dict:
     """What the summary and the abstract state, computed once per build."""
     from .diagrams import ISLAND_ORDER, ISLAND_Q, PAPER_ISLAND_CLAIM, _compute
