@@ -373,75 +373,126 @@ def _row_of_balls(balls, dps: int) -> tuple[tuple, str | None] | None:
     mantissa and exponent and each radius (a double, exactly) read once, and the digits of
     :func:`_nstr` (mpmath's ``to_str``: truncated at ``dps + 3`` digits, rounded half up) taken
     by one division on the scale of :func:`_digit_scale`.  A number whose radius does not support
-    every digit asked for is printed by :func:`_proven_raw`.  ``None`` (the general path) for a
-    zero midpoint, a radius outside ``(_TINY, _HUGE)`` or huge exponents."""
+    every digit asked for is printed by :func:`_proven_raw`.  The bound: each number's error
+    ``|printed - x| + r`` from the exact integer ``|printed - x|`` on the number's own scale, in
+    doubles, the largest rounded up to two digits (:func:`_bound_of_doubles`), or -- where that
+    is too close to call, or out of the doubles' range -- in integers on one scale
+    (:func:`_exact_bound`).  ``None`` (the general path) for a zero midpoint, a radius outside
+    ``(_TINY, _HUGE)`` or huge exponents."""
     scales = _ROW_SCALES.get(dps)
     if scales is None:
         scales = _ROW_SCALES[dps] = {}
     texts = []
-    items = []
-    b = a = 0  # the common scale 2**a 10**b of the errors
+    raw = []  # (k, D, exp, man, radius) of each number: the printed value D 10**k
+    worst = 0.0  # the largest error, in doubles (None: the exact bound)
     for x in balls:
         man, exp = x.mid().man_exp()
         man = int(man)
-        if not man:
-            return None
         f = float(x.rad())
         if not _TINY < f < _HUGE:
             return None
-        rm, den = f.as_integer_ratio()  # exact: a radius has a 30-bit mantissa
-        re = 1 - den.bit_length()
         exp = int(exp)
-        sign = man < 0
-        mag = -man if sign else man
+        if man > 0:
+            mag = man
+        elif man:
+            mag = -man
+        else:
+            return None
         bc = mag.bit_length()
-        top = exp + bc
-        sc = scales.get(top)
+        sc = scales.get(exp + bc)
         if sc is None:
-            sc = _digit_scale(dps, top) or False
+            sc = _digit_scale(dps, exp + bc) or False
             if len(scales) < 4096:
-                scales[top] = sc
-        rbc = rm.bit_length()
-        if sc and re + rbc <= sc[0]:  # every digit usable: |x| / (2 rad) > 2 10**dps
-            lim, shift, p10, fixprec, thr, ehi, cut, half, cut1, half1, low, tens = sc
-            if shift >= bc:
-                n = (mag << (shift - bc)) * p10 >> fixprec
-            else:
+                scales[exp + bc] = sc
+        if sc and f < sc[0]:  # every digit usable: |x| / (2 rad) > 2 10**dps
+            _, shift, p10, fixprec, thr, many, fewer, tens, m10, e10 = sc
+            if shift < bc:
                 n = (mag >> (bc - shift)) * p10 >> fixprec
-            if n >= thr:
-                exponent = ehi
-            else:  # one digit fewer
-                exponent = ehi - 1
-                cut = cut1
-                half = half1
+            else:
+                n = (mag << (shift - bc)) * p10 >> fixprec
+            cut, half, exponent, k, pre, split, post = many if n >= thr else fewer
             D, rem = divmod(n, cut)
             if rem >= half:  # the first digit cut is 5 or more: round half up
                 D += 1
-                if D == tens:  # a run of nines carried into the next power of ten
-                    D //= 10
-                    exponent += 1
-            digits = str(D)
-            if low < exponent < dps:  # fixed point near unit magnitude
-                if exponent < 0:
-                    text = (
-                        _ZEROS[-exponent] if exponent > -64 else "0." + "0" * (-exponent - 1)
-                    ) + digits
+            if worst is not None:
+                # |printed - x| 10**F 2**-exp = |D cut 2**-exp - |man| 10**F|, F = fixdps
+                try:
+                    if exp < 0:
+                        z = float(abs((D * cut << -exp) - mag * p10))
+                    else:
+                        z = float(abs(D * cut - (mag * p10 << exp)))
+                    err = math.ldexp(z * m10, e10 + (exp if exp < 0 else 0)) + f
+                except OverflowError:
+                    worst = None
                 else:
-                    text = f"{digits[: exponent + 1]}.{digits[exponent + 1 :]}"
-            elif exponent > 0:
-                text = f"{digits[:1]}.{digits[1:]}e+{exponent}"
+                    if err > worst:
+                        worst = err
+            if D == tens:  # a run of nines carried into the next power of ten
+                D //= 10
+                exponent += 1
+                k += 1
+                text = _digits_text(str(D), exponent, dps)
+            elif split:
+                digits = str(D)
+                text = f"{pre}{digits[:split]}.{digits[split:]}{post}"
             else:
-                text = f"{digits[:1]}.{digits[1:]}e{exponent}"
-            k = exponent + 1 - dps
-            if sign:
+                text = pre + str(D)
+            if man < 0:
                 text = "-" + text
                 D = -D
         else:  # fewer digits, or no kept scale: :func:`_proven_raw` (its own test first)
-            text, dk = _proven_raw((sign, mag, exp, bc), (0, rm, re, rbc), dps)
+            rm, den = f.as_integer_ratio()  # exact: a radius has a 30-bit mantissa
+            text, dk = _proven_raw(
+                (man < 0, mag, exp, bc), (0, rm, 1 - den.bit_length(), rm.bit_length()), dps
+            )
             if dk is None:  # huge exponents: mpmath's own path
                 return None
             D, k = dk
+            worst = None
         texts.append(text)
+        raw.append((k, D, exp, man, f))
+    bound = None if worst is None else _bound_of_doubles(worst)
+    return tuple(texts), (_exact_bound(raw) if bound is None else bound)
+
+
+def _bound_of_doubles(worst: float) -> str | None:
+    """:func:`verify.rounding.bound_text` (two digits, rounded up) of the largest error, from
+    its double ``worst`` -- within a relative ``1e-15`` of the exact one (each error a double
+    of an exact integer times a double of ``10**-F``, a power of two and the radius added: four
+    roundings) -- or ``None`` where the exact value may round up otherwise (``worst``, scaled to
+    two digits, within ``1e-12`` of an integer) or lies beyond the doubles' safe range."""
+    if not 1e-280 < worst < 1e280:
+        return None
+    e = math.floor(math.log10(worst))
+    q = worst * _TEN_DOUBLES[1 - e]  # [10, 100) but for the logarithm's rounding
+    if q < 10:
+        e -= 1
+        q = worst * _TEN_DOUBLES[1 - e]
+    elif q >= 100:
+        e += 1
+        q = worst * _TEN_DOUBLES[1 - e]
+    c = math.ceil(q)
+    if c - q < 1e-12 * q or q - (c - 1) < 1e-12 * q:
+        return None  # next to an integer (10 and 100 included): the exact bound decides
+    if c >= 100:  # carried into the next power of ten (q in (99, 100))
+        return f"1.0e{e + 1}"
+    return f"{c // 10}.{c % 10}e{e}"
+
+
+#: ``10.0**j`` correctly rounded, for ``|j| <= 300``
+_TEN_DOUBLES = {j: (float(10**j) if j >= 0 else 1 / 10**-j) for j in range(-300, 301)}
+
+
+def _exact_bound(raw) -> str:
+    """The bound of :func:`_row_of_balls` in integers: the largest ``|D 10**k - x| + r`` of the
+    items ``(k, D, exp, man, radius)`` (``x = man 2**exp``, the radius a double, exactly), all on
+    one scale ``2**a 10**b`` (:func:`verify.rounding.largest_bound`), rounded up to two
+    digits."""
+    b = a = 0
+    items = []
+    for k, D, exp, man, f in raw:
+        rm, den = f.as_integer_ratio()
+        re = 1 - den.bit_length()
         items.append((k, D, exp, man, re, rm))
         if k < b:
             b = k
@@ -449,7 +500,6 @@ def _row_of_balls(balls, dps: int) -> tuple[tuple, str | None] | None:
             a = exp
         if re < a:
             a = re
-    # the largest |D 10**k - x| + r, all on the scale 2**a 10**b (verify.rounding.largest_bound)
     scale10 = _POW10.get(-b) or _pow10(-b)
     best = -1
     for k, D, exp, man, re, rm in items:
@@ -457,20 +507,35 @@ def _row_of_balls(balls, dps: int) -> tuple[tuple, str | None] | None:
         num = abs(A - ((man * scale10) << (exp - a))) + ((rm * scale10) << (re - a))
         if num > best:
             best = num
-    return tuple(texts), _scaled_bound_text(best, a, b, 2)
+    return _scaled_bound_text(best, a, b, 2)
+
+
+def _digits_text(digits: str, exponent: int, dps: int) -> str:
+    """The text :func:`_nstr` writes for the digits ``digits`` (no sign) whose first stands for
+    ``10**exponent``: fixed point near unit magnitude, else with an exponent."""
+    if min(-(dps // 3), -5) < exponent < dps:  # :func:`_scale`'s least exponent in fixed point
+        if exponent < 0:
+            return ("0." + "0" * (-exponent - 1)) + digits
+        return f"{digits[: exponent + 1]}.{digits[exponent + 1 :]}"
+    if exponent > 0:
+        return f"{digits[:1]}.{digits[1:]}e+{exponent}"
+    return f"{digits[:1]}.{digits[1:]}e{exponent}"
 
 
 def _digit_scale(dps: int, top: int) -> tuple | None:
     """What :func:`_row_of_balls` needs to print a number ``s`` with ``2**(top-1) <= |s| <
-    2**top`` as :func:`_nstr` does: the largest binary exponent of a radius that leaves every
-    digit usable, then the truncated digits are ``n = (|man| >> (bc - shift)) p10
-    >> fixprec`` (:func:`_scale`, ``shift = bitprec``: the same integer as :func:`_nstr`'s), and
-    ``n`` has ``c`` or ``c - 1`` digits, ``c`` those of ``2**top 10**fixdps``, told apart by
-    ``thr = 10**(c-1)``; ``ehi = c - fixdps - 1`` is the decimal exponent with ``c`` digits, ``cut
-    = 10**(c - dps)`` (half of it ``half``) what the last printed digit stands for (``cut1``,
-    ``half1`` with ``c - 1`` digits), ``low`` the least exponent printed in fixed point and
-    ``tens = 10**dps``.  ``None`` where :func:`_nstr`'s own steps serve: huge exponents, no
-    fixed-point scale, or fewer than ``dps + 1`` digits."""
+    2**top`` as :func:`_nstr` does: the least radius (a double) that leaves not every digit
+    usable, then the truncated digits are ``n = (|man| >> (bc - shift)) p10 >> fixprec``
+    (:func:`_scale`, ``shift = bitprec``, ``p10 = 10**F``: the same integer as :func:`_nstr`'s),
+    and ``n`` has ``c`` or ``c - 1`` digits, ``c`` those of ``2**top 10**F``, told apart by ``thr
+    = 10**(c-1)``; for each count (``many``, ``fewer``): ``cut``, what the last printed digit
+    stands for (``cut 10**-F``), half of it, the decimal exponent of the first digit, that of the
+    last (``k``) and the pieces of the text around the digits (:func:`_digits_text`); ``tens =
+    10**dps``, and ``10**-F = m10 2**e10`` (``m10`` a double, correctly rounded).  ``None`` where
+    :func:`_nstr`'s own steps serve: huge exponents, no fixed-point scale, or fewer than ``dps +
+    1`` digits."""
+    if dps > 1400:  # |x| < 2**3500 and a radius above 2**-990 (_TINY): not every digit usable
+        return None
     scale = _scale(dps, top)
     if scale is None:
         return None
@@ -482,30 +547,40 @@ def _digit_scale(dps: int, top: int) -> tuple | None:
     # or c digits; the rounding needs at least dps + 1 of them
     if c - 1 <= dps:
         return None
+    # a radius below 2**lim (re + rbc <= lim): |x| / (2 rad) > 2**(top - 2 - lim) >= 2 10**dps,
+    # every digit usable (and :func:`_proven`'s own test passes)
+    lim = top - 3 - math.ceil(dps * _LOG2_10)
+    limf = _HUGE if lim >= 0 else (math.ldexp(1.0, lim) if lim > -1070 else 0.0)
+
+    def count(size: int) -> tuple:
+        cut = _pow10(size - dps)
+        exponent = size - fixdps - 1
+        if not low < exponent < dps:  # with an exponent
+            pre, split, post = "", 1, (f"e+{exponent}" if exponent > 0 else f"e{exponent}")
+        elif exponent < 0:  # "0.00" and the digits
+            pre, split, post = "0." + "0" * (-exponent - 1), 0, ""
+        else:
+            pre, split, post = "", exponent + 1, ""
+        return cut, cut // 2, exponent, exponent + 1 - dps, pre, split, post
+
+    e10 = -p10.bit_length()
     return (
-        # re + rbc <= lim (a radius below 2**lim): |x| / (2 rad) > 2**(top - 2 - lim) >= 2
-        # 10**dps, every digit usable (and :func:`_proven`'s own test passes)
-        top - 3 - math.ceil(dps * _LOG2_10),
+        limf,
         bitprec,
         p10,
         fixprec,
         _pow10(c - 1),
-        c - fixdps - 1,
-        _pow10(c - dps),
-        _pow10(c - dps) // 2,
-        _pow10(c - 1 - dps),
-        _pow10(c - 1 - dps) // 2,
-        low,
+        count(c),
+        count(c - 1),
         _pow10(dps),
+        (1 << -e10) / p10,
+        e10,
     )
 
 
 #: the scales of :func:`_row_of_balls` by digits, then by ``exponent + bitcount`` (``False``
 #: where :func:`_nstr`'s own steps serve)
 _ROW_SCALES: dict[int, dict[int, tuple | bool]] = {}
-#: ``_ZEROS[j]``: the fixed-point head ``"0.0...0"`` (``j - 1`` zeros) of a number whose leading
-#: digit stands for ``10**-j``
-_ZEROS = ("",) + tuple("0." + "0" * i for i in range(63))
 
 
 def _raw_max(rads: tuple) -> tuple:
