@@ -37,7 +37,8 @@ def scenes(quick: bool) -> list[dict]:
     def fmt():
         solved = iter(made)
 
-        def fresh(order, m, **_):  # the solver's results, fresh: nothing converted
+        def fresh(order, m, *, Q, damping, digits, system, modulation, switch_time):
+            # the solver's results, fresh: nothing converted
             depth, balls, kw, certified = next(solved)
             assert depth is m
             return from_balls(balls, certified=certified, **kw)

@@ -374,17 +374,19 @@ def _row_of_balls(balls, dps: int) -> tuple[tuple, str | None] | None:
     :func:`_nstr` (mpmath's ``to_str``: truncated at ``dps + 3`` digits, rounded half up) taken
     by one division on the scale of :func:`_digit_scale`.  A number whose radius does not support
     every digit asked for is printed by :func:`_proven_raw`.  The bound: each number's error
-    ``|printed - x| + r`` from the exact integer ``|printed - x|`` on the number's own scale, in
-    doubles, the largest rounded up to two digits (:func:`_bound_of_doubles`), or -- where that
-    is too close to call, or out of the doubles' range -- in integers on one scale
-    (:func:`_exact_bound`).  ``None`` (the general path) for a zero midpoint, a radius outside
-    ``(_TINY, _HUGE)`` or huge exponents."""
+    ``|printed - x| + r`` lies within 4.2 units of ``10**-F`` of what the division leaves (the
+    truncated digits lie less than that below ``|x| 10**F``: :func:`_digit_scale`), so the
+    largest is bracketed in doubles and rounded up to two digits (:func:`_bound_between`), or --
+    where the bracket does not decide the two digits, or out of the doubles' range -- computed
+    in integers on one scale (:func:`_exact_bound`).  ``None`` (the general path) for a zero
+    midpoint, a radius outside ``(_TINY, _HUGE)`` or huge exponents."""
     scales = _ROW_SCALES.get(dps)
     if scales is None:
         scales = _ROW_SCALES[dps] = {}
     texts = []
     raw = []  # (k, D, exp, man, radius) of each number: the printed value D 10**k
-    worst = 0.0  # the largest error, in doubles (None: the exact bound)
+    least = most = 0.0  # the largest error lies between them, in doubles
+    exact = False  # the bound in integers
     for x in balls:
         man, exp = x.mid().man_exp()
         man = int(man)
@@ -405,36 +407,41 @@ def _row_of_balls(balls, dps: int) -> tuple[tuple, str | None] | None:
             if len(scales) < 4096:
                 scales[exp + bc] = sc
         if sc and f < sc[0]:  # every digit usable: |x| / (2 rad) > 2 10**dps
-            _, shift, p10, fixprec, thr, many, fewer, tens, m10, e10 = sc
+            _, shift, p10, fixprec, thr, many, fewer, tens = sc
             if shift < bc:
                 n = (mag >> (bc - shift)) * p10 >> fixprec
             else:
                 n = (mag << (shift - bc)) * p10 >> fixprec
-            cut, half, exponent, k, pre, split, post = many if n >= thr else fewer
+            cut, half, exponent, k, pre, split, post, u = many if n >= thr else fewer
             D, rem = divmod(n, cut)
+            # |printed - x| 10**F (F = fixdps): the printed value is rem units below the
+            # truncated digits n, or cut - rem above, and n lies less than 4.2 units below
+            # |x| 10**F (:func:`_digit_scale`); lo and hi bracket the error, in doubles
             if rem >= half:  # the first digit cut is 5 or more: round half up
                 D += 1
-            if worst is not None:
-                # |printed - x| 10**F 2**-exp = |D cut 2**-exp - |man| 10**F|, F = fixdps
-                try:
-                    if exp < 0:
-                        z = float(abs((D * cut << -exp) - mag * p10))
-                    else:
-                        z = float(abs(D * cut - (mag * p10 << exp)))
-                    err = math.ldexp(z * m10, e10 + (exp if exp < 0 else 0)) + f
-                except OverflowError:
-                    worst = None
-                else:
-                    if err > worst:
-                        worst = err
+                rem = cut - rem
+                lo = (rem - 4.2) * u + f
+            else:
+                lo = rem * u + f
+                rem += 4.2
+            if lo > least:
+                least = lo
+            hi = rem * u + f
+            if hi > most:
+                most = hi
+            if not u:  # 10**-F beyond the doubles
+                exact = True
             if D == tens:  # a run of nines carried into the next power of ten
                 D //= 10
                 exponent += 1
                 k += 1
                 text = _digits_text(str(D), exponent, dps)
+            elif post:
+                digits = str(D)
+                text = f"{digits[:1]}.{digits[1:]}{post}"
             elif split:
                 digits = str(D)
-                text = f"{pre}{digits[:split]}.{digits[split:]}{post}"
+                text = f"{digits[:split]}.{digits[split:]}"
             else:
                 text = pre + str(D)
             if man < 0:
@@ -448,33 +455,34 @@ def _row_of_balls(balls, dps: int) -> tuple[tuple, str | None] | None:
             if dk is None:  # huge exponents: mpmath's own path
                 return None
             D, k = dk
-            worst = None
+            exact = True
         texts.append(text)
         raw.append((k, D, exp, man, f))
-    bound = None if worst is None else _bound_of_doubles(worst)
+    bound = None if exact else _bound_between(least, most)
     return tuple(texts), (_exact_bound(raw) if bound is None else bound)
 
 
-def _bound_of_doubles(worst: float) -> str | None:
-    """:func:`verify.rounding.bound_text` (two digits, rounded up) of the largest error, from
-    its double ``worst`` -- within a relative ``1e-15`` of the exact one (each error a double
-    of an exact integer times a double of ``10**-F``, a power of two and the radius added: four
-    roundings) -- or ``None`` where the exact value may round up otherwise (``worst``, scaled to
-    two digits, within ``1e-12`` of an integer) or lies beyond the doubles' safe range."""
-    if not 1e-280 < worst < 1e280:
+def _bound_between(least: float, most: float) -> str | None:
+    """:func:`verify.rounding.bound_text` (two digits, rounded up) of a number known to lie
+    between the doubles ``least`` and ``most`` up to their roundings (a relative ``1e-15``: each
+    a few products and sums of doubles), or ``None`` where the numbers between them do not all
+    round up alike, or lie beyond the doubles' safe range."""
+    if not (1e-280 < least and most < 1e280):
         return None
-    e = math.floor(math.log10(worst))
-    q = worst * _TEN_DOUBLES[1 - e]  # [10, 100) but for the logarithm's rounding
+    most *= 1 + 1e-12  # above the number, and below it:
+    least *= 1 - 1e-12
+    e = math.floor(math.log10(most))
+    q = most * _TEN_DOUBLES[1 - e]  # [10, 100) but for the logarithm's rounding
     if q < 10:
         e -= 1
-        q = worst * _TEN_DOUBLES[1 - e]
+        q = most * _TEN_DOUBLES[1 - e]
     elif q >= 100:
         e += 1
-        q = worst * _TEN_DOUBLES[1 - e]
-    c = math.ceil(q)
-    if c - q < 1e-12 * q or q - (c - 1) < 1e-12 * q:
-        return None  # next to an integer (10 and 100 included): the exact bound decides
-    if c >= 100:  # carried into the next power of ten (q in (99, 100))
+        q = most * _TEN_DOUBLES[1 - e]
+    c = math.ceil(q)  # the number times 10**(1-e) is at most c
+    if not (c > 10 and least * _TEN_DOUBLES[1 - e] > c - 1):  # and above c - 1 (and 10)
+        return None
+    if c >= 100:  # carried into the next power of ten (in (99, 100])
         return f"1.0e{e + 1}"
     return f"{c // 10}.{c % 10}e{e}"
 
@@ -530,10 +538,15 @@ def _digit_scale(dps: int, top: int) -> tuple | None:
     and ``n`` has ``c`` or ``c - 1`` digits, ``c`` those of ``2**top 10**F``, told apart by ``thr
     = 10**(c-1)``; for each count (``many``, ``fewer``): ``cut``, what the last printed digit
     stands for (``cut 10**-F``), half of it, the decimal exponent of the first digit, that of the
-    last (``k``) and the pieces of the text around the digits (:func:`_digits_text`); ``tens =
-    10**dps``, and ``10**-F = m10 2**e10`` (``m10`` a double, correctly rounded).  ``None`` where
-    :func:`_nstr`'s own steps serve: huge exponents, no fixed-point scale, or fewer than ``dps +
-    1`` digits."""
+    last (``k``), the pieces of the text around the digits (:func:`_digits_text`) and ``u =
+    10**-F`` (a double, correctly rounded; 0 beyond the doubles' range); ``tens = 10**dps``.
+    ``None`` where :func:`_nstr`'s own steps serve: huge exponents, no fixed-point scale, or
+    fewer than ``dps + 1`` digits.
+
+    The truncated digits lie less than 4.2 units below ``|s| 10**F``: ``|man| >> (bc - shift)``
+    is less than one unit below ``|man| 2**(shift - bc)``, which costs less than ``p10 /
+    2**fixprec`` units after the product (``F`` is ``fixprec log10(2)`` rounded to the nearest,
+    so ``p10 < 2**fixprec sqrt(10)``, 3.17), and the last shift less than one more."""
     if dps > 1400:  # |x| < 2**3500 and a radius above 2**-990 (_TINY): not every digit usable
         return None
     scale = _scale(dps, top)
@@ -561,21 +574,12 @@ def _digit_scale(dps: int, top: int) -> tuple | None:
             pre, split, post = "0." + "0" * (-exponent - 1), 0, ""
         else:
             pre, split, post = "", exponent + 1, ""
-        return cut, cut // 2, exponent, exponent + 1 - dps, pre, split, post
+        # u: 10**-F (F = fixdps) as a double, correctly rounded (0 beyond the doubles' range:
+        # the bound in integers)
+        u = 1 / p10 if fixdps < 280 else 0.0
+        return cut, cut // 2, exponent, exponent + 1 - dps, pre, split, post, u
 
-    e10 = -p10.bit_length()
-    return (
-        limf,
-        bitprec,
-        p10,
-        fixprec,
-        _pow10(c - 1),
-        count(c),
-        count(c - 1),
-        _pow10(dps),
-        (1 << -e10) / p10,
-        e10,
-    )
+    return (limf, bitprec, p10, fixprec, _pow10(c - 1), count(c), count(c - 1), _pow10(dps))
 
 
 #: the scales of :func:`_row_of_balls` by digits, then by ``exponent + bitcount`` (``False``

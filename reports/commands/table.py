@@ -235,6 +235,10 @@ def rows(
     # work too small to pay for starting one runs here
     work = len(tasks) * edge_seconds(digits, Q is not None)
     with cluster(scheduler, jobs if jobs > 1 else 1, work_seconds=work, small_here=True) as client:
+        if client is None:  # here, one after the other
+            return [
+                _certified(t) for t in progress(tasks, total=len(tasks), label=label, quiet=quiet)
+            ]
         return ordered(
             client,
             _certified,
@@ -335,12 +339,13 @@ def run(args) -> int:
 def csv_text(header, data) -> str:
     """The CSV text of a table: the ``header`` line, then a line per row of :func:`rows` (the
     depth as :func:`decimal_text`, ``None`` as an empty field), as :mod:`csv`'s writer writes
-    them (lines ending in ``\\n``); the fields are joined as they are, and a line with a field
-    the writer would quote (a comma, a quote or a line break in it: none of the numbers) is
-    written by the writer itself."""
-    lines = [_csv_line(header)]
+    them (lines ending in ``\\n``).  The fields are joined as they are; if any field holds what
+    the writer would quote (a comma, a quote or a line break: none of the numbers do), the lines
+    are written by the writer itself."""
+    lines = [",".join(header)]
     add = lines.append
     depths: dict = {}  # the text of each depth, once a table (the orders repeat them)
+    commas = len(header) - 1
     for r in data:
         m = r[1]
         key = (m.numerator, m.denominator)
@@ -348,21 +353,22 @@ def csv_text(header, data) -> str:
         if mt is None:
             mt = depths[key] = decimal_text(m)
         try:
-            line = f"{r[0]},{mt}," + ",".join(r[2:])
-        except TypeError:  # a missing number (None) or a number that is not text
-            line = f"{r[0]},{mt}," + ",".join(["" if v is None else str(v) for v in r[2:]])
-        if line.count(",") != len(r) - 1 or '"' in line or "\n" in line or "\r" in line:
-            line = _csv_line([r[0], mt] + ["" if v is None else v for v in r[2:]])
-        add(line)
+            add(f"{r[0]},{mt}," + ",".join(r[2:]))
+        except TypeError:  # a missing number (None) or a field that is not text
+            add(f"{r[0]},{mt}," + ",".join(["" if v is None else str(v) for v in r[2:]]))
+        commas += len(r) - 1
     add("")
-    return "\n".join(lines)
-
-
-def _csv_line(fields) -> str:
-    """One line as :mod:`csv`'s writer writes it (quoting what needs it), without its end."""
-    buf = io.StringIO()
-    csv.writer(buf, lineterminator="\n").writerow(fields)
-    return buf.getvalue()[:-1]
+    text = "\n".join(lines)
+    if text.count(",") == commas and text.count("\n") == len(lines) - 1 and not (
+        '"' in text or "\r" in text
+    ):
+        return text
+    buf = io.StringIO()  # a field to quote: the writer's own lines
+    w = csv.writer(buf, lineterminator="\n")
+    w.writerow(header)
+    for r in data:
+        w.writerow([r[0], decimal_text(r[1])] + ["" if v is None else v for v in r[2:]])
+    return buf.getvalue()
 
 
 def sidecar(path) -> str:
