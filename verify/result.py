@@ -391,8 +391,6 @@ def _row_of_balls(balls, dps: int) -> tuple[tuple, str | None] | None:
         man, exp = x.mid().man_exp()
         man = int(man)
         f = float(x.rad())
-        if not _TINY < f < _HUGE:
-            return None
         exp = int(exp)
         if man > 0:
             mag = man
@@ -406,7 +404,7 @@ def _row_of_balls(balls, dps: int) -> tuple[tuple, str | None] | None:
             sc = _digit_scale(dps, exp + bc) or False
             if len(scales) < 4096:
                 scales[exp + bc] = sc
-        if sc and f < sc[0]:  # every digit usable: |x| / (2 rad) > 2 10**dps
+        if sc and _TINY < f < sc[0]:  # every digit usable: |x| / (2 rad) > 2 10**dps
             _, shift, p10, fixprec, thr, many, fewer, tens = sc
             if shift < bc:
                 n = (mag >> (bc - shift)) * p10 >> fixprec
@@ -426,11 +424,9 @@ def _row_of_balls(balls, dps: int) -> tuple[tuple, str | None] | None:
                 rem += 4.2
             if lo > least:
                 least = lo
-            hi = rem * u + f
+            hi = rem * u + f  # (infinite where 10**-F is beyond the doubles: the integers')
             if hi > most:
                 most = hi
-            if not u:  # 10**-F beyond the doubles
-                exact = True
             if D == tens:  # a run of nines carried into the next power of ten
                 D //= 10
                 exponent += 1
@@ -448,6 +444,8 @@ def _row_of_balls(balls, dps: int) -> tuple[tuple, str | None] | None:
                 text = "-" + text
                 D = -D
         else:  # fewer digits, or no kept scale: :func:`_proven_raw` (its own test first)
+            if not _TINY < f < _HUGE:
+                return None
             rm, den = f.as_integer_ratio()  # exact: a radius has a 30-bit mantissa
             text, dk = _proven_raw(
                 (man < 0, mag, exp, bc), (0, rm, 1 - den.bit_length(), rm.bit_length()), dps
@@ -539,7 +537,7 @@ def _digit_scale(dps: int, top: int) -> tuple | None:
     = 10**(c-1)``; for each count (``many``, ``fewer``): ``cut``, what the last printed digit
     stands for (``cut 10**-F``), half of it, the decimal exponent of the first digit, that of the
     last (``k``), the pieces of the text around the digits (:func:`_digits_text`) and ``u =
-    10**-F`` (a double, correctly rounded; 0 beyond the doubles' range); ``tens = 10**dps``.
+    10**-F`` (a double, correctly rounded; infinite beyond the doubles' range); ``tens = 10**dps``.
     ``None`` where :func:`_nstr`'s own steps serve: huge exponents, no fixed-point scale, or
     fewer than ``dps + 1`` digits.
 
@@ -574,9 +572,9 @@ def _digit_scale(dps: int, top: int) -> tuple | None:
             pre, split, post = "0." + "0" * (-exponent - 1), 0, ""
         else:
             pre, split, post = "", exponent + 1, ""
-        # u: 10**-F (F = fixdps) as a double, correctly rounded (0 beyond the doubles' range:
-        # the bound in integers)
-        u = 1 / p10 if fixdps < 280 else 0.0
+        # u: 10**-F (F = fixdps) as a double, correctly rounded (infinite beyond the doubles'
+        # range: the bound then comes from the integers)
+        u = 1 / p10 if fixdps < 280 else math.inf
         return cut, cut // 2, exponent, exponent + 1 - dps, pre, split, post, u
 
     return (limf, bitprec, p10, fixprec, _pow10(c - 1), count(c), count(c - 1), _pow10(dps))
