@@ -184,6 +184,9 @@ def progress(
         except TypeError:
             total = None
     show = _shows(stream, quiet)
+    if not show:  # nothing drawn: the items as they come, no clock read per item
+        yield from items
+        return
     start = time.monotonic()
     last = 0.0
     done = 0

@@ -527,3 +527,36 @@ def test_many_thousand_digits_print():
     finally:
         sys.set_int_max_str_digits(limit)
     assert len(texts[0]) == 5001  # 5000 digits and the point
+
+
+def test_row_bound_on_a_two_digit_value_and_beside_one():
+    """The bound of a row from its errors' bounds in doubles (:func:`verify.result._row_of_balls`,
+    :func:`verify.result._bound_between`) where the largest error is exactly a two-digit value (``|1.00e+4 - 10000.5| + 0.25 = 7.5e-1``: the
+    doubles cannot tell it from a hair above, the integers decide) and a hair away from one, on
+    either side: rows from balls against the reference (:func:`assert_balls_as_numbers`)."""
+    from verify.certify import ball
+    from verify.result import _bound_between, _row_of_balls
+
+    # on a two-digit value: the exact bound decides
+    assert _bound_between(0.75, 0.75) is None and _bound_between(0.749, 0.7500001) is None
+    assert _bound_between(0.7500001, 0.7500002) == "7.6e-1"
+    assert _bound_between(0.7491, 0.7499) == "7.5e-1"
+    assert _bound_between(0.995, 0.996) == "1.0e0" and _bound_between(1e-300, 1e-299) is None
+    assert _bound_between(0.0999, 0.1001) is None  # either side of a power of ten
+    x = mpmath.mpf("10000.5")
+    quarter = mpmath.mpf("0.25")
+    small = mpmath.mpf("0.125")  # the other numbers' errors are smaller
+    # radii as the balls hold them (arb's radii have 30-bit mantissas, rounded up): exactly a
+    # quarter (the largest error then exactly 0.75), a hair above, a hair below
+    for r, expected in (
+        (quarter - mpmath.ldexp(1, -40), "7.5e-1"),
+        (quarter + mpmath.ldexp(1, -40), "7.6e-1"),
+        (quarter - mpmath.ldexp(1, -20), "7.5e-1"),
+    ):
+        radii = (r, small / 64, small / 64, small / 64)
+        b = dataclasses.replace(_row(x, 3, radii=radii, deltas=(small, -small)), upper=x - quarter)
+        assert_balls_as_numbers(b)
+        balls = [ball(v, rr) for v, rr in zip((x, x - quarter, small, -small), radii, strict=True)]
+        texts, bound = _row_of_balls(balls, 3)
+        assert texts[:2] == ("1.00e+4", "1.00e+4") and bound == expected
+    assert ball(x, quarter - mpmath.ldexp(1, -40)).rad() == 0.25  # the exact case was made

@@ -373,75 +373,132 @@ def _row_of_balls(balls, dps: int) -> tuple[tuple, str | None] | None:
     mantissa and exponent and each radius (a double, exactly) read once, and the digits of
     :func:`_nstr` (mpmath's ``to_str``: truncated at ``dps + 3`` digits, rounded half up) taken
     by one division on the scale of :func:`_digit_scale`.  A number whose radius does not support
-    every digit asked for is printed by :func:`_proven_raw`.  ``None`` (the general path) for a
-    zero midpoint, a radius outside ``(_TINY, _HUGE)`` or huge exponents."""
+    every digit asked for is printed by :func:`_proven_raw`.  The bound: each number's error
+    ``|printed - x| + r`` lies within 4.2 units of ``10**-F`` of what the division leaves (the
+    truncated digits lie less than that below ``|x| 10**F``: :func:`_digit_scale`), so the
+    largest is bracketed in doubles and rounded up to two digits (:func:`_bound_between`), or --
+    where the bracket does not decide the two digits, or out of the doubles' range -- computed
+    in integers on one scale (:func:`_exact_bound`).  ``None`` (the general path) for a zero
+    midpoint, a radius outside ``(_TINY, _HUGE)`` or huge exponents."""
     scales = _ROW_SCALES.get(dps)
     if scales is None:
         scales = _ROW_SCALES[dps] = {}
     texts = []
-    items = []
-    b = a = 0  # the common scale 2**a 10**b of the errors
+    raw = []  # (k, D, exp, man, radius) of each number: the printed value D 10**k
+    least = most = 0.0  # the largest error lies between them, in doubles
+    exact = False  # the bound in integers
     for x in balls:
         man, exp = x.mid().man_exp()
         man = int(man)
-        if not man:
-            return None
         f = float(x.rad())
-        if not _TINY < f < _HUGE:
-            return None
-        rm, den = f.as_integer_ratio()  # exact: a radius has a 30-bit mantissa
-        re = 1 - den.bit_length()
         exp = int(exp)
-        sign = man < 0
-        mag = -man if sign else man
+        if man > 0:
+            mag = man
+        elif man:
+            mag = -man
+        else:
+            return None
         bc = mag.bit_length()
-        top = exp + bc
-        sc = scales.get(top)
+        sc = scales.get(exp + bc)
         if sc is None:
-            sc = _digit_scale(dps, top) or False
+            sc = _digit_scale(dps, exp + bc) or False
             if len(scales) < 4096:
-                scales[top] = sc
-        rbc = rm.bit_length()
-        if sc and re + rbc <= sc[0]:  # every digit usable: |x| / (2 rad) > 2 10**dps
-            lim, shift, p10, fixprec, thr, ehi, cut, half, cut1, half1, low, tens = sc
-            if shift >= bc:
-                n = (mag << (shift - bc)) * p10 >> fixprec
-            else:
+                scales[exp + bc] = sc
+        if sc and _TINY < f < sc[0]:  # every digit usable: |x| / (2 rad) > 2 10**dps
+            _, shift, p10, fixprec, thr, many, fewer, tens = sc
+            if shift < bc:
                 n = (mag >> (bc - shift)) * p10 >> fixprec
-            if n >= thr:
-                exponent = ehi
-            else:  # one digit fewer
-                exponent = ehi - 1
-                cut = cut1
-                half = half1
+            else:
+                n = (mag << (shift - bc)) * p10 >> fixprec
+            cut, half, exponent, k, pre, split, post, u = many if n >= thr else fewer
             D, rem = divmod(n, cut)
+            # |printed - x| 10**F (F = fixdps): the printed value is rem units below the
+            # truncated digits n, or cut - rem above, and n lies less than 4.2 units below
+            # |x| 10**F (:func:`_digit_scale`); lo and hi bracket the error, in doubles
             if rem >= half:  # the first digit cut is 5 or more: round half up
                 D += 1
-                if D == tens:  # a run of nines carried into the next power of ten
-                    D //= 10
-                    exponent += 1
-            digits = str(D)
-            if low < exponent < dps:  # fixed point near unit magnitude
-                if exponent < 0:
-                    text = (
-                        _ZEROS[-exponent] if exponent > -64 else "0." + "0" * (-exponent - 1)
-                    ) + digits
-                else:
-                    text = f"{digits[: exponent + 1]}.{digits[exponent + 1 :]}"
-            elif exponent > 0:
-                text = f"{digits[:1]}.{digits[1:]}e+{exponent}"
+                rem = cut - rem
+                lo = (rem - 4.2) * u + f
             else:
-                text = f"{digits[:1]}.{digits[1:]}e{exponent}"
-            k = exponent + 1 - dps
-            if sign:
+                lo = rem * u + f
+                rem += 4.2
+            if lo > least:
+                least = lo
+            hi = rem * u + f  # (infinite where 10**-F is beyond the doubles: the integers')
+            if hi > most:
+                most = hi
+            if D == tens:  # a run of nines carried into the next power of ten
+                D //= 10
+                exponent += 1
+                k += 1
+                text = _digits_text(str(D), exponent, dps)
+            elif post:
+                digits = str(D)
+                text = f"{digits[:1]}.{digits[1:]}{post}"
+            elif split:
+                digits = str(D)
+                text = f"{digits[:split]}.{digits[split:]}"
+            else:
+                text = pre + str(D)
+            if man < 0:
                 text = "-" + text
                 D = -D
         else:  # fewer digits, or no kept scale: :func:`_proven_raw` (its own test first)
-            text, dk = _proven_raw((sign, mag, exp, bc), (0, rm, re, rbc), dps)
+            if not _TINY < f < _HUGE:
+                return None
+            rm, den = f.as_integer_ratio()  # exact: a radius has a 30-bit mantissa
+            text, dk = _proven_raw(
+                (man < 0, mag, exp, bc), (0, rm, 1 - den.bit_length(), rm.bit_length()), dps
+            )
             if dk is None:  # huge exponents: mpmath's own path
                 return None
             D, k = dk
+            exact = True
         texts.append(text)
+        raw.append((k, D, exp, man, f))
+    bound = None if exact else _bound_between(least, most)
+    return tuple(texts), (_exact_bound(raw) if bound is None else bound)
+
+
+def _bound_between(least: float, most: float) -> str | None:
+    """:func:`verify.rounding.bound_text` (two digits, rounded up) of a number known to lie
+    between the doubles ``least`` and ``most`` up to their roundings (a relative ``1e-15``: each
+    a few products and sums of doubles), or ``None`` where the numbers between them do not all
+    round up alike, or lie beyond the doubles' safe range."""
+    if not (1e-280 < least and most < 1e280):
+        return None
+    most *= 1 + 1e-12  # above the number, and below it:
+    least *= 1 - 1e-12
+    e = math.floor(math.log10(most))
+    q = most * _TEN_DOUBLES[1 - e]  # [10, 100) but for the logarithm's rounding
+    if q < 10:
+        e -= 1
+        q = most * _TEN_DOUBLES[1 - e]
+    elif q >= 100:
+        e += 1
+        q = most * _TEN_DOUBLES[1 - e]
+    c = math.ceil(q)  # the number times 10**(1-e) is at most c
+    if not (c > 10 and least * _TEN_DOUBLES[1 - e] > c - 1):  # and above c - 1 (and 10)
+        return None
+    if c >= 100:  # carried into the next power of ten (in (99, 100])
+        return f"1.0e{e + 1}"
+    return f"{c // 10}.{c % 10}e{e}"
+
+
+#: ``10.0**j`` correctly rounded, for ``|j| <= 300``
+_TEN_DOUBLES = {j: (float(10**j) if j >= 0 else 1 / 10**-j) for j in range(-300, 301)}
+
+
+def _exact_bound(raw) -> str:
+    """The bound of :func:`_row_of_balls` in integers: the largest ``|D 10**k - x| + r`` of the
+    items ``(k, D, exp, man, radius)`` (``x = man 2**exp``, the radius a double, exactly), all on
+    one scale ``2**a 10**b`` (:func:`verify.rounding.largest_bound`), rounded up to two
+    digits."""
+    b = a = 0
+    items = []
+    for k, D, exp, man, f in raw:
+        rm, den = f.as_integer_ratio()
+        re = 1 - den.bit_length()
         items.append((k, D, exp, man, re, rm))
         if k < b:
             b = k
@@ -449,7 +506,6 @@ def _row_of_balls(balls, dps: int) -> tuple[tuple, str | None] | None:
             a = exp
         if re < a:
             a = re
-    # the largest |D 10**k - x| + r, all on the scale 2**a 10**b (verify.rounding.largest_bound)
     scale10 = _POW10.get(-b) or _pow10(-b)
     best = -1
     for k, D, exp, man, re, rm in items:
@@ -457,20 +513,40 @@ def _row_of_balls(balls, dps: int) -> tuple[tuple, str | None] | None:
         num = abs(A - ((man * scale10) << (exp - a))) + ((rm * scale10) << (re - a))
         if num > best:
             best = num
-    return tuple(texts), _scaled_bound_text(best, a, b, 2)
+    return _scaled_bound_text(best, a, b, 2)
+
+
+def _digits_text(digits: str, exponent: int, dps: int) -> str:
+    """The text :func:`_nstr` writes for the digits ``digits`` (no sign) whose first stands for
+    ``10**exponent``: fixed point near unit magnitude, else with an exponent."""
+    if min(-(dps // 3), -5) < exponent < dps:  # :func:`_scale`'s least exponent in fixed point
+        if exponent < 0:
+            return ("0." + "0" * (-exponent - 1)) + digits
+        return f"{digits[: exponent + 1]}.{digits[exponent + 1 :]}"
+    if exponent > 0:
+        return f"{digits[:1]}.{digits[1:]}e+{exponent}"
+    return f"{digits[:1]}.{digits[1:]}e{exponent}"
 
 
 def _digit_scale(dps: int, top: int) -> tuple | None:
     """What :func:`_row_of_balls` needs to print a number ``s`` with ``2**(top-1) <= |s| <
-    2**top`` as :func:`_nstr` does: the largest binary exponent of a radius that leaves every
-    digit usable, then the truncated digits are ``n = (|man| >> (bc - shift)) p10
-    >> fixprec`` (:func:`_scale`, ``shift = bitprec``: the same integer as :func:`_nstr`'s), and
-    ``n`` has ``c`` or ``c - 1`` digits, ``c`` those of ``2**top 10**fixdps``, told apart by
-    ``thr = 10**(c-1)``; ``ehi = c - fixdps - 1`` is the decimal exponent with ``c`` digits, ``cut
-    = 10**(c - dps)`` (half of it ``half``) what the last printed digit stands for (``cut1``,
-    ``half1`` with ``c - 1`` digits), ``low`` the least exponent printed in fixed point and
-    ``tens = 10**dps``.  ``None`` where :func:`_nstr`'s own steps serve: huge exponents, no
-    fixed-point scale, or fewer than ``dps + 1`` digits."""
+    2**top`` as :func:`_nstr` does: the least radius (a double) that leaves not every digit
+    usable, then the truncated digits are ``n = (|man| >> (bc - shift)) p10 >> fixprec``
+    (:func:`_scale`, ``shift = bitprec``, ``p10 = 10**F``: the same integer as :func:`_nstr`'s),
+    and ``n`` has ``c`` or ``c - 1`` digits, ``c`` those of ``2**top 10**F``, told apart by ``thr
+    = 10**(c-1)``; for each count (``many``, ``fewer``): ``cut``, what the last printed digit
+    stands for (``cut 10**-F``), half of it, the decimal exponent of the first digit, that of the
+    last (``k``), the pieces of the text around the digits (:func:`_digits_text`) and ``u =
+    10**-F`` (a double, correctly rounded; infinite beyond the doubles' range); ``tens = 10**dps``.
+    ``None`` where :func:`_nstr`'s own steps serve: huge exponents, no fixed-point scale, or
+    fewer than ``dps + 1`` digits.
+
+    The truncated digits lie less than 4.2 units below ``|s| 10**F``: ``|man| >> (bc - shift)``
+    is less than one unit below ``|man| 2**(shift - bc)``, which costs less than ``p10 /
+    2**fixprec`` units after the product (``F`` is ``fixprec log10(2)`` rounded to the nearest,
+    so ``p10 < 2**fixprec sqrt(10)``, 3.17), and the last shift less than one more."""
+    if dps > 1400:  # |x| < 2**3500 and a radius above 2**-990 (_TINY): not every digit usable
+        return None
     scale = _scale(dps, top)
     if scale is None:
         return None
@@ -482,30 +558,31 @@ def _digit_scale(dps: int, top: int) -> tuple | None:
     # or c digits; the rounding needs at least dps + 1 of them
     if c - 1 <= dps:
         return None
-    return (
-        # re + rbc <= lim (a radius below 2**lim): |x| / (2 rad) > 2**(top - 2 - lim) >= 2
-        # 10**dps, every digit usable (and :func:`_proven`'s own test passes)
-        top - 3 - math.ceil(dps * _LOG2_10),
-        bitprec,
-        p10,
-        fixprec,
-        _pow10(c - 1),
-        c - fixdps - 1,
-        _pow10(c - dps),
-        _pow10(c - dps) // 2,
-        _pow10(c - 1 - dps),
-        _pow10(c - 1 - dps) // 2,
-        low,
-        _pow10(dps),
-    )
+    # a radius below 2**lim (re + rbc <= lim): |x| / (2 rad) > 2**(top - 2 - lim) >= 2 10**dps,
+    # every digit usable (and :func:`_proven`'s own test passes)
+    lim = top - 3 - math.ceil(dps * _LOG2_10)
+    limf = _HUGE if lim >= 0 else (math.ldexp(1.0, lim) if lim > -1070 else 0.0)
+
+    def count(size: int) -> tuple:
+        cut = _pow10(size - dps)
+        exponent = size - fixdps - 1
+        if not low < exponent < dps:  # with an exponent
+            pre, split, post = "", 1, (f"e+{exponent}" if exponent > 0 else f"e{exponent}")
+        elif exponent < 0:  # "0.00" and the digits
+            pre, split, post = "0." + "0" * (-exponent - 1), 0, ""
+        else:
+            pre, split, post = "", exponent + 1, ""
+        # u: 10**-F (F = fixdps) as a double, correctly rounded (infinite beyond the doubles'
+        # range: the bound then comes from the integers)
+        u = 1 / p10 if fixdps < 280 else math.inf
+        return cut, cut // 2, exponent, exponent + 1 - dps, pre, split, post, u
+
+    return (limf, bitprec, p10, fixprec, _pow10(c - 1), count(c), count(c - 1), _pow10(dps))
 
 
 #: the scales of :func:`_row_of_balls` by digits, then by ``exponent + bitcount`` (``False``
 #: where :func:`_nstr`'s own steps serve)
 _ROW_SCALES: dict[int, dict[int, tuple | bool]] = {}
-#: ``_ZEROS[j]``: the fixed-point head ``"0.0...0"`` (``j - 1`` zeros) of a number whose leading
-#: digit stands for ``10**-j``
-_ZEROS = ("",) + tuple("0." + "0" * i for i in range(63))
 
 
 def _raw_max(rads: tuple) -> tuple:

@@ -39,7 +39,7 @@ from verify.inputs import (
 
 from ._arguments import add_friction, add_modulation, add_quiet, add_system, system_of
 
-__all__ = ["register", "run", "rows", "decimal_text"]
+__all__ = ["register", "run", "rows", "decimal_text", "csv_text"]
 
 GRID_DIGITS = 13
 
@@ -95,33 +95,48 @@ def register(subparsers) -> None:
 
 def decimal_text(x: Fraction) -> str:
     """A depth as exact decimal text when it terminates, else ``p/q``."""
+    num = x.numerator
     d = x.denominator
-    k = 0
-    while d % 10 == 0:
-        d //= 10
-        k += 1
-    twos = fives = 0
-    while d % 2 == 0:
-        d //= 2
-        twos += 1
-    while d % 5 == 0:
-        d //= 5
+    p = _PLACES.get(d)
+    if p is None:
+        p = _places(d)
+        if len(_PLACES) < 4096:
+            _PLACES[d] = p
+    if not p:
+        return f"{num}/{d}"
+    places, f = p
+    if not places:
+        return str(num)
+    # no zero to strip: places is the least with d | 10**places, and num is prime to d
+    if num < 0:
+        digits = str(-num * f).rjust(places + 1, "0")
+        return f"-{digits[:-places]}.{digits[-places:]}"
+    digits = str(num * f).rjust(places + 1, "0")
+    return f"{digits[:-places]}.{digits[-places:]}"
+
+
+def _places(d: int) -> tuple[int, int] | bool:
+    """``(places, 10**places // d)`` with ``places`` the least such that ``d`` divides
+    ``10**places`` (``False`` if none: a fraction ``p/d`` in lowest terms has no finite decimal)."""
+    twos = (d & -d).bit_length() - 1
+    r = d >> twos
+    fives = 0
+    while not r % 5:
+        r //= 5
         fives += 1
-    if d != 1:
-        return f"{x.numerator}/{x.denominator}"
-    places = k + max(twos, fives)
-    scaled = x * 10**places
-    sign = "-" if scaled < 0 else ""
-    digits = str(abs(scaled.numerator // scaled.denominator)).rjust(places + 1, "0")
-    text = digits[:-places] + "." + digits[-places:] if places else digits
-    return sign + (text.rstrip("0").rstrip(".") if "." in text else text)
+    if r != 1:
+        return False
+    places = max(twos, fives)
+    return places, 10**places // d
+
+
+#: :func:`_places` by denominator (the few a table meets)
+_PLACES: dict[int, tuple[int, int] | bool] = {}
 
 
 def _certified(task):
-    from verify.modulation import boundary
-
     order, m, Q, damping, digits, system, modulation, S = task
-    b = boundary(
+    b = (_solver or _load_solver())(
         order,
         m,
         Q=Q,
@@ -132,6 +147,18 @@ def _certified(task):
         switch_time=S,
     )
     return (order, m, *b.printed())
+
+
+#: the solver of a certified row (:func:`verify.modulation.boundary`), imported on first use
+_solver = None
+
+
+def _load_solver():
+    global _solver
+    from verify.modulation import boundary
+
+    _solver = boundary
+    return boundary
 
 
 def _tol_rows(orders, ms, Q, damping, tol, label, quiet=False):
@@ -208,6 +235,10 @@ def rows(
     # work too small to pay for starting one runs here
     work = len(tasks) * edge_seconds(digits, Q is not None)
     with cluster(scheduler, jobs if jobs > 1 else 1, work_seconds=work, small_here=True) as client:
+        if client is None:  # here, one after the other
+            return [
+                _certified(t) for t in progress(tasks, total=len(tasks), label=label, quiet=quiet)
+            ]
         return ordered(
             client,
             _certified,
@@ -287,12 +318,7 @@ def run(args) -> int:
         }
         text = json.dumps(doc, indent=2) + "\n"
     else:
-        buf = io.StringIO()
-        w = csv.writer(buf, lineterminator="\n")
-        w.writerow(header)
-        for r in data:
-            w.writerow([r[0], decimal_text(r[1])] + ["" if v is None else v for v in r[2:]])
-        text = buf.getvalue()
+        text = csv_text(header, data)
     if args.output:
         # the file holds exactly what standard output would show; a CSV's metadata (what the
         # columns mean, the inputs) goes to a JSON file beside it
@@ -308,6 +334,41 @@ def run(args) -> int:
     else:
         print(text, end="")
     return 0
+
+
+def csv_text(header, data) -> str:
+    """The CSV text of a table: the ``header`` line, then a line per row of :func:`rows` (the
+    depth as :func:`decimal_text`, ``None`` as an empty field), as :mod:`csv`'s writer writes
+    them (lines ending in ``\\n``).  The fields are joined as they are; if any field holds what
+    the writer would quote (a comma, a quote or a line break: none of the numbers do), the lines
+    are written by the writer itself."""
+    lines = [",".join(header)]
+    add = lines.append
+    depths: dict = {}  # the text of each depth, once a table (the orders repeat them)
+    commas = len(header) - 1
+    for r in data:
+        m = r[1]
+        key = (m.numerator, m.denominator)
+        mt = depths.get(key)
+        if mt is None:
+            mt = depths[key] = decimal_text(m)
+        try:
+            add(f"{r[0]},{mt}," + ",".join(r[2:]))
+        except TypeError:  # a missing number (None) or a field that is not text
+            add(f"{r[0]},{mt}," + ",".join(["" if v is None else str(v) for v in r[2:]]))
+        commas += len(r) - 1
+    add("")
+    text = "\n".join(lines)
+    if text.count(",") == commas and text.count("\n") == len(lines) - 1 and not (
+        '"' in text or "\r" in text
+    ):
+        return text
+    buf = io.StringIO()  # a field to quote: the writer's own lines
+    w = csv.writer(buf, lineterminator="\n")
+    w.writerow(header)
+    for r in data:
+        w.writerow([r[0], decimal_text(r[1])] + ["" if v is None else v for v in r[2:]])
+    return buf.getvalue()
 
 
 def sidecar(path) -> str:
