@@ -63,6 +63,7 @@ __all__ = [
     "NEAR_CRITICAL",
     "NEAR_ONE",
     "normal_params",
+    "undamped_params",
     "trace_params",
     "omega_av",
 ]
@@ -217,7 +218,10 @@ def _small(B: Backend) -> tuple:
 _ARB_SMALL = tuple(arb(k) for k in range(4))
 
 
-def _undamped(m, B: Backend, om=None):
+def undamped_params(m, B: Backend, om=None) -> tuple:
+    """``(r, r^2, u = 1 - r^2, beta, w, bm = 1 - beta)`` of the paper's system without friction,
+    as numbers of back end ``B`` (``m`` and ``om`` as for :func:`normal_params`, which takes its
+    frictionless values from here)."""
     _, one, two, three = _small(B)
     if om is None and type(m) is Fraction:
         # the exact rationals from the integers of m = p/q (in lowest terms, and so are
@@ -279,7 +283,7 @@ def normal_params(
         and (om is None or om == 1 - m)
     ):
         return _exact_rational(m, Q, B)
-    r, r2, u, beta, w0, bm = _undamped(m, B, om)
+    r, r2, u, beta, w0, bm = undamped_params(m, B, om)
     zero = r * _small(B)[0]
     if Q is None:
         return _normal(r, r2, u, beta, w0, zero, w0, zero, bm)
