@@ -105,14 +105,20 @@ def _halley_edge(
     """Safeguarded Halley iteration for the root of ``f`` in ``[lo, hi]`` (``f012(x, *args) =
     (f, f', f'')``; ``first`` = its value at the start ``x``), where ``f(lo) < 0 < f(hi)`` if
     ``increasing``, else the reverse; the stopping rule of :func:`float_edge`."""
-    sign = 1.0 if increasing else -1.0
     f, d1, d2 = first
     for _ in range(100):
-        f, d1, d2 = sign * f, sign * d1, sign * d2
+        # the bracket moves by the sign of f (of -f where decreasing); the step needs no sign:
+        # (-f)/(-f') and (-f'')/(-f') are f/f' and f''/f' exactly
         if f < 0:
-            lo = x
+            if increasing:
+                lo = x
+            else:
+                hi = x
         elif f > 0:
-            hi = x
+            if increasing:
+                hi = x
+            else:
+                lo = x
         else:
             return x
         try:
