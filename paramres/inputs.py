@@ -65,6 +65,16 @@ def as_number(value, *, name: str, allowed: str) -> Fraction:
     as on the command line).  Text longer than :data:`MAX_NUMBER_TEXT` or with an exponent beyond
     :data:`MAX_EXPONENT` is refused before any arithmetic.  ``name`` and ``allowed`` word the
     message of the :class:`InputError` for anything else."""
+    kind = type(value)
+    if kind is str:  # the common cases first, by exact type (an isinstance check against
+        # Fraction, an abstract base class's subclass, costs more than the rest of the check)
+        parsed = _parsed(value.strip())
+        if parsed is not None:
+            return parsed
+    elif kind is int:
+        return Fraction(value)
+    elif kind is Fraction:
+        return value
     if isinstance(value, bool):
         raise InputError(f"{name} = {value!r} is not a number; allowed range {allowed}")
     if isinstance(value, Fraction):

@@ -15,12 +15,17 @@ from .result import Boundary, from_balls
 
 __all__ = [
     "AtPrecision",
+    "GUARD",
     "sgn_of",
     "theta_scale",
     "theta_floor",
     "edges_result",
     "no_interval",
 ]
+
+
+#: the bits above the working precision at which :class:`AtPrecision` evaluates its numbers
+GUARD = 12
 
 
 class AtPrecision:
@@ -41,7 +46,7 @@ class AtPrecision:
         prec = ctx.prec
         val = self._cache.get(prec)
         if val is None:
-            ctx.prec = max(prec, self._min) + 12
+            ctx.prec = max(prec, self._min) + GUARD
             try:
                 if prec < self._top:
                     val = _round(self._cache[self._top])

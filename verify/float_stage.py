@@ -39,8 +39,9 @@ def float_edge(fn, n: int, eps: int, r: float, beta: float) -> float:
     sgn = sgn_of(n)
     odd = n % 2 == 1
     f0 = math.cos(beta * c) if odd else math.sin(beta * c)
-    th = math.asin(max(-1.0, min(1.0, -eps * sgn * r * f0 * (1 if odd else -1))))
-    lo, hi = -math.pi / 2, math.pi / 2
+    s = -eps * sgn * r * f0 * (1 if odd else -1)
+    th = math.asin(s if -1.0 <= s <= 1.0 else -1.0 if s < -1.0 else 1.0)  # (NaN: 1.0)
+    lo, hi = -_HALF_PI, _HALF_PI
     for _ in range(100):
         f, d1, d2 = fn(th, c, sgn, eps, r, beta)
         if f < 0:
@@ -52,8 +53,11 @@ def float_edge(fn, n: int, eps: int, r: float, beta: float) -> float:
         step = f / d1
         step = step / (1.0 - 0.5 * step * d2 / d1)
         tn = th - step
-        K = 1.0 / (3.0 * abs(d1)) + (0.5 * d2 / d1) ** 2
-        if K * abs(step) ** 3 <= 2e-16 * abs(tn):
+        # the next step is about K |step|^3, K = 1/(3 |f'|) + (f''/(2 f'))^2 (products in place
+        # of powers: cheaper, the same test up to the last bit)
+        h = 0.5 * d2 / d1
+        a = abs(step)
+        if (1.0 / (3.0 * abs(d1)) + h * h) * (a * a * a) <= 2e-16 * abs(tn):
             return tn
         if not lo < tn < hi:
             tn = 0.5 * (lo + hi)
@@ -61,6 +65,9 @@ def float_edge(fn, n: int, eps: int, r: float, beta: float) -> float:
             return tn
         th = tn
     return th
+
+
+_HALF_PI = math.pi / 2
 
 
 def bisect_newton(
@@ -98,24 +105,32 @@ def _halley_edge(
     """Safeguarded Halley iteration for the root of ``f`` in ``[lo, hi]`` (``f012(x, *args) =
     (f, f', f'')``; ``first`` = its value at the start ``x``), where ``f(lo) < 0 < f(hi)`` if
     ``increasing``, else the reverse; the stopping rule of :func:`float_edge`."""
-    sign = 1.0 if increasing else -1.0
     f, d1, d2 = first
     for _ in range(100):
-        f, d1, d2 = sign * f, sign * d1, sign * d2
+        # the bracket moves by the sign of f (of -f where decreasing); the step needs no sign:
+        # (-f)/(-f') and (-f'')/(-f') are f/f' and f''/f' exactly
         if f < 0:
-            lo = x
+            if increasing:
+                lo = x
+            else:
+                hi = x
         elif f > 0:
-            hi = x
+            if increasing:
+                hi = x
+            else:
+                lo = x
         else:
             return x
         try:
             step = f / d1
             step = step / (1.0 - 0.5 * step * d2 / d1)
-            K = 1.0 / (3.0 * abs(d1)) + (0.5 * d2 / d1) ** 2
+            h = 0.5 * d2 / d1
+            K = 1.0 / (3.0 * abs(d1)) + h * h
         except ZeroDivisionError:
             step, K = math.inf, math.inf
         xn = x - step
-        if math.isfinite(xn) and K * abs(step) ** 3 <= 2e-16 * abs(xn) and lo <= xn <= hi:
+        s = abs(step)
+        if math.isfinite(xn) and K * (s * s * s) <= 2e-16 * abs(xn) and lo <= xn <= hi:
             return xn
         if not lo < xn < hi:
             xn = 0.5 * (lo + hi)

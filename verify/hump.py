@@ -701,21 +701,7 @@ def _lean_normal(req: Request, bits: int) -> Boundary | None:
         A, B = arb(a), arb(b)  # floats: exact
         near = (c, pt.r2, pt.u, pt.beta, pt.g)
         cache = {}
-
-        def args(prec):
-            """``(c, r2, u, beta, g)`` at ``prec`` bits, as hump_normal's ``args``: those of the
-            proof's precision as they are, or rounded from there (AtPrecision, rounded=True)."""
-            got = cache.get(prec)
-            if got is None:
-                if top <= 2 * prec + 64:
-                    got = near
-                else:  # the fields used, each rounded as _rounded_params rounds it
-                    ctx.prec = prec + 12
-                    got = (+c, +pt.r2, +pt.u, +pt.beta, +pt.g)
-                cache[prec] = got
-            return got
-
-        c64, _, _, beta, _ = low = args(64)
+        c64, _, _, beta, _ = low = _lean_args(cache, 64, top, near, pt)
         if low is near:
             r = pt.r
         else:
@@ -743,7 +729,7 @@ def _lean_normal(req: Request, bits: int) -> Boundary | None:
             while acc < need:
                 acc = min(2 * acc - 8, need + 8)
                 prec = acc + 12
-                at = args(prec)
+                at = _lean_args(cache, prec, top, near, pt)
                 ctx.prec = prec
                 # -D for the upper edge: the step f/d is the same ball (both negated exactly,
                 # the quotient rounded towards zero), and so are the tests
@@ -759,7 +745,7 @@ def _lean_normal(req: Request, bits: int) -> Boundary | None:
                 size = floor
             X = arb(x, (size * pow2(4 - acc)).abs_upper())
             dX = D1(X, *near)  # of -D for the upper edge: the same quotient (see above)
-            if dX.contains(0) or not dX.is_finite():
+            if _ZERO in dX or not dX.is_finite():  # (dX.contains(0), without converting 0)
                 return None
             N = x - D0(x, *near) / dX
             if not X.contains_interior(N):
@@ -807,6 +793,25 @@ def _lean_normal(req: Request, bits: int) -> Boundary | None:
         regime="normal form with friction",
         system=req.system,
     )
+
+
+def _lean_args(cache: dict, prec: int, top: int, near: tuple, pt) -> tuple:
+    """``(c, r2, u, beta, g)`` at ``prec`` bits for :func:`_lean_normal`, as hump_normal's
+    ``args`` gives them: those of the proof's precision ``top`` as they are (``near``), or
+    rounded from there (AtPrecision, rounded=True); kept in ``cache`` by precision.  Leaves
+    ``flint.ctx.prec`` changed where it rounds (the caller sets it next)."""
+    got = cache.get(prec)
+    if got is None:
+        if top <= 2 * prec + 64:
+            got = near
+        else:  # the fields used, each rounded as _rounded_params rounds it
+            ctx.prec = prec + 12
+            got = (+near[0], +pt.r2, +pt.u, +pt.beta, +pt.g)
+        cache[prec] = got
+    return got
+
+
+_ZERO = arb(0)
 
 
 def _rounded_params(pt, prec: int):

@@ -47,7 +47,7 @@ from fractions import Fraction
 from functools import lru_cache
 
 import mpmath
-from flint import arb
+from flint import arb, fmpq
 
 from analytic.system import PAPER, System, phase_regimes
 
@@ -63,6 +63,7 @@ __all__ = [
     "NEAR_CRITICAL",
     "NEAR_ONE",
     "normal_params",
+    "undamped_params",
     "trace_params",
     "omega_av",
 ]
@@ -215,9 +216,13 @@ def _small(B: Backend) -> tuple:
 
 
 _ARB_SMALL = tuple(arb(k) for k in range(4))
+_ARB_FOUR = arb(4)
 
 
-def _undamped(m, B: Backend, om=None):
+def undamped_params(m, B: Backend, om=None) -> tuple:
+    """``(r, r^2, u = 1 - r^2, beta, w, bm = 1 - beta)`` of the paper's system without friction,
+    as numbers of back end ``B`` (``m`` and ``om`` as for :func:`normal_params`, which takes its
+    frictionless values from here)."""
     _, one, two, three = _small(B)
     if om is None and type(m) is Fraction:
         # the exact rationals from the integers of m = p/q (in lowest terms, and so are
@@ -280,7 +285,7 @@ def normal_params(
         and (om is None or om == 1 - m)
     ):
         return _exact_rational(m, Q, B)
-    r, r2, u, beta, w0, bm = _undamped(m, B, om)
+    r, r2, u, beta, w0, bm = undamped_params(m, B, om)
     zero = r * _small(B)[0]
     if Q is None:
         return _normal(r, r2, u, beta, w0, zero, w0, zero, bm)
@@ -354,11 +359,16 @@ def _exact_rational(m: Fraction, Q: Fraction, B: Backend) -> NormalParams:
 
 def _exact_arb(m: Fraction, Q: Fraction) -> NormalParams:
     """:func:`_exact_rational` in ``arb`` at the working precision, the same operations on the
-    same roundings, without the back end's indirections: the rational parts as integer pairs
-    cached by the integers of ``m`` and ``Q`` (a Fraction's hash costs more than the lookup), each
-    lifted by one rounded division, and the square roots as ``arb`` methods."""
-    parts = _exact_pairs(m.numerator, m.denominator, Q.numerator, Q.denominator)
-    U1, U2, K, Uq, d, bq, iq, s2 = (arb(p) / q if q != 1 else arb(p) for p, q in parts)
+    same roundings, without the back end's indirections: the rational parts cached by the
+    integers of ``m`` and ``Q`` (a Fraction's hash costs more than the lookup), each lifted by one
+    rounded division (:func:`_exact_lifts`), the small integers as exact balls (an ``arb`` with a
+    Python int converts the int first: the same ball, at a cost), and the square roots as ``arb``
+    methods."""
+    U1, U2, K, Uq, d, bq, iq, s2 = (
+        arb(x) if type(x) is fmpq else arb(x[0]) / x[1] if x[1] != 1 else arb(x[0])
+        for x in _exact_lifts(m.numerator, m.denominator, Q.numerator, Q.denominator)
+    )
+    _, one, two, _ = _ARB_SMALL
     nu1, nu2 = U1.sqrt(), U2.sqrt()
     V = K * nu1 + nu2 / K
     U = Uq / V
@@ -368,27 +378,34 @@ def _exact_arb(m: Fraction, Q: Fraction) -> NormalParams:
     nsum = nu1 + nu2
     w = nsum * iq
     s = s2.sqrt()
-    w0 = ((1 + s) / 2).sqrt() / s  # omega_av/omega0 without friction (see omega_av)
-    diff = (1 / ((U1 + 1).sqrt() + nu1) + 1 / ((U2 + 1).sqrt() + nu2)) * iq
+    w0 = ((one + s) / two).sqrt() / s  # omega_av/omega0 without friction (see omega_av)
+    diff = (one / ((U1 + one).sqrt() + nu1) + one / ((U2 + one).sqrt() + nu2)) * iq
     return _normal(
         r2.sqrt(),
         r2,
-        4 * nu1 * nu2 / den,
+        _ARB_FOUR * nu1 * nu2 / den,
         bq / (nsum * nsum),
         w,
-        2 / nsum,
+        two / nsum,
         w0,
         diff / (w * w0),
-        2 * nu1 / nsum,
+        two * nu1 / nsum,
     )
 
 
 @lru_cache(maxsize=64)
-def _exact_pairs(mp: int, mq: int, qp: int, qq: int) -> tuple:
-    """:func:`_exact_parts` as ``(numerator, denominator)`` pairs, cached by the integers."""
-    return tuple(
-        (x.numerator, x.denominator) for x in _exact_parts(Fraction(mp, mq), Fraction(qp, qq))
-    )
+def _exact_lifts(mp: int, mq: int, qp: int, qq: int) -> tuple:
+    """:func:`_exact_parts` as what :func:`_exact_arb` lifts, cached by the integers: an
+    ``fmpq`` where numerator and denominator have at most 53 bits (``arb`` of it is the quotient
+    rounded once, the ball of ``arb(p) / q``: both integers convert exactly), else the pair
+    ``(p, q)`` (a longer integer is rounded to the working precision by ``arb(p)``, and the
+    quotient follows it)."""
+    out = []
+    for x in _exact_parts(Fraction(mp, mq), Fraction(qp, qq)):
+        p, q = x.numerator, x.denominator
+        small = abs(p).bit_length() <= 53 and q.bit_length() <= 53
+        out.append(fmpq(p, q) if small else (p, q))
+    return tuple(out)
 
 
 @lru_cache(maxsize=64)

@@ -19,12 +19,14 @@ from functools import cache
 
 from flint import arb, ctx
 
+from analytic.system import PAPER
+
 from .certify import QUICK_GUARD, Root, ball, bits_for_digits, certified_root, pow2, quick_root
 from .derived import backend, edge_equation, near_one_forms, order1_forms
-from .enclosure import AtPrecision, edges_result, sgn_of, theta_floor, theta_scale
+from .enclosure import GUARD, AtPrecision, edges_result, sgn_of, theta_floor, theta_scale
 from .float_stage import float_edge
 from .inputs import as_depth, as_order
-from .params import NEAR_ONE, exact_fraction, normal_params
+from .params import NEAR_ONE, exact_fraction, normal_params, undamped_params
 from .request import Request
 from .result import Boundary, from_balls
 
@@ -52,7 +54,12 @@ def _forms(odd: bool):
 def undamped(req: Request) -> Boundary:
     """Both edges without friction (any member of the family), certified."""
     n, bits = req.order, bits_for_digits(req.digits + 2)
-    f_math, f_arb, df_arb, fd_arb = _forms(n % 2 == 1)
+    forms = _forms(n % 2 == 1)
+    if bits <= _LEAN_BITS:
+        lean = _lean(req, n, bits, forms)
+        if lean is not None:
+            return lean
+    f_math, f_arb, df_arb, fd_arb = forms
     P = AtPrecision(lambda: normal_params(req.m, None, "exact", _ARB, req.system))
     C = AtPrecision(lambda: arb.pi() * arb(n) * _HALF)  # n pi/2 (the halving is exact)
     # the parameters once, at the precision of the proof (quick_root's); the float start and
@@ -82,10 +89,6 @@ def undamped(req: Request) -> Boundary:
         )
     r_f, beta_f = float(pt.r), float(pt.beta)
     sgn = _UNIT[sgn_of(n)]  # exact balls (an arb times an int converts the int first)
-    if bits <= _LEAN_BITS:
-        lean = _lean(req, n, bits, top, pt, ct, sgn, f_math, fd_arb, f_arb, df_arb, r_f, beta_f)
-        if lean is not None:
-            return lean
     rounded: dict[int, tuple] = {top: (ct, pt.r, pt.beta)}
 
     def args():
@@ -152,21 +155,37 @@ def undamped(req: Request) -> Boundary:
 _LEAN_BITS = 4096
 
 
-def _lean(req, n, bits, top, pt, ct, sgn, f_math, fd_arb, f_arb, df_arb, r_f, beta_f):
-    """Both edges (``bits <= _LEAN_BITS``) in one function: the float start, the steps of
+def _lean(req, n, bits, forms):
+    """Both edges (``bits <= _LEAN_BITS``) in one function: the parameters as :func:`undamped`
+    computes them (at the proof's precision and its guard, the precision at which its
+    :class:`~verify.enclosure.AtPrecision` evaluates them), the float start, the steps of
     :func:`verify.certify.quick_root` -- Newton on midpoints doubling the accuracy at a precision
     just above it, then one interval Newton test at the full precision -- on the same balls
     (the parameters rounded from the proof's precision as :func:`undamped`'s ``args`` does it),
     without its general steps, and the result of :func:`verify.enclosure.edges_result` (the same
-    arithmetic).  ``None`` where a step does not succeed at once; the caller then runs the
-    general path, which repeats these steps and goes on from there."""
-    floor = theta_floor(bits, n)
-    tol = pow2(-bits)
-    need = (bits + 4) // 2 + 1
-    lo_w, hi_w = _WINDOW
-    rounded = {}
+    arithmetic).  ``None`` near ``m = 1`` (:func:`near_one_edge`'s forms) and where a step does
+    not succeed at once; the caller then runs the general path, which repeats these steps and
+    goes on from there."""
+    f_math, f_arb, df_arb, fd_arb = forms
+    top = bits + QUICK_GUARD
     old = ctx.prec
     try:
+        ctx.prec = top + GUARD
+        if req.system is PAPER:  # normal_params(m, None, ...) takes these values
+            r, _, _, beta, w, bm = undamped_params(req.m, _ARB)
+        else:
+            pt = normal_params(req.m, None, "exact", _ARB, req.system)
+            r, beta, w, bm = pt.r, pt.beta, pt.w, pt.bm
+        if float(bm) < NEAR_ONE:
+            return None
+        ct = arb.pi() * arb(n) * _HALF
+        r_f, beta_f = float(r), float(beta)
+        sgn = _UNIT[sgn_of(n)]
+        floor = theta_floor(bits, n)
+        tol = pow2(-bits)
+        need = (bits + 4) // 2 + 1
+        lo_w, hi_w = _WINDOW
+        rounded = {}
         th = []
         for eps, k in _EDGES:
             x = arb(float_edge(f_math, n, eps, r_f, beta_f))
@@ -177,7 +196,7 @@ def _lean(req, n, bits, top, pt, ct, sgn, f_math, fd_arb, f_arb, df_arb, r_f, be
                 a = rounded.get(prec)
                 if a is None:
                     ctx.prec = prec + 12
-                    a = rounded[prec] = (+ct, +pt.r, +pt.beta)
+                    a = rounded[prec] = (+ct, +r, +beta)
                 ctx.prec = prec
                 f, d = fd_arb(x, a[0], sgn, k, a[1], a[2])
                 if not (d.is_finite() and f.is_finite()) or d.contains(0):
@@ -190,10 +209,10 @@ def _lean(req, n, bits, top, pt, ct, sgn, f_math, fd_arb, f_arb, df_arb, r_f, be
             if floor > size:
                 size = floor
             X = arb(x, (size * pow2(4 - acc)).abs_upper())
-            dX = df_arb(X, ct, sgn, k, pt.r, pt.beta)
+            dX = df_arb(X, ct, sgn, k, r, beta)
             if dX.contains(0) or not dX.is_finite():
                 return None
-            N = x - f_arb(x, ct, sgn, k, pt.r, pt.beta) / dX
+            N = x - f_arb(x, ct, sgn, k, r, beta) / dX
             if not X.contains_interior(N):
                 return None
             if not N.rad() <= (arb(theta_scale(float(x), n, bits)) * tol).abs_lower():
@@ -204,7 +223,6 @@ def _lean(req, n, bits, top, pt, ct, sgn, f_math, fd_arb, f_arb, df_arb, r_f, be
         # edges_result (theta given, no friction: no dinv), at the proof's precision
         pi = arb.pi()
         half = arb(n) * _HALF
-        w = pt.w
         pw = pi * w
         Ts = [(half + t / pi) / w for t in th]
         ds = [t / pw for t in th]
