@@ -531,8 +531,9 @@ def test_many_thousand_digits_print():
 
 def test_row_bound_on_a_two_digit_value_and_beside_one():
     """The bound of a row from its errors' bounds in doubles (:func:`verify.result._row_of_balls`,
-    :func:`verify.result._bound_between`) where the largest error is exactly a two-digit value (``|1.00e+4 - 10000.5| + 0.25 = 7.5e-1``: the
-    doubles cannot tell it from a hair above, the integers decide) and a hair away from one, on
+    :func:`verify.result._bound_between`) where the largest error is exactly a two-digit value
+    (``|1.00e+4 - 10000.5| + 0.25 = 7.5e-1``: the doubles cannot tell it from a hair above, the
+    integers decide) and a hair away from one, on
     either side: rows from balls against the reference (:func:`assert_balls_as_numbers`)."""
     from verify.certify import ball
     from verify.result import _bound_between, _row_of_balls
