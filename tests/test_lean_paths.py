@@ -38,6 +38,27 @@ def _same(fast, slow):
         assert _balls(fast) == _balls(slow)
 
 
+def _outcome(*args, **kw):
+    """The boundary, or the refusal's text (too close to a threshold: both paths refuse alike)."""
+    try:
+        return boundary(*args, **kw)
+    except ArithmeticError as exc:
+        return repr(exc)
+
+
+def _compare(monkeypatch, modules, *args, **kw):
+    """The short paths of ``modules`` against the general path, switched on and off."""
+    fast = _outcome(*args, **kw)
+    with monkeypatch.context() as mp:
+        for mod in modules:
+            mp.setattr(mod, "_LEAN_BITS", 0)
+        slow = _outcome(*args, **kw)
+    if isinstance(fast, str) or isinstance(slow, str):
+        assert fast == slow
+    else:
+        _same(fast, slow)
+
+
 @pytest.mark.parametrize("digits", [5, 12, 15, 20, 26, 50, 120, 400])
 @pytest.mark.parametrize("order", [1, 2, 3, 6])
 def test_undamped_lean_is_general(monkeypatch, order, digits):
@@ -55,20 +76,7 @@ def test_undamped_lean_is_general(monkeypatch, order, digits):
 def test_friction_lean_is_general(monkeypatch, order, digits, damping):
     for m in ("0.05", "3/10", "0.6", "0.9", "0.999"):
         for Q in ("3/5", "2", "7", "30", "1000"):
-            try:
-                fast = boundary(order, m, Q=Q, damping=damping, digits=digits)
-            except ArithmeticError as exc:  # too close to a threshold: both paths refuse alike
-                fast = repr(exc)
-            with monkeypatch.context() as mp:
-                mp.setattr(hump, "_LEAN_BITS", 0)
-                try:
-                    slow = boundary(order, m, Q=Q, damping=damping, digits=digits)
-                except ArithmeticError as exc:
-                    slow = repr(exc)
-            if isinstance(fast, str) or isinstance(slow, str):
-                assert fast == slow
-            else:
-                _same(fast, slow)
+            _compare(monkeypatch, (hump,), order, m, Q=Q, damping=damping, digits=digits)
 
 
 SYSTEMS = (
@@ -90,21 +98,16 @@ def test_lean_paths_are_general_for_every_system(monkeypatch, kw, digits):
         for m in (None,) if depthless else ("0.05", "3/10", "0.9"):
             for Q in (None, "2", "7", "1000", "100000"):
                 for damping in ("exact", "paper") if Q else ("exact",):
-                    try:
-                        fast = boundary(order, m, Q=Q, damping=damping, digits=digits, **kw)
-                    except ArithmeticError as exc:
-                        fast = repr(exc)
-                    with monkeypatch.context() as mp:
-                        mp.setattr(hump, "_LEAN_BITS", 0)
-                        mp.setattr(undamped, "_LEAN_BITS", 0)
-                        try:
-                            slow = boundary(order, m, Q=Q, damping=damping, digits=digits, **kw)
-                        except ArithmeticError as exc:
-                            slow = repr(exc)
-                    if isinstance(fast, str) or isinstance(slow, str):
-                        assert fast == slow
-                    else:
-                        _same(fast, slow)
+                    _compare(
+                        monkeypatch,
+                        (hump, undamped),
+                        order,
+                        m,
+                        Q=Q,
+                        damping=damping,
+                        digits=digits,
+                        **kw,
+                    )
 
 
 def test_lean_paths_are_taken(monkeypatch):
