@@ -102,7 +102,7 @@ def decimal_text(x: Fraction) -> str:
         p = _places(d)
         if len(_PLACES) < 4096:
             _PLACES[d] = p
-    if not p:
+    if not isinstance(p, tuple):  # no finite decimal
         return f"{num}/{d}"
     places, f = p
     if not places:
