@@ -132,3 +132,48 @@ def test_lean_paths_are_taken(monkeypatch):
         boundary(3, m, digits=15, **kw)
         boundary(3, m, Q=1000, digits=15, **kw)  # an interval for each (at Q = 7 not all)
     assert used == [("_lean", True), ("_lean_normal", True)] * len(SYSTEMS)
+
+
+@pytest.mark.parametrize("backend_name", ["arb", "math", "mpmath"])
+def test_undamped_values_are_normal_values(backend_name):
+    """The frictionless short path's parameters (:func:`verify.system_params.undamped_values`)
+    are :func:`verify.system_params.normal_values` without friction, number for number: the
+    built-in members and custom systems in either order of the phases, with ``beta`` of either
+    sign (the swapped custom system has ``beta < 0``)."""
+    from fractions import Fraction
+
+    import mpmath
+    from flint import arb
+
+    from verify.derived import backend
+    from verify.inputs import as_system
+    from verify.system_params import _evaluate, normal_values, undamped_values
+
+    B = backend(backend_name)
+    systems = [
+        as_system("torsion"),
+        as_system("meissner"),
+        as_system(duty="1/3"),
+        as_system("meissner", duty="1/3"),
+        custom(("4/5", "6/5"), jump="3/2", duty="2/5"),
+        custom(("6/5", "4/5"), jump="3/2", duty="2/5"),  # the phases swapped: beta < 0
+        custom(("4/5", "6/5"), jump="1/2"),
+        custom(("1/3", "3"), jump="5"),
+    ]
+    depths = [Fraction(1, 20), Fraction(3, 10), Fraction(9, 10)]
+    if backend_name != "arb":
+        depths.append(0.3)
+    signs = set()
+    with mpmath.workdps(30):
+        for system in systems:
+            for m in depths if system.uses_depth else depths[1:2]:
+                v = normal_values(system, m, None, "exact", B)
+                got = undamped_values(system, m, B)
+                want = (v["r"], v["beta"], v["w"], v["bm"])
+                for a, b in zip(got, want, strict=True):
+                    if isinstance(a, arb):
+                        assert a.mid() == b.mid() and a.rad() == b.rad()
+                    else:
+                        assert a == b
+                signs.add(_evaluate(system, m, None, "exact", backend("math"))["beta"] > 0)
+    assert signs == {True, False}

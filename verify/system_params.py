@@ -316,6 +316,36 @@ def normal_values(system: System, m, Q, damping: str, B: Backend, om=None) -> di
     }
 
 
+def undamped_values(system: System, m, B: Backend) -> tuple:
+    """``(r, beta, w, bm)`` of :func:`normal_values` without friction (``Q = None``): the same
+    arithmetic on the same compiled texts, without its dictionaries -- what a frictionless edge
+    needs (:func:`verify.undamped._lean`)."""
+    system = canonical(system)
+    values, (rk, squared, bk, wk, pk, nk) = _undamped_picks(system, B.name)
+    v = values(*_atoms(system, "none", m, None, B))
+    r = B.sqrt(v[rk]) if squared else abs(v[rk])
+    beta = v[bk]
+    return r, abs(beta), v[wk], _select(beta, v[pk], v[nk], B)
+
+
+@cache
+def _undamped_picks(system: System, backend_name: str):
+    """The frictionless values' function of ``system`` and where :func:`undamped_values` finds
+    ``r`` (or ``r2``: then ``squared``), ``beta``, ``w``, ``bm_pos`` and ``bm_neg`` in its
+    result."""
+    values, names = _values_and_names(system, "none", backend_name)
+    squared = "r2" in names
+    at = names.index
+    return values, (
+        at("r2" if squared else "r"),
+        squared,
+        at("beta"),
+        at("w"),
+        at("bm_pos"),
+        at("bm_neg"),
+    )
+
+
 def normal_jets(system: System, m, Q, damping: str) -> dict:
     """:func:`normal_values` for jets (:class:`verify.certify.Jet`) or balls of ``m`` and ``Q`` in
     ``arb`` whose signs may be undecided over the range (a depth ball reaching ``m = 0``): ``r``

@@ -29,6 +29,7 @@ from .inputs import as_depth, as_order
 from .params import NEAR_ONE, exact_fraction, normal_params, undamped_params
 from .request import Request
 from .result import Boundary, from_balls
+from .system_params import undamped_values
 
 __all__ = ["undamped", "float_edges", "near_one_edge"]
 
@@ -174,8 +175,7 @@ def _lean(req, n, bits, forms):
         if req.system is PAPER:  # normal_params(m, None, ...) takes these values
             r, _, _, beta, w, bm = undamped_params(req.m, _ARB)
         else:
-            pt = normal_params(req.m, None, "exact", _ARB, req.system)
-            r, beta, w, bm = pt.r, pt.beta, pt.w, pt.bm
+            r, beta, w, bm = undamped_values(req.system, req.m, _ARB)
         if float(bm) < NEAR_ONE:
             return None
         ct = arb.pi() * arb(n) * _HALF
