@@ -11,7 +11,7 @@ from __future__ import annotations
 
 import argparse
 import importlib
-import pkgutil
+import importlib.util
 import sys
 
 from paramres.inputs import InputError
@@ -48,23 +48,34 @@ def build_parser(only: str | None = None) -> argparse.ArgumentParser:
     parser.add_argument("--version", action="version", version=f"{PROG} {__version__}")
     sub = parser.add_subparsers(dest="command", metavar="COMMAND", parser_class=_Parser)
     sub.required = True
-    for info in sorted(pkgutil.iter_modules(commands.__path__), key=lambda i: i.name):
-        if info.name.startswith("_") or (only is not None and info.name != only):
-            continue
-        module = importlib.import_module(f"{commands.__name__}.{info.name}")
-        module.register(sub)
+    if only is not None:
+        names = [only]
+    else:
+        import pkgutil
+
+        names = sorted(i.name for i in pkgutil.iter_modules(commands.__path__))
+    for name in names:
+        if not name.startswith("_"):
+            importlib.import_module(f"{commands.__name__}.{name}").register(sub)
     return parser
 
 
-#: commands whose parser is built alone when named first (a long-running server should start
-#: without importing every other command's modules; the report should not import, before it
-#: forks its second process, what only one of its processes needs)
-_ALONE = ("explore", "report")
+def _named(first: list[str]) -> str | None:
+    """The command named first on the command line, if it is one: its parser is then built
+    alone, importing no other command's modules (a numeric command starts sooner, a
+    long-running server starts without them, and the report does not import, before it forks
+    its second process, what only one of its processes needs).  Anything else -- no command,
+    an option, a name that is no command -- gets the parser of every command, whose message
+    lists them."""
+    typed = first[0] if first else ""
+    name = typed.replace("-", "_")  # a command is typed with hyphens where its module has _
+    if "_" in typed or not name.isidentifier():
+        return None
+    return name if importlib.util.find_spec(f"{commands.__name__}.{name}") is not None else None
 
 
 def main(argv: list[str] | None = None) -> int:
-    first = (sys.argv[1:] if argv is None else argv)[:1]
-    parser = build_parser(first[0] if first and first[0] in _ALONE else None)
+    parser = build_parser(_named((sys.argv[1:] if argv is None else argv)[:1]))
     args = parser.parse_args(argv)
     try:
         return int(args.func(args) or 0)

@@ -389,3 +389,24 @@ def test_a_real_process_exits_as_the_in_process_call_says(argv, expected):
     )
     assert proc.returncode == expected, (argv, proc.returncode, proc.stderr)
     check(argv, proc.returncode, proc.stdout, proc.stderr)
+
+
+def test_a_command_named_first_gets_its_own_parser_alone():
+    """``main`` builds the parser of the command named first alone (no other command's modules
+    imported); it is the very parser of the full build: every command, typed as the full parser
+    names it, finds itself and only itself, with the same options and help.  Anything that is
+    not a command's name gets the full parser (whose refusal lists every command)."""
+    from reports.cli import _named
+
+    def subparsers(parser):
+        sub = next(a for a in parser._actions if a.__class__.__name__ == "_SubParsersAction")
+        return sub.choices
+
+    full = subparsers(build_parser())
+    assert len(full) > 5
+    for name, sp in full.items():
+        alone = subparsers(build_parser(_named([name])))
+        assert list(alone) == [name]
+        assert alone[name].format_help() == sp.format_help()
+    for other in ([], ["--help"], ["-h"], ["nonsense"], ["jump_validity"], ["_arguments"], [""]):
+        assert _named(other) is None, other
