@@ -17,6 +17,7 @@ import pytest
 import verify.hump as hump
 import verify.undamped as undamped
 from analytic.system import custom
+from verify.inputs import as_system
 from verify.solve import boundary
 
 DEPTHS = ("1e-12", "1e-6", "0.05", "3/10", "3/5", "0.77", "0.9", "0.999", "0.999999")
@@ -135,21 +136,46 @@ def test_lean_paths_are_taken(monkeypatch):
 
 
 @pytest.mark.parametrize("backend_name", ["arb", "math", "mpmath"])
-def test_undamped_values_are_normal_values(backend_name):
-    """The frictionless short path's parameters (:func:`verify.system_params.undamped_values`)
-    are :func:`verify.system_params.normal_values` without friction, number for number: the
-    built-in members and custom systems in either order of the phases, with ``beta`` of either
-    sign (the swapped custom system has ``beta < 0``)."""
+def test_normal_tuple_reads_the_named_values(backend_name):
+    """:func:`verify.system_params.normal_tuple` (the values read by position) against the
+    compiled values read by name (:func:`verify.system_params._evaluate`) and combined as the
+    normal form defines them, number for number: the built-in members and custom systems in
+    either order of the phases, with ``beta`` of either sign (the swapped custom system has
+    ``beta < 0``), without friction and with it in both models; and
+    :func:`verify.system_params.undamped_values` is its frictionless part."""
     from fractions import Fraction
 
     import mpmath
     from flint import arb
 
     from verify.derived import backend
-    from verify.inputs import as_system
-    from verify.system_params import _evaluate, normal_values, undamped_values
+    from verify.params import _NORMAL_FIELDS
+    from verify.system_params import (
+        NORMAL_FIELDS,
+        _evaluate,
+        canonical,
+        normal_tuple,
+        undamped_values,
+    )
 
+    assert NORMAL_FIELDS == _NORMAL_FIELDS
     B = backend(backend_name)
+
+    def by_name(system, m, Q, damping):
+        v = _evaluate(system, m, Q, damping, B)
+        r2 = v["r2"] if "r2" in v else v["r"] * v["r"]
+        r = B.sqrt(r2) if "r2" in v else abs(v["r"])
+        beta = v["beta"]
+        bm = v["bm_pos"] if beta > 0 else v["bm_neg"]
+        exact = Q is not None and damping == "exact"
+        dinv = v["dw"] / (v["w"] * v["w0"]) if exact else 0
+        return (r, r2, v["u"], abs(beta), v["w"], v.get("g", 0), v["w0"], dinv, bm)
+
+    def same(a, b):
+        if isinstance(a, arb):
+            return a.mid() == b.mid() and a.rad() == b.rad() if isinstance(b, arb) else a == b
+        return a == b
+
     systems = [
         as_system("torsion"),
         as_system("meissner"),
@@ -167,13 +193,14 @@ def test_undamped_values_are_normal_values(backend_name):
     with mpmath.workdps(30):
         for system in systems:
             for m in depths if system.uses_depth else depths[1:2]:
-                v = normal_values(system, m, None, "exact", B)
-                got = undamped_values(system, m, B)
-                want = (v["r"], v["beta"], v["w"], v["bm"])
-                for a, b in zip(got, want, strict=True):
-                    if isinstance(a, arb):
-                        assert a.mid() == b.mid() and a.rad() == b.rad()
-                    else:
-                        assert a == b
-                signs.add(_evaluate(system, m, None, "exact", backend("math"))["beta"] > 0)
+                signs.add(
+                    _evaluate(canonical(system), m, None, "none", backend("math"))["beta"] > 0
+                )
+                for Q, damping in ((None, "exact"), (Fraction(7), "exact"), (Fraction(7), "paper")):
+                    got = normal_tuple(system, m, Q, damping, B)
+                    want = by_name(canonical(system), m, Q, damping)
+                    assert all(same(a, b) for a, b in zip(got, want, strict=True)), (system, m, Q)
+                r, _, _, beta, w, _, _, _, bm = normal_tuple(system, m, None, "exact", B)
+                lean = undamped_values(system, m, B)
+                assert all(same(a, b) for a, b in zip(lean, (r, beta, w, bm), strict=True))
     assert signs == {True, False}

@@ -273,10 +273,9 @@ def normal_params(
     2^-53).  Omitted, it is ``1 - m``.
     """
     if system is not PAPER and not system.is_paper:
-        from .system_params import normal_values
+        from .system_params import normal_tuple
 
-        v = normal_values(system, m, Q, damping, B, om)
-        return _normal(*(v[k] for k in _NORMAL_FIELDS))
+        return _normal(*normal_tuple(system, m, Q, damping, B, om))
     if (
         Q is not None
         and damping != "paper"

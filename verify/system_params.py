@@ -283,64 +283,70 @@ def _values_and_names(system: System, damping: str, backend_name: str):
     return _values_named(system, damping, backend_name), _compiled(system, damping)[2]
 
 
+#: the fields of :func:`normal_values`, in the order of :func:`normal_tuple` (those of
+#: :class:`verify.params.NormalParams`)
+NORMAL_FIELDS = ("r", "r2", "u", "beta", "w", "g", "w0", "dinv", "bm")
+
+
 def normal_values(system: System, m, Q, damping: str, B: Backend, om=None) -> dict:
     """``r, r2, u, beta, w, g, w0, dinv, bm`` of the normal form (``r, beta >= 0``), for ``system``
     at depth ``m`` (ignored by custom systems) and quality factor ``Q`` (``None``: no friction) in
     the model ``damping``; numbers of ``B``.  In the exact model both phases must be under-damped.
     ``om``: ``1 - m`` to its own accuracy, for float arrays of depths near 1.
     """
-    v = _evaluate(system, m, Q, damping, B, om)
-    if "r2" in v:
-        r2 = v["r2"]
+    return dict(zip(NORMAL_FIELDS, normal_tuple(system, m, Q, damping, B, om), strict=True))
+
+
+def normal_tuple(system: System, m, Q, damping: str, B: Backend, om=None) -> tuple:
+    """:func:`normal_values` as a tuple in the order of :data:`NORMAL_FIELDS`: the compiled
+    values read by position (:func:`_picks`), no dictionary built."""
+    model = "none" if Q is None else damping
+    system = canonical(system)
+    values, (rk, squared, uk, bk, wk, w0k, gk, dwk, pk, nk) = _picks(system, model, B.name)
+    v = values(*_atoms(system, model, m, Q, B, om))
+    if squared:
+        r2 = v[rk]
         r = B.sqrt(r2)
     else:
-        r = abs(v["r"])
+        r = abs(v[rk])
         r2 = r * r
-    beta = v["beta"]
-    bm = _select(beta, v["bm_pos"], v["bm_neg"], B)
-    beta = abs(beta)
+    beta = v[bk]
+    bm = _select(beta, v[pk], v[nk], B)
     zero = r * 0
-    g = v.get("g", zero)
-    w, w0 = v["w"], v["w0"]
-    dinv = v["dw"] / (w * w0) if "g" in v else zero
-    return {
-        "r": r,
-        "r2": r2,
-        "u": v["u"],
-        "beta": beta,
-        "w": w,
-        "g": g,
-        "w0": w0,
-        "dinv": dinv if Q is not None and damping == "exact" else zero,
-        "bm": bm,
-    }
+    w, w0 = v[wk], v[w0k]
+    if gk is None:
+        g = dinv = zero
+    else:
+        g = v[gk]
+        dinv = v[dwk] / (w * w0) if model == "exact" else zero
+    return r, r2, v[uk], abs(beta), w, g, w0, dinv, bm
 
 
 def undamped_values(system: System, m, B: Backend) -> tuple:
-    """``(r, beta, w, bm)`` of :func:`normal_values` without friction (``Q = None``): the same
-    arithmetic on the same compiled texts, without its dictionaries -- what a frictionless edge
-    needs (:func:`verify.undamped._lean`)."""
-    system = canonical(system)
-    values, (rk, squared, bk, wk, pk, nk) = _undamped_picks(system, B.name)
-    v = values(*_atoms(system, "none", m, None, B))
-    r = B.sqrt(v[rk]) if squared else abs(v[rk])
-    beta = v[bk]
-    return r, abs(beta), v[wk], _select(beta, v[pk], v[nk], B)
+    """``(r, beta, w, bm)`` of :func:`normal_values` without friction (``Q = None``): what a
+    frictionless edge needs (:func:`verify.undamped._lean`)."""
+    r, _, _, beta, w, _, _, _, bm = normal_tuple(system, m, None, "none", B)
+    return r, beta, w, bm
 
 
 @cache
-def _undamped_picks(system: System, backend_name: str):
-    """The frictionless values' function of ``system`` and where :func:`undamped_values` finds
-    ``r`` (or ``r2``: then ``squared``), ``beta``, ``w``, ``bm_pos`` and ``bm_neg`` in its
-    result."""
-    values, names = _values_and_names(system, "none", backend_name)
+def _picks(system: System, model: str, backend_name: str):
+    """The values' function of ``system`` in ``model`` and where :func:`normal_tuple` finds ``r``
+    (or ``r2``: then ``squared``), ``u``, ``beta``, ``w``, ``w0``, ``g`` and ``dw`` (``None``
+    without friction's ``g``), ``bm_pos`` and ``bm_neg`` in its result."""
+    values, names = _values_and_names(system, model, backend_name)
     squared = "r2" in names
     at = names.index
+    g = at("g") if "g" in names else None
     return values, (
         at("r2" if squared else "r"),
         squared,
+        at("u"),
         at("beta"),
         at("w"),
+        at("w0"),
+        g,
+        None if g is None else at("dw"),
         at("bm_pos"),
         at("bm_neg"),
     )
