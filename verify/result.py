@@ -385,7 +385,7 @@ def _row_of_balls(balls, dps: int) -> tuple[tuple, str | None] | None:
         scales = _ROW_SCALES[dps] = {}
     texts = []
     raw = []  # (k, D, exp, man, radius) of each number: the printed value D 10**k
-    least = most = 0.0  # the largest error lies between them, in doubles
+    most = wide = 0.0  # the largest error lies within 4.2 wide of most, in doubles
     exact = False  # the bound in integers
     for x in balls:
         man, exp = x.mid().man_exp()
@@ -414,19 +414,15 @@ def _row_of_balls(balls, dps: int) -> tuple[tuple, str | None] | None:
             D, rem = divmod(n, cut)
             # |printed - x| 10**F (F = fixdps): the printed value is rem units below the
             # truncated digits n, or cut - rem above, and n lies less than 4.2 units below
-            # |x| 10**F (:func:`_digit_scale`); lo and hi bracket the error, in doubles
+            # |x| 10**F (:func:`_digit_scale`): the error lies within 4.2 u of rem u + f
             if rem >= half:  # the first digit cut is 5 or more: round half up
                 D += 1
                 rem = cut - rem
-                lo = (rem - 4.2) * u + f
-            else:
-                lo = rem * u + f
-                rem += 4.2
-            if lo > least:
-                least = lo
-            hi = rem * u + f  # (infinite where 10**-F is beyond the doubles: the integers')
-            if hi > most:
-                most = hi
+            e = rem * u + f  # (infinite where 10**-F is beyond the doubles: the integers')
+            if e > most:
+                most = e
+            if u > wide:
+                wide = u
             if D == tens:  # a run of nines carried into the next power of ten
                 D //= 10
                 exponent += 1
@@ -456,7 +452,10 @@ def _row_of_balls(balls, dps: int) -> tuple[tuple, str | None] | None:
             exact = True
         texts.append(text)
         raw.append((k, D, exp, man, f))
-    bound = None if exact else _bound_between(least, most)
+    # the largest error lies within 4.2 wide of most; most - 4.2 wide is then at least most / 2
+    # and off by half a unit in its last place at most (within _bound_between's margin)
+    wide *= 4.2
+    bound = None if exact or most < 2 * wide else _bound_between(most - wide, most + wide)
     return tuple(texts), (_exact_bound(raw) if bound is None else bound)
 
 
@@ -624,22 +623,30 @@ def from_balls(
     offsets.  The numbers are the balls' midpoints (exactly), ``radii`` their radii (exactly) and
     ``radius`` the largest, the enclosures of the edges the balls' ends (exactly: midpoint -+
     radius); each is converted from the balls on first use."""
-    obj = object.__new__(_FromBalls)
-    obj.__dict__.update(
-        order=order,
-        m=m,
-        Q=Q,
-        damping=damping,
-        digits=digits,
-        method=method,
-        exists=True,
-        certified=certified,
-        regime=regime,
-        notes=tuple(notes),
-        system=system,
-        _balls=tuple(balls),
+    obj = _new(_FromBalls)
+    _setattr(
+        obj,
+        "__dict__",
+        {
+            "order": order,
+            "m": m,
+            "Q": Q,
+            "damping": damping,
+            "digits": digits,
+            "method": method,
+            "exists": True,
+            "certified": certified,
+            "regime": regime,
+            "notes": tuple(notes),
+            "system": system,
+            "_balls": tuple(balls),
+        },
     )
     return obj
+
+
+_new = object.__new__
+_setattr = object.__setattr__
 
 
 def proven_text(x: mpmath.mpf, rad, digits: int) -> str:

@@ -95,8 +95,7 @@ def register(subparsers) -> None:
 
 def decimal_text(x: Fraction) -> str:
     """A depth as exact decimal text when it terminates, else ``p/q``."""
-    num = x.numerator
-    d = x.denominator
+    num, d = x.as_integer_ratio()
     p = _PLACES.get(d)
     if p is None:
         p = _places(d)
@@ -225,6 +224,24 @@ def rows(
             for j, m in enumerate(ms):
                 out.append((n, m, fmt(grid[i, 0, j]), fmt(grid[i, 1, j])))
         return out
+    if scheduler is None and jobs <= 1:  # in this process, one after the other (no engine)
+        solve = _solver or _load_solver()
+        pairs = [(n, m) for n in orders for m in ms]
+        out = []
+        add = out.append
+        for n, m in progress(pairs, total=len(pairs), label=label, quiet=quiet):
+            b = solve(
+                n,
+                m,
+                Q=Q,
+                damping=damping,
+                digits=digits,
+                system=system,
+                modulation=modulation,
+                switch_time=switch_time,
+            )
+            add((n, m, *b.printed()))
+        return out
     from verify.atlas import edge_seconds
     from verify.engine import cluster, ordered
 
@@ -344,23 +361,25 @@ def csv_text(header, data) -> str:
     are written by the writer itself."""
     lines = [",".join(header)]
     add = lines.append
-    depths: dict = {}  # the text of each depth, once a table (the orders repeat them)
-    commas = len(header) - 1
+    # the text of each depth, once a table (the orders repeat them), by the depth itself (data
+    # holds every depth while this runs: no two at one id)
+    depths: dict = {}
     for r in data:
-        m = r[1]
-        key = (m.numerator, m.denominator)
+        key = id(r[1])
         mt = depths.get(key)
         if mt is None:
-            mt = depths[key] = decimal_text(m)
+            mt = depths[key] = decimal_text(r[1])
         try:
             add(f"{r[0]},{mt}," + ",".join(r[2:]))
         except TypeError:  # a missing number (None) or a field that is not text
             add(f"{r[0]},{mt}," + ",".join(["" if v is None else str(v) for v in r[2:]]))
-        commas += len(r) - 1
     add("")
     text = "\n".join(lines)
-    if text.count(",") == commas and text.count("\n") == len(lines) - 1 and not (
-        '"' in text or "\r" in text
+    commas = len(header) - 1 + sum(map(len, data)) - len(data)
+    if (
+        text.count(",") == commas
+        and text.count("\n") == len(lines) - 1
+        and not ('"' in text or "\r" in text)
     ):
         return text
     buf = io.StringIO()  # a field to quote: the writer's own lines
