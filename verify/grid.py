@@ -1158,16 +1158,19 @@ def _table_friction(orders, P, rho, system, friction, cols) -> dict:
 
     Both parities in one pass (:class:`_FrictionPlan`): the rows of the odd orders first, every
     set of points in that order, and each evaluation calls the form of each parity on its part
-    (:class:`_ByParity`); the first step of the edges and of the maximisers from one evaluation;
-    the results gathered in that order of the rows with masks, and put in the caller's order once
+    (:class:`_ByParity`), the points of the edges and those of the maximisers each gathered in
+    that order (each parity one slice: no copies of the evaluations); the results gathered in that order of the rows with masks, and put in the caller's order once
     at the end."""
     no, N = len(orders), rho.size
     keys = ("lo", "hi", "top", "dtop", "undecided", "lo_doubt", "hi_doubt", "done")
     nc = cols.size
     full = nc == N  # (then cols is every column, in order)
-    out = {k: np.full((no, N), np.nan) if k in keys[:4] else np.zeros((no, N), bool) for k in keys}
+
+    def blank(key):
+        return np.full((no, N), np.nan) if key in keys[:4] else np.zeros((no, N), bool)
+
     if nc == 0:
-        return out
+        return {key: blank(key) for key in keys}
     plan = _friction_plan(system, orders, friction)
     R1, crow, oddrow = plan.n_odd, plan.c, plan.odd
     start = np.empty((nc, 3 * no))
@@ -1202,42 +1205,27 @@ def _table_friction(orders, P, rho, system, friction, cols) -> dict:
         pr, pc = np.nonzero(pair)  # (row-major: the odd orders' entries first)
         tr, tc = np.nonzero(tmask)
         k, kt = pr.size, tr.size
-        k1, t1 = int(np.searchsorted(pr, R1)), int(np.searchsorted(tr, R1))
+        k1 = int(np.searchsorted(pr, R1))
         k0 = k - k1
-        if k + kt:
-            # one evaluation for the first step of both edges where the four nodes have the
-            # interval and of the maximiser where they all lack it: the points [lower, upper,
-            # maximiser] of the odd orders, then of the even
-            lo_p, hi_p, top_t = lo0[pair], hi0[pair], top0[tmask]
-
-            def order(p, q, r):  # [p, q, r] of the odd orders, then of the even
-                return np.concatenate([p[:k1], q[:k1], r[:t1], p[k1:], q[k1:], r[t1:]])
-
-            x_all = order(lo_p, hi_p, top_t)
-            args_all = gather(order(pr, pr, tr), order(pc, pc, tc))
-            first = ev(x_all, *args_all)
-            odd_n = 2 * k1 + t1
-            e_sl = (slice(0, 2 * k1), slice(odd_n, odd_n + 2 * k0))
-            t_sl = (slice(2 * k1, odd_n), slice(odd_n + 2 * k0, None))
-
-            def part(a, sls):
-                return np.concatenate([a[..., sl] for sl in sls], axis=-1)
-
         moving = None
         if k:
-            psub, x0 = part(args_all, e_sl), part(x_all, e_sl)
+            # both edges where the four nodes have the interval: the points [lower, upper] of
+            # the odd orders, then of the even (each parity one slice of every evaluation)
+            lo_p, hi_p = lo0[pair], hi0[pair]
+            cat = np.concatenate
+            x0 = cat([lo_p[:k1], hi_p[:k1], lo_p[k1:], hi_p[k1:]])
+            psub = gather(
+                cat([pr[:k1], pr[:k1], pr[k1:], pr[k1:]]), cat([pc[:k1], pc[:k1], pc[k1:], pc[k1:]])
+            )
             sign = np.ones(2 * k)
             sign[k1 : 2 * k1] = -1.0
             sign[2 * k1 + k0 :] = -1.0
-            root, doubt, good, (moving, xm) = _table_edges(
-                ev, psub, x0, sign, first=tuple(part(f, e_sl) for f in first), left=True
-            )
+            root, doubt, good, (moving, xm) = _table_edges(ev, psub, x0, sign, left=True)
         high = np.zeros(0, bool)
         if kt:
-            tsub = part(args_all, t_sl)
-            top, dtop, ok, high, (curv, third) = _table_top(
-                ev, tsub, part(x_all, t_sl), first=tuple(part(f, t_sl) for f in first)
-            )
+            # the maximiser where the four nodes all lack the interval
+            tsub = gather(tr, tc)
+            top, dtop, ok, high, (curv, third) = _table_top(ev, tsub, top0[tmask])
             TOP[tmask] = np.where(ok, top, np.nan)
             DTOP[tmask] = np.where(ok, dtop, np.nan)
             DONE[tmask] = ok
@@ -1278,12 +1266,13 @@ def _table_friction(orders, P, rho, system, friction, cols) -> dict:
             ok = _no_interval(oddrow[ri], crow[ri], *np.take(pars[:4], ci, axis=1))
             DONE[ri[ok], ci[ok]] = True
     inv = plan.inverse
+    out = {}
     for key, got in zip(keys, (LO, HI, TOP, DTOP, None, LOD, HID, DONE), strict=True):
-        if got is None:
-            continue
-        if full:
+        if full and got is not None:
             out[key] = got[inv]
-        else:
+            continue
+        out[key] = blank(key)
+        if got is not None:
             out[key][:, cols] = got[inv]
     return out
 
@@ -1463,24 +1452,27 @@ def _f2_peak(form, x1, x2, r2, u, beta, g, *, theta=None, odd=None):
     y1, y2 = beta * x1 * q, beta * x2 * q  # the ends in units of pi/2
     j1, j2 = np.floor(y1 * (1 - 1e-12)), np.floor(y2 * (1 + 1e-12))
     mid = j2 / (q * beta)  # the multiple of pi/2 inside (where there is one)
-    cat = np.concatenate
     blocks = 4 if theta is None else 5
+    # the evaluations point by point (row j: those of point j): with the points' parities
+    # sorted, each parity is one slice of the call
+    stack = np.stack
     args = (
-        np.zeros(4 * k) if theta is None else cat([np.zeros(4 * k), theta]),
-        cat([x1, x2, mid, x1, x1][:blocks]),
-        cat([r2, r2, r2, zero, zero][:blocks]),
-        cat([zero, zero, zero, u, zero][:blocks]),
-        cat([beta] * blocks),
-        cat([g] * blocks),
+        np.zeros((k, 4)) if theta is None else stack([zero, zero, zero, zero, theta], axis=1),
+        stack([x1, x2, mid, x1, x1][:blocks], axis=1),
+        stack([r2, r2, r2, zero, zero][:blocks], axis=1),
+        stack([zero, zero, zero, u, zero][:blocks], axis=1),
+        np.repeat(beta, blocks),
+        np.repeat(g, blocks),
     )
-    got = form(*args) if odd is None else form(*args, cat([odd] * blocks))
-    got = np.asarray(got, float)
-    ends = np.maximum(got[:k], got[k : 2 * k])
-    ends = np.where(j2 == j1, ends, np.maximum(ends, got[2 * k : 3 * k]))
+    args = tuple(a.ravel() for a in args)
+    got = form(*args) if odd is None else form(*args, np.repeat(odd, blocks))
+    got = np.asarray(got, float).reshape(k, blocks)
+    ends = np.maximum(got[:, 0], got[:, 1])
+    ends = np.where(j2 == j1, ends, np.maximum(ends, got[:, 2]))
     peak = np.where((j2 - j1 <= 1) & (beta > 0), ends + 1e-9 * r2 * (1 + y2), r2)
     if theta is None:
-        return peak, -got[3 * k :]
-    return peak, -got[3 * k : 4 * k], -got[4 * k :]
+        return peak, -got[:, 3]
+    return peak, -got[:, 3], -got[:, 4]
 
 
 def _table_edges(ev, args, x, sign, steps: int = _TABLE_STEPS, *, first=None, left=False):
@@ -1696,6 +1688,15 @@ _PLACES = np.arange(1, 16, dtype=float)[:, None]
 _SCALES = 10.0**_PLACES
 
 
+def _decimal_fraction(x: float) -> Fraction:
+    """The shortest decimal of ``x`` (``0 < x < 1``) as a Fraction: ``Fraction(repr(x))``, from
+    the digits of a plain ``0.ddd`` form without the parser (the exponent form through it)."""
+    text = repr(x)
+    if text[:2] == "0." and text[2:].isdigit():
+        return Fraction(int(text[2:]), 10 ** (len(text) - 2))
+    return Fraction(text)
+
+
 def _one_minus_decimals(x) -> np.ndarray:
     """:func:`_one_minus_decimal` of every element of ``x`` (doubles ``1/2 <= x < 1``), vectorised:
     the shortest decimal of ``x`` with at most 15 places is ``d = 1 - E/10^L`` for the least
@@ -1747,7 +1748,7 @@ class _Depths:
 
     def exact(self, j: int) -> Fraction:
         """The exact depth: the shortest decimal of a float input, as in the rest of the API."""
-        return Fraction(repr(float(self.m[j]))) if self._exact is None else self._exact[j]
+        return _decimal_fraction(float(self.m[j])) if self._exact is None else self._exact[j]
 
     def exact_all(self, idx) -> list:
         return [self.exact(int(j)) for j in idx]
