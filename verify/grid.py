@@ -1158,8 +1158,8 @@ def _table_friction(orders, P, rho, system, friction, cols) -> dict:
 
     Both parities in one pass (:class:`_FrictionPlan`): the rows of the odd orders first, every
     set of points in that order, and each evaluation calls the form of each parity on its part
-    (:class:`_ByParity`), the points of the edges and those of the maximisers each gathered in
-    that order (each parity one slice: no copies of the evaluations); the results gathered in that order of the rows with masks, and put in the caller's order once
+    (:class:`_ByParity`); the first step of the edges and of the maximisers from one evaluation
+    (the maximisers one slice of it); the results gathered in that order of the rows with masks, and put in the caller's order once
     at the end."""
     no, N = len(orders), rho.size
     keys = ("lo", "hi", "top", "dtop", "undecided", "lo_doubt", "hi_doubt", "done")
@@ -1207,35 +1207,47 @@ def _table_friction(orders, P, rho, system, friction, cols) -> dict:
         k, kt = pr.size, tr.size
         k1 = int(np.searchsorted(pr, R1))
         k0 = k - k1
+        E = 2 * k1 + kt  # where the edges of the even orders start
+        tsl = slice(2 * k1, E)  # the maximisers
         moving = None
-        if k:
-            # both edges where the four nodes have the interval: the points [lower, upper] of
-            # the odd orders, then of the even (each parity one slice of every evaluation)
-            lo_p, hi_p = lo0[pair], hi0[pair]
-            cat = np.concatenate
-            x0 = cat([lo_p[:k1], hi_p[:k1], lo_p[k1:], hi_p[k1:]])
-            psub = gather(
-                cat([pr[:k1], pr[:k1], pr[k1:], pr[k1:]]), cat([pc[:k1], pc[:k1], pc[k1:], pc[k1:]])
-            )
-            sign = np.ones(2 * k)
-            sign[k1 : 2 * k1] = -1.0
-            sign[2 * k1 + k0 :] = -1.0
-            root, doubt, good, (moving, xm) = _table_edges(ev, psub, x0, sign, left=True)
         high = np.zeros(0, bool)
+        if k + kt:
+            # one evaluation for the first step of both edges where the four nodes have the
+            # interval and of the maximiser where they all lack it: the points [lower, upper,
+            # maximiser] of the odd orders, then [maximiser, lower, upper] of the even (each
+            # parity one slice of the call, the maximisers one slice of the result: no copies)
+            lo_p, hi_p, top_t = lo0[pair], hi0[pair], top0[tmask]
+            cat = np.concatenate
+            x_all = cat([lo_p[:k1], hi_p[:k1], top_t, lo_p[k1:], hi_p[k1:]])
+            args_all = gather(
+                cat([pr[:k1], pr[:k1], tr, pr[k1:], pr[k1:]]),
+                cat([pc[:k1], pc[:k1], tc, pc[k1:], pc[k1:]]),
+            )
+            first = ev(x_all, *args_all)
+        if k:
+            # the edges (sign 0: the maximisers' points, not taken)
+            sign = np.ones(x_all.size)
+            sign[k1 : 2 * k1] = -1.0
+            sign[tsl] = 0.0
+            sign[E + k0 :] = -1.0
+            root, doubt, good, (moving, xm) = _table_edges(
+                ev, args_all, x_all, sign, first=first, left=True
+            )
         if kt:
-            # the maximiser where the four nodes all lack the interval
-            tsub = gather(tr, tc)
-            top, dtop, ok, high, (curv, third) = _table_top(ev, tsub, top0[tmask])
+            tsub = args_all[:, tsl]
+            top, dtop, ok, high, (curv, third) = _table_top(
+                ev, tsub, x_all[tsl], first=tuple(f[tsl] for f in first)
+            )
             TOP[tmask] = np.where(ok, top, np.nan)
             DTOP[tmask] = np.where(ok, dtop, np.nan)
             DONE[tmask] = ok
         if high.any() or (moving is not None and moving.size):
             # an interval whose edges the tables did not give (split at the maximiser), and the
             # edges that one step did not converge: more steps, in the same calls
-            hsub = tsub[:, high] if kt else psub[:, :0]
+            hsub = tsub[:, high] if kt else args_all[:, :0]
             hx = (top[high], dtop[high], curv[high]) if kt else (np.zeros(0),) * 3
             h3 = third[high] if kt else None
-            extra = None if moving is None else (psub[:, moving], xm, sign[moving])
+            extra = None if moving is None else (args_all[:, moving], xm, sign[moving])
             lo, hi, lo_d, hi_d, ok, more = _table_split(ev, hsub, *hx, extra=extra, third=h3)
             if moving is not None:
                 root[moving], doubt[moving], good[moving] = more
@@ -1248,8 +1260,8 @@ def _table_friction(orders, P, rho, system, friction, cols) -> dict:
                 DONE.flat[at] = True
         if k:
             # the edges in the entries' order (that of the mask): [odd orders, even orders]
-            lp = np.concatenate([np.arange(k1), np.arange(2 * k1, 2 * k1 + k0)])
-            hp = np.concatenate([np.arange(k1, 2 * k1), np.arange(2 * k1 + k0, 2 * k)])
+            lp = np.concatenate([np.arange(k1), np.arange(E, E + k0)])
+            hp = np.concatenate([np.arange(k1, 2 * k1), np.arange(E + k0, E + 2 * k0)])
             lo, hi = root[lp], root[hp]
             ok = good[lp] & good[hp] & (lo < hi)
             gap = np.maximum(np.abs(crow[pr] + hi), 1.0)
@@ -1447,7 +1459,6 @@ def _f2_peak(form, x1, x2, r2, u, beta, g, *, theta=None, odd=None):
     ``sin(theta)^2`` there (the form with ``r2 = u = 0``), in the same call: ``(P, S, sin^2)``.
     ``odd``: ``form`` is :func:`_plain_both`, and this is its mask of the odd orders."""
     k = x1.size
-    zero = np.zeros(k)
     q = 2.0 / math.pi
     y1, y2 = beta * x1 * q, beta * x2 * q  # the ends in units of pi/2
     j1, j2 = np.floor(y1 * (1 - 1e-12)), np.floor(y2 * (1 + 1e-12))
@@ -1455,16 +1466,15 @@ def _f2_peak(form, x1, x2, r2, u, beta, g, *, theta=None, odd=None):
     blocks = 4 if theta is None else 5
     # the evaluations point by point (row j: those of point j): with the points' parities
     # sorted, each parity is one slice of the call
-    stack = np.stack
-    args = (
-        np.zeros((k, 4)) if theta is None else stack([zero, zero, zero, zero, theta], axis=1),
-        stack([x1, x2, mid, x1, x1][:blocks], axis=1),
-        stack([r2, r2, r2, zero, zero][:blocks], axis=1),
-        stack([zero, zero, zero, u, zero][:blocks], axis=1),
-        np.repeat(beta, blocks),
-        np.repeat(g, blocks),
-    )
-    args = tuple(a.ravel() for a in args)
+    th, x, rr = np.zeros((k, blocks)), np.empty((k, blocks)), np.zeros((k, blocks))
+    x[:, 0], x[:, 1], x[:, 2], x[:, 3:] = x1, x2, mid, x1[:, None]  # (no stack: its overhead)
+    rr[:, :3] = r2[:, None]
+    uu = np.zeros((k, blocks))
+    uu[:, 3] = u
+    if theta is not None:
+        th[:, 4] = theta
+    bb, gg = np.repeat(beta, blocks), np.repeat(g, blocks)
+    args = (th.ravel(), x.ravel(), rr.ravel(), uu.ravel(), bb, gg)
     got = form(*args) if odd is None else form(*args, np.repeat(odd, blocks))
     got = np.asarray(got, float).reshape(k, blocks)
     ends = np.maximum(got[:, 0], got[:, 1])
@@ -1483,7 +1493,8 @@ def _table_edges(ev, args, x, sign, steps: int = _TABLE_STEPS, *, first=None, le
     the window, with ``sign D`` increasing through the zero).  ``first``: the evaluation at ``x``
     (``ev(x, *args)``, done already); ``left=True``: also the indices of the points still moving
     after the last step and their next iterates.  ``args``: a 2-D array, one row per argument
-    (compacted as one)."""
+    (compacted as one).  A point of ``sign`` 0 is evaluated with the others but not iterated
+    (its results are not used)."""
     root = np.full(x.size, np.nan)
     doubt = np.zeros(x.size, bool)
     good = np.zeros(x.size, bool)
@@ -1512,7 +1523,7 @@ def _table_edges(ev, args, x, sign, steps: int = _TABLE_STEPS, *, first=None, le
             root[idx[j]] = r
             doubt[idx[j]] = ~(noise / (np.abs(slope) * at) <= DOUBT)
             good[idx[j]] = (sg[j] * slope > 0) & (np.abs(r) < _HALF_PI)
-        keep = ~done & np.isfinite(s)
+        keep = ~done & np.isfinite(s) & (sg != 0)
         if not keep.any():
             rest = (idx[:0], x[:0])
             break
@@ -1534,6 +1545,7 @@ def _table_top(ev, args, x, *, first=None):
     interval exists: :func:`_table_split` finds its edges).  ``first``: the evaluation at ``x``,
     done already.  ``ev`` is :func:`_indicator_both`, ``args`` a 2-D array, one row per argument
     (the last the mask of the odd orders)."""
+    x0 = x
     top = np.full(x.size, np.nan)
     dtop = np.full(x.size, np.nan)
     curv = np.full(x.size, np.nan)
@@ -1576,7 +1588,12 @@ def _table_top(ev, args, x, *, first=None):
         idx, x = idx[keep], (x - s)[keep]
         sub = sub[:, keep]
     sel = np.nonzero(ok)[0]
-    if sel.size:  # the undamped indicator there: D with u = g = 0 (the same derived form)
+    if 2 * sel.size > x0.size:  # the undamped indicator there: D with u = g = 0 (the same
+        # derived form), at every point at once where most are taken (no gathers; NaN elsewhere)
+        zero = np.zeros(x0.size)
+        d0 = _plain_both()(top, args[0], args[1], zero, args[3], zero, args[-1])
+        ok &= np.asarray(d0, float) > 1e-12
+    elif sel.size:
         c, r2, _u, beta, _g = args[:5, sel]
         zero = np.zeros(sel.size)
         d0 = _plain_both()(top[sel], c, r2, zero, beta, zero, args[-1, sel])
