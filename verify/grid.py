@@ -1159,8 +1159,8 @@ def _table_friction(orders, P, rho, system, friction, cols) -> dict:
     Both parities in one pass (:class:`_FrictionPlan`): the rows of the odd orders first, every
     set of points in that order, and each evaluation calls the form of each parity on its part
     (:class:`_ByParity`); the first step of the edges and of the maximisers from one evaluation
-    (the maximisers one slice of it); the results gathered in that order of the rows with masks, and put in the caller's order once
-    at the end."""
+    (the maximisers one slice of it); the results gathered in that order of the rows with masks,
+    and put in the caller's order once at the end."""
     no, N = len(orders), rho.size
     keys = ("lo", "hi", "top", "dtop", "undecided", "lo_doubt", "hi_doubt", "done")
     nc = cols.size
