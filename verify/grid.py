@@ -101,7 +101,14 @@ from .float_roots import (
     bisect_newton as _bisect_newton,
 )
 from .inputs import InputError, as_damping, as_depth, as_orders, as_quality
-from .params import NEAR_CRITICAL, NormalParams, exact_fraction, normal_params, trace_params
+from .params import (
+    NEAR_CRITICAL,
+    NormalParams,
+    exact_fraction,
+    indicator_params,
+    normal_params,
+    trace_params,
+)
 
 __all__ = [
     "boundary_grid",
@@ -1197,8 +1204,10 @@ def _table_friction(orders, P, rho, system, friction, cols) -> dict:
         return args
 
     # results in the plan's order of the rows
-    LO, HI, TOP, DTOP = (np.full((no, nc), np.nan) for _ in range(4))
-    LOD, HID, DONE = (np.zeros((no, nc), bool) for _ in range(3))
+    # (each kind of result one array, put in the caller's order of the rows at once)
+    floats, flags = np.full((4, no, nc), np.nan), np.zeros((3, no, nc), bool)
+    LO, HI, TOP, DTOP = floats
+    LOD, HID, DONE = flags
     with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
         pair = np.isfinite(lo0) & np.isfinite(hi0) & (lo0 < hi0)
         tmask = np.isfinite(top0) & ~pair & ~near
@@ -1278,14 +1287,17 @@ def _table_friction(orders, P, rho, system, friction, cols) -> dict:
             ok = _no_interval(oddrow[ri], crow[ri], *np.take(pars[:4], ci, axis=1))
             DONE[ri[ok], ci[ok]] = True
     inv = plan.inverse
+    floats, flags = floats[:, inv], flags[:, inv]
+    got = dict(zip(("lo", "hi", "top", "dtop"), floats, strict=True))
+    got.update(zip(("lo_doubt", "hi_doubt", "done"), flags, strict=True))
     out = {}
-    for key, got in zip(keys, (LO, HI, TOP, DTOP, None, LOD, HID, DONE), strict=True):
-        if full and got is not None:
-            out[key] = got[inv]
+    for key in keys:
+        if full and key in got:
+            out[key] = got[key]
             continue
         out[key] = blank(key)
-        if got is not None:
-            out[key][:, cols] = got[inv]
+        if key in got:
+            out[key][:, cols] = got[key]
     return out
 
 
@@ -1938,9 +1950,9 @@ def _confirm_at(n, m, Qf, damping, system, edges, refine, consts):
     form = _arb_indicator(n % 2)
     out = []
     half_pi, pi, scales = consts
-    P = normal_params(m, Qf, damping, _ARB, system)
-    n2, w = arb(n) / 2, P.w
-    args = (n * half_pi, P.r2, P.u, P.beta, P.g)
+    r2, u, beta, g, w = indicator_params(m, Qf, damping, _ARB, system)
+    n2 = arb(n) / 2
+    args = (n * half_pi, r2, u, beta, g)
     for T, first in ((lo, -1), (hi, 1)):
         for again in (refine, False):
             ends = []
