@@ -101,7 +101,14 @@ from .float_roots import (
     bisect_newton as _bisect_newton,
 )
 from .inputs import InputError, as_damping, as_depth, as_orders, as_quality
-from .params import NEAR_CRITICAL, NormalParams, exact_fraction, normal_params, trace_params
+from .params import (
+    NEAR_CRITICAL,
+    NormalParams,
+    exact_fraction,
+    indicator_params,
+    normal_params,
+    trace_params,
+)
 
 __all__ = [
     "boundary_grid",
@@ -1158,16 +1165,19 @@ def _table_friction(orders, P, rho, system, friction, cols) -> dict:
 
     Both parities in one pass (:class:`_FrictionPlan`): the rows of the odd orders first, every
     set of points in that order, and each evaluation calls the form of each parity on its part
-    (:class:`_ByParity`); the first step of the edges and of the maximisers from one evaluation;
-    the results gathered in that order of the rows with masks, and put in the caller's order once
-    at the end."""
+    (:class:`_ByParity`); the first step of the edges and of the maximisers from one evaluation
+    (the maximisers one slice of it); the results gathered in that order of the rows with masks,
+    and put in the caller's order once at the end."""
     no, N = len(orders), rho.size
     keys = ("lo", "hi", "top", "dtop", "undecided", "lo_doubt", "hi_doubt", "done")
     nc = cols.size
     full = nc == N  # (then cols is every column, in order)
-    out = {k: np.full((no, N), np.nan) if k in keys[:4] else np.zeros((no, N), bool) for k in keys}
+
+    def blank(key):
+        return np.full((no, N), np.nan) if key in keys[:4] else np.zeros((no, N), bool)
+
     if nc == 0:
-        return out
+        return {key: blank(key) for key in keys}
     plan = _friction_plan(system, orders, friction)
     R1, crow, oddrow = plan.n_odd, plan.c, plan.odd
     start = np.empty((nc, 3 * no))
@@ -1194,49 +1204,48 @@ def _table_friction(orders, P, rho, system, friction, cols) -> dict:
         return args
 
     # results in the plan's order of the rows
-    LO, HI, TOP, DTOP = (np.full((no, nc), np.nan) for _ in range(4))
-    LOD, HID, DONE = (np.zeros((no, nc), bool) for _ in range(3))
+    # (each kind of result one array, put in the caller's order of the rows at once)
+    floats, flags = np.full((4, no, nc), np.nan), np.zeros((3, no, nc), bool)
+    LO, HI, TOP, DTOP = floats
+    LOD, HID, DONE = flags
     with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
         pair = np.isfinite(lo0) & np.isfinite(hi0) & (lo0 < hi0)
         tmask = np.isfinite(top0) & ~pair & ~near
         pr, pc = np.nonzero(pair)  # (row-major: the odd orders' entries first)
         tr, tc = np.nonzero(tmask)
         k, kt = pr.size, tr.size
-        k1, t1 = int(np.searchsorted(pr, R1)), int(np.searchsorted(tr, R1))
+        k1 = int(np.searchsorted(pr, R1))
         k0 = k - k1
+        E = 2 * k1 + kt  # where the edges of the even orders start
+        tsl = slice(2 * k1, E)  # the maximisers
+        moving = None
+        high = np.zeros(0, bool)
         if k + kt:
             # one evaluation for the first step of both edges where the four nodes have the
             # interval and of the maximiser where they all lack it: the points [lower, upper,
-            # maximiser] of the odd orders, then of the even
+            # maximiser] of the odd orders, then [maximiser, lower, upper] of the even (each
+            # parity one slice of the call, the maximisers one slice of the result: no copies)
             lo_p, hi_p, top_t = lo0[pair], hi0[pair], top0[tmask]
-
-            def order(p, q, r):  # [p, q, r] of the odd orders, then of the even
-                return np.concatenate([p[:k1], q[:k1], r[:t1], p[k1:], q[k1:], r[t1:]])
-
-            x_all = order(lo_p, hi_p, top_t)
-            args_all = gather(order(pr, pr, tr), order(pc, pc, tc))
-            first = ev(x_all, *args_all)
-            odd_n = 2 * k1 + t1
-            e_sl = (slice(0, 2 * k1), slice(odd_n, odd_n + 2 * k0))
-            t_sl = (slice(2 * k1, odd_n), slice(odd_n + 2 * k0, None))
-
-            def part(a, sls):
-                return np.concatenate([a[..., sl] for sl in sls], axis=-1)
-
-        moving = None
-        if k:
-            psub, x0 = part(args_all, e_sl), part(x_all, e_sl)
-            sign = np.ones(2 * k)
-            sign[k1 : 2 * k1] = -1.0
-            sign[2 * k1 + k0 :] = -1.0
-            root, doubt, good, (moving, xm) = _table_edges(
-                ev, psub, x0, sign, first=tuple(part(f, e_sl) for f in first), left=True
+            cat = np.concatenate
+            x_all = cat([lo_p[:k1], hi_p[:k1], top_t, lo_p[k1:], hi_p[k1:]])
+            args_all = gather(
+                cat([pr[:k1], pr[:k1], tr, pr[k1:], pr[k1:]]),
+                cat([pc[:k1], pc[:k1], tc, pc[k1:], pc[k1:]]),
             )
-        high = np.zeros(0, bool)
+            first = ev(x_all, *args_all)
+        if k:
+            # the edges (sign 0: the maximisers' points, not taken)
+            sign = np.ones(x_all.size)
+            sign[k1 : 2 * k1] = -1.0
+            sign[tsl] = 0.0
+            sign[E + k0 :] = -1.0
+            root, doubt, good, (moving, xm) = _table_edges(
+                ev, args_all, x_all, sign, first=first, left=True
+            )
         if kt:
-            tsub = part(args_all, t_sl)
+            tsub = args_all[:, tsl]
             top, dtop, ok, high, (curv, third) = _table_top(
-                ev, tsub, part(x_all, t_sl), first=tuple(part(f, t_sl) for f in first)
+                ev, tsub, x_all[tsl], first=tuple(f[tsl] for f in first)
             )
             TOP[tmask] = np.where(ok, top, np.nan)
             DTOP[tmask] = np.where(ok, dtop, np.nan)
@@ -1244,10 +1253,10 @@ def _table_friction(orders, P, rho, system, friction, cols) -> dict:
         if high.any() or (moving is not None and moving.size):
             # an interval whose edges the tables did not give (split at the maximiser), and the
             # edges that one step did not converge: more steps, in the same calls
-            hsub = tsub[:, high] if kt else psub[:, :0]
+            hsub = tsub[:, high] if kt else args_all[:, :0]
             hx = (top[high], dtop[high], curv[high]) if kt else (np.zeros(0),) * 3
             h3 = third[high] if kt else None
-            extra = None if moving is None else (psub[:, moving], xm, sign[moving])
+            extra = None if moving is None else (args_all[:, moving], xm, sign[moving])
             lo, hi, lo_d, hi_d, ok, more = _table_split(ev, hsub, *hx, extra=extra, third=h3)
             if moving is not None:
                 root[moving], doubt[moving], good[moving] = more
@@ -1260,8 +1269,8 @@ def _table_friction(orders, P, rho, system, friction, cols) -> dict:
                 DONE.flat[at] = True
         if k:
             # the edges in the entries' order (that of the mask): [odd orders, even orders]
-            lp = np.concatenate([np.arange(k1), np.arange(2 * k1, 2 * k1 + k0)])
-            hp = np.concatenate([np.arange(k1, 2 * k1), np.arange(2 * k1 + k0, 2 * k)])
+            lp = np.concatenate([np.arange(k1), np.arange(E, E + k0)])
+            hp = np.concatenate([np.arange(k1, 2 * k1), np.arange(E + k0, E + 2 * k0)])
             lo, hi = root[lp], root[hp]
             ok = good[lp] & good[hp] & (lo < hi)
             gap = np.maximum(np.abs(crow[pr] + hi), 1.0)
@@ -1278,13 +1287,17 @@ def _table_friction(orders, P, rho, system, friction, cols) -> dict:
             ok = _no_interval(oddrow[ri], crow[ri], *np.take(pars[:4], ci, axis=1))
             DONE[ri[ok], ci[ok]] = True
     inv = plan.inverse
-    for key, got in zip(keys, (LO, HI, TOP, DTOP, None, LOD, HID, DONE), strict=True):
-        if got is None:
+    floats, flags = floats[:, inv], flags[:, inv]
+    got = dict(zip(("lo", "hi", "top", "dtop"), floats, strict=True))
+    got.update(zip(("lo_doubt", "hi_doubt", "done"), flags, strict=True))
+    out = {}
+    for key in keys:
+        if full and key in got:
+            out[key] = got[key]
             continue
-        if full:
-            out[key] = got[inv]
-        else:
-            out[key][:, cols] = got[inv]
+        out[key] = blank(key)
+        if key in got:
+            out[key][:, cols] = got[key]
     return out
 
 
@@ -1458,29 +1471,30 @@ def _f2_peak(form, x1, x2, r2, u, beta, g, *, theta=None, odd=None):
     ``sin(theta)^2`` there (the form with ``r2 = u = 0``), in the same call: ``(P, S, sin^2)``.
     ``odd``: ``form`` is :func:`_plain_both`, and this is its mask of the odd orders."""
     k = x1.size
-    zero = np.zeros(k)
     q = 2.0 / math.pi
     y1, y2 = beta * x1 * q, beta * x2 * q  # the ends in units of pi/2
     j1, j2 = np.floor(y1 * (1 - 1e-12)), np.floor(y2 * (1 + 1e-12))
     mid = j2 / (q * beta)  # the multiple of pi/2 inside (where there is one)
-    cat = np.concatenate
     blocks = 4 if theta is None else 5
-    args = (
-        np.zeros(4 * k) if theta is None else cat([np.zeros(4 * k), theta]),
-        cat([x1, x2, mid, x1, x1][:blocks]),
-        cat([r2, r2, r2, zero, zero][:blocks]),
-        cat([zero, zero, zero, u, zero][:blocks]),
-        cat([beta] * blocks),
-        cat([g] * blocks),
-    )
-    got = form(*args) if odd is None else form(*args, cat([odd] * blocks))
-    got = np.asarray(got, float)
-    ends = np.maximum(got[:k], got[k : 2 * k])
-    ends = np.where(j2 == j1, ends, np.maximum(ends, got[2 * k : 3 * k]))
+    # the evaluations point by point (row j: those of point j): with the points' parities
+    # sorted, each parity is one slice of the call
+    th, x, rr = np.zeros((k, blocks)), np.empty((k, blocks)), np.zeros((k, blocks))
+    x[:, 0], x[:, 1], x[:, 2], x[:, 3:] = x1, x2, mid, x1[:, None]  # (no stack: its overhead)
+    rr[:, :3] = r2[:, None]
+    uu = np.zeros((k, blocks))
+    uu[:, 3] = u
+    if theta is not None:
+        th[:, 4] = theta
+    bb, gg = np.repeat(beta, blocks), np.repeat(g, blocks)
+    args = (th.ravel(), x.ravel(), rr.ravel(), uu.ravel(), bb, gg)
+    got = form(*args) if odd is None else form(*args, np.repeat(odd, blocks))
+    got = np.asarray(got, float).reshape(k, blocks)
+    ends = np.maximum(got[:, 0], got[:, 1])
+    ends = np.where(j2 == j1, ends, np.maximum(ends, got[:, 2]))
     peak = np.where((j2 - j1 <= 1) & (beta > 0), ends + 1e-9 * r2 * (1 + y2), r2)
     if theta is None:
-        return peak, -got[3 * k :]
-    return peak, -got[3 * k : 4 * k], -got[4 * k :]
+        return peak, -got[:, 3]
+    return peak, -got[:, 3], -got[:, 4]
 
 
 def _table_edges(ev, args, x, sign, steps: int = _TABLE_STEPS, *, first=None, left=False):
@@ -1491,7 +1505,8 @@ def _table_edges(ev, args, x, sign, steps: int = _TABLE_STEPS, *, first=None, le
     the window, with ``sign D`` increasing through the zero).  ``first``: the evaluation at ``x``
     (``ev(x, *args)``, done already); ``left=True``: also the indices of the points still moving
     after the last step and their next iterates.  ``args``: a 2-D array, one row per argument
-    (compacted as one)."""
+    (compacted as one).  A point of ``sign`` 0 is evaluated with the others but not iterated
+    (its results are not used)."""
     root = np.full(x.size, np.nan)
     doubt = np.zeros(x.size, bool)
     good = np.zeros(x.size, bool)
@@ -1520,7 +1535,7 @@ def _table_edges(ev, args, x, sign, steps: int = _TABLE_STEPS, *, first=None, le
             root[idx[j]] = r
             doubt[idx[j]] = ~(noise / (np.abs(slope) * at) <= DOUBT)
             good[idx[j]] = (sg[j] * slope > 0) & (np.abs(r) < _HALF_PI)
-        keep = ~done & np.isfinite(s)
+        keep = ~done & np.isfinite(s) & (sg != 0)
         if not keep.any():
             rest = (idx[:0], x[:0])
             break
@@ -1542,6 +1557,7 @@ def _table_top(ev, args, x, *, first=None):
     interval exists: :func:`_table_split` finds its edges).  ``first``: the evaluation at ``x``,
     done already.  ``ev`` is :func:`_indicator_both`, ``args`` a 2-D array, one row per argument
     (the last the mask of the odd orders)."""
+    x0 = x
     top = np.full(x.size, np.nan)
     dtop = np.full(x.size, np.nan)
     curv = np.full(x.size, np.nan)
@@ -1584,7 +1600,12 @@ def _table_top(ev, args, x, *, first=None):
         idx, x = idx[keep], (x - s)[keep]
         sub = sub[:, keep]
     sel = np.nonzero(ok)[0]
-    if sel.size:  # the undamped indicator there: D with u = g = 0 (the same derived form)
+    if 2 * sel.size > x0.size:  # the undamped indicator there: D with u = g = 0 (the same
+        # derived form), at every point at once where most are taken (no gathers; NaN elsewhere)
+        zero = np.zeros(x0.size)
+        d0 = _plain_both()(top, args[0], args[1], zero, args[3], zero, args[-1])
+        ok &= np.asarray(d0, float) > 1e-12
+    elif sel.size:
         c, r2, _u, beta, _g = args[:5, sel]
         zero = np.zeros(sel.size)
         d0 = _plain_both()(top[sel], c, r2, zero, beta, zero, args[-1, sel])
@@ -1696,6 +1717,15 @@ _PLACES = np.arange(1, 16, dtype=float)[:, None]
 _SCALES = 10.0**_PLACES
 
 
+def _decimal_fraction(x: float) -> Fraction:
+    """The shortest decimal of ``x`` (``0 < x < 1``) as a Fraction: ``Fraction(repr(x))``, from
+    the digits of a plain ``0.ddd`` form without the parser (the exponent form through it)."""
+    text = repr(x)
+    if text[:2] == "0." and text[2:].isdigit():
+        return Fraction(int(text[2:]), 10 ** (len(text) - 2))
+    return Fraction(text)
+
+
 def _one_minus_decimals(x) -> np.ndarray:
     """:func:`_one_minus_decimal` of every element of ``x`` (doubles ``1/2 <= x < 1``), vectorised:
     the shortest decimal of ``x`` with at most 15 places is ``d = 1 - E/10^L`` for the least
@@ -1747,7 +1777,7 @@ class _Depths:
 
     def exact(self, j: int) -> Fraction:
         """The exact depth: the shortest decimal of a float input, as in the rest of the API."""
-        return Fraction(repr(float(self.m[j]))) if self._exact is None else self._exact[j]
+        return _decimal_fraction(float(self.m[j])) if self._exact is None else self._exact[j]
 
     def exact_all(self, idx) -> list:
         return [self.exact(int(j)) for j in idx]
@@ -1920,9 +1950,9 @@ def _confirm_at(n, m, Qf, damping, system, edges, refine, consts):
     form = _arb_indicator(n % 2)
     out = []
     half_pi, pi, scales = consts
-    P = normal_params(m, Qf, damping, _ARB, system)
-    n2, w = arb(n) / 2, P.w
-    args = (n * half_pi, P.r2, P.u, P.beta, P.g)
+    r2, u, beta, g, w = indicator_params(m, Qf, damping, _ARB, system)
+    n2 = arb(n) / 2
+    args = (n * half_pi, r2, u, beta, g)
     for T, first in ((lo, -1), (hi, 1)):
         for again in (refine, False):
             ends = []

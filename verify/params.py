@@ -316,6 +316,22 @@ def normal_params(
     return NormalParams(B.sqrt(r2), r2, u, beta, w, g, w0, diff / (w * w0), 2 * nu1 / nsum)
 
 
+def indicator_params(m, Q, damping: str, B: Backend, system: System = PAPER) -> tuple:
+    """``(r2, u, beta, g, w)`` of :func:`normal_params` (the parameters of the indicator ``D``
+    and ``omega_av/omega0``), the same numbers; for exact ``m``, ``Q`` in ``arb`` in the exact
+    model of the paper's system without the other fields (:func:`_exact_arb`)."""
+    if (
+        B.name == "arb"
+        and damping != "paper"
+        and type(m) is Fraction
+        and type(Q) is Fraction
+        and (system is PAPER or system.is_paper)
+    ):
+        return _exact_arb(m, Q, full=False)
+    P = normal_params(m, Q, damping, B, system)
+    return P.r2, P.u, P.beta, P.g, P.w
+
+
 def _exact_rational(m: Fraction, Q: Fraction, B: Backend) -> NormalParams:
     """The exact model's parameters for exact ``m``, ``Q``: the formulas of the general branch of
     :func:`normal_params`, with their rational parts combined exactly first (once per ``(m, Q)``,
@@ -356,13 +372,14 @@ def _exact_rational(m: Fraction, Q: Fraction, B: Backend) -> NormalParams:
     )
 
 
-def _exact_arb(m: Fraction, Q: Fraction) -> NormalParams:
+def _exact_arb(m: Fraction, Q: Fraction, full: bool = True):
     """:func:`_exact_rational` in ``arb`` at the working precision, the same operations on the
     same roundings, without the back end's indirections: the rational parts cached by the
     integers of ``m`` and ``Q`` (a Fraction's hash costs more than the lookup), each lifted by one
     rounded division (:func:`_exact_lifts`), the small integers as exact balls (an ``arb`` with a
     Python int converts the int first: the same ball, at a cost), and the square roots as ``arb``
-    methods."""
+    methods.  ``full=False``: the indicator's parameters ``(r2, u, beta, g, w)`` alone (the same
+    balls), as :func:`indicator_params` takes them."""
     U1, U2, K, Uq, d, bq, iq, s2 = (
         arb(x) if type(x) is fmpq else arb(x[0]) / x[1] if x[1] != 1 else arb(x[0])
         for x in _exact_lifts(m.numerator, m.denominator, Q.numerator, Q.denominator)
@@ -376,6 +393,8 @@ def _exact_arb(m: Fraction, Q: Fraction) -> NormalParams:
     r2 = (U * U + dd) / den
     nsum = nu1 + nu2
     w = nsum * iq
+    if not full:
+        return r2, _ARB_FOUR * nu1 * nu2 / den, bq / (nsum * nsum), two / nsum, w
     s = s2.sqrt()
     w0 = ((one + s) / two).sqrt() / s  # omega_av/omega0 without friction (see omega_av)
     diff = (one / ((U1 + one).sqrt() + nu1) + one / ((U2 + one).sqrt() + nu2)) * iq
