@@ -138,7 +138,7 @@ def _halley_edge(
             step, K = math.inf, math.inf
         xn = x - step
         s = abs(step)
-        if math.isfinite(xn) and K * (s * s * s) <= 2e-16 * abs(xn) and lo <= xn <= hi:
+        if K * (s * s * s) <= 2e-16 * abs(xn) and lo <= xn <= hi and math.isfinite(xn):
             return xn
         if not lo < xn < hi:
             xn = 0.5 * (lo + hi)

@@ -746,7 +746,7 @@ def _lean_normal(req: Request, bits: int) -> Boundary | None:
         shift = n * math.pi / 2
         need = (bits + 4) // 2 + 1
         big = n * 1e-59
-        Tp = arb(tp)
+        Tp = arb(tp) if need > _START_BITS else None  # (the steps' bracket: none at few digits)
         # the lower edge: a zero of D; the upper one: of -D (quick_root's F and F')
         N1 = N2 = None
         for x0, left, right in ((lo, A, Tp), (hi, Tp, B)):
