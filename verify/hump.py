@@ -30,6 +30,7 @@ from collections.abc import Callable
 from dataclasses import dataclass
 from fractions import Fraction
 from functools import cache, partial
+from operator import itemgetter
 
 from flint import arb, ctx
 
@@ -61,7 +62,7 @@ from .float_stage import float_edges, normal_float_edges, normal_float_stage
 from .params import NEAR_ONE, NormalParams, exact_arb_values, normal_params, trace_params
 from .request import Request
 from .result import Boundary, from_balls
-from .system_params import normal_jets
+from .system_params import normal_jets, normal_values
 
 __all__ = [
     "hump_normal",
@@ -677,6 +678,7 @@ def _hump_near_one(n, P, fl, b, C, E0, check: bool = True) -> _Hump:
 _LEAN_BITS = 4096
 _START_BITS = 50  # quick_root's start_bits
 _START_RAD = 2.0 ** (4 - _START_BITS)  # the relative radius of the interval Newton test's ball
+_LEAN_FIELDS = itemgetter("r", "r2", "u", "beta", "w", "g", "dinv", "bm")
 
 
 def _lean_normal(req: Request, bits: int) -> Boundary | None:
@@ -695,13 +697,18 @@ def _lean_normal(req: Request, bits: int) -> Boundary | None:
     old = ctx.prec
     try:
         # the parameters and c = n pi/2 at the proof's precision, as hump_normal's AtPrecision
-        # objects compute them (12 bits above it); the paper's exact model without the
-        # NormalParams object (the same balls)
+        # objects compute them (12 bits above it), without the NormalParams object (the same
+        # balls): the paper's exact model, and the other members of the family
         ctx.prec = top + 12
-        if req.system is PAPER and req.damping != "paper":
-            r, r2, u, beta, w, g, _, dinv, bm = exact_arb_values(req.m, req.Q)
+        system, m, Q = req.system, req.m, req.Q
+        if system is not PAPER and not system.is_paper:  # normal_params' routes, in its order
+            r, r2, u, beta, w, g, dinv, bm = _LEAN_FIELDS(
+                normal_values(system, m, Q, req.damping, _ARB)
+            )
+        elif req.damping != "paper" and type(m) is Fraction and type(Q) is Fraction:
+            r, r2, u, beta, w, g, _, dinv, bm = exact_arb_values(m, Q)
         else:
-            pt = normal_params(req.m, req.Q, req.damping, _ARB, req.system)
+            pt = normal_params(m, Q, req.damping, _ARB, system)
             r, r2, u, beta, w, g, dinv, bm = pt.r, pt.r2, pt.u, pt.beta, pt.w, pt.g, pt.dinv, pt.bm
         c = arb.pi() * n / 2
         if float(bm) < NEAR_ONE:
