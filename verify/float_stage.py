@@ -114,6 +114,7 @@ def _halley_edge(
     (f, f', f'')``; ``first`` = its value at the start ``x``), where ``f(lo) < 0 < f(hi)`` if
     ``increasing``, else the reverse; the stopping rule of :func:`float_edge`."""
     f, d1, d2 = first
+    isfinite = math.isfinite
     for _ in range(100):
         # the bracket moves by the sign of f (of -f where decreasing); the step needs no sign:
         # (-f)/(-f') and (-f'')/(-f') are f/f' and f''/f' exactly
@@ -138,11 +139,12 @@ def _halley_edge(
             step, K = math.inf, math.inf
         xn = x - step
         s = abs(step)
-        if K * (s * s * s) <= 2e-16 * abs(xn) and lo <= xn <= hi and math.isfinite(xn):
+        if K * (s * s * s) <= 2e-16 * abs(xn) and lo <= xn <= hi and isfinite(xn):
             return xn
         if not lo < xn < hi:
             xn = 0.5 * (lo + hi)
-        if hi - lo <= 4e-16 * max(abs(xn), 1e-300):
+        s = abs(xn)  # max(|xn|, 1e-300) written out (xn is finite here: inside the bracket)
+        if hi - lo <= 4e-16 * (s if s >= 1e-300 else 1e-300):
             return xn
         x = xn
         f, d1, d2 = f012(x, *args)
