@@ -688,8 +688,9 @@ def _lean_normal(req: Request, bits: int) -> Boundary | None:
     refined and proven by the steps of :func:`verify.certify.quick_root` (the same balls: the
     parameters at each precision as ``hump_normal``'s ``args`` gives them), the shape by ``D''
     < 0`` on the whole bracket (the first test of :func:`_unimodal_shape`: ``-D''/2 > 0`` in the
-    sines, else ``D'' < 0``) -- and the arithmetic of :func:`verify.enclosure.edges_result`.  ``None`` where a step does not succeed at once; the
-    caller then runs the general path, which repeats these steps and goes on from there."""
+    sines, else ``D'' < 0``) -- and the arithmetic of :func:`verify.enclosure.edges_result`.
+    ``None`` where a step does not succeed at once; the caller then runs the general path, which
+    repeats these steps and goes on from there."""
     n = req.order
     D0, D1, D2, D01, E0, Bend = _normal_forms(-1 if n % 2 else 1)
     work = bits + QUICK_GUARD
