@@ -243,6 +243,12 @@ def as_quality(Q) -> Fraction | mpmath.mpf | None:
     no friction), exact like :func:`as_depth` (an mpmath ``mpf`` is kept)."""
     if Q is None:
         return None
+    kind = type(Q)
+    if kind is int:  # the common cases first, by exact type (as as_number); else as below
+        if _quality_ok(Q, 1):
+            return Fraction(Q)
+    elif kind is Fraction and _quality_ok(Q.numerator, Q.denominator):
+        return Q
     if isinstance(Q, str) and Q.strip().lower() in ("none", "inf", "infinity"):
         return None
     lo, hi = Q_RANGE

@@ -21,7 +21,7 @@ from fractions import Fraction
 
 import mpmath
 import pytest
-from flint import arb
+from flint import arb, ctx
 
 import verify.hump as hump
 from analytic.system import system
@@ -192,3 +192,22 @@ def test_the_benchmark_case_takes_the_fast_path(monkeypatch):
         b = boundary(3, "3/10", Q=7, digits=digits)
         assert b.exists and b.certified
     assert calls["unimodal"] == [True, True] and calls["signs"] == 0
+
+
+@pytest.mark.parametrize("parity", [-1, 1])
+def test_bend_is_minus_half_the_curvature(parity):
+    """:func:`verify.derived.indicator_bend` is ``-D''/2`` (points: the two forms agree to the
+    working precision), and over the benchmark's whole bracket its enclosure proves the concavity
+    that the short path tests first (and meets ``D''``'s own, halved)."""
+    D2, bend = hump._normal_forms(parity)[2], hump._normal_forms(parity)[5]
+    with ctx.workprec(200):
+        c = arb.pi() * (3 if parity == -1 else 2) / 2
+        args = (c, arb("0.19"), arb("0.81"), arb("0.154"), arb("0.069"))
+        for t in ("-0.4", "-0.1", "0", "0.2", "0.35"):
+            x = arb(t)
+            diff = bend(x, *args) + D2(x, *args) / 2
+            assert diff.contains(0) and abs(diff) < arb(2) ** -190
+    with ctx.workprec(64):
+        X = arb(-0.3466).union(arb(0.3155))
+        got, ref = bend(X, *args), -D2(X, *args) / 2
+        assert got > 0 and got.overlaps(ref)

@@ -7,8 +7,9 @@ bracket ``[a, b]``, the maximiser ``top`` of the indicator ``D`` (with ``dtop = 
 two edges ``lo``, ``hi`` (NaN if ``D(top) <= 0``) -- by the same steps as the vectorised
 :func:`verify.grid.damped_normal` (safeguarded Halley on the two edge equations, safeguarded Newton
 on ``D'`` and on ``D``), on Python floats: for one point a numpy array of one element costs more
-in bookkeeping than the arithmetic.  Nothing here is proven; the certified solver checks the
-bracket and encloses every root itself (:mod:`verify.hump`).
+in bookkeeping than the arithmetic.  :func:`float_stage` and :func:`float_edges` are the same on
+the parameters as floats, returning a tuple.  Nothing here is proven; the certified solver checks
+the bracket and encloses every root itself (:mod:`verify.hump`).
 """
 
 from __future__ import annotations
@@ -19,7 +20,14 @@ from functools import cache
 from .derived import edge_equation, indicator
 from .enclosure import sgn_of
 
-__all__ = ["float_edge", "normal_float_stage", "normal_float_edges", "bisect_newton"]
+__all__ = [
+    "float_edge",
+    "float_stage",
+    "float_edges",
+    "normal_float_stage",
+    "normal_float_edges",
+    "bisect_newton",
+]
 
 
 @cache
@@ -106,6 +114,7 @@ def _halley_edge(
     (f, f', f'')``; ``first`` = its value at the start ``x``), where ``f(lo) < 0 < f(hi)`` if
     ``increasing``, else the reverse; the stopping rule of :func:`float_edge`."""
     f, d1, d2 = first
+    isfinite = math.isfinite
     for _ in range(100):
         # the bracket moves by the sign of f (of -f where decreasing); the step needs no sign:
         # (-f)/(-f') and (-f'')/(-f') are f/f' and f''/f' exactly
@@ -130,11 +139,12 @@ def _halley_edge(
             step, K = math.inf, math.inf
         xn = x - step
         s = abs(step)
-        if math.isfinite(xn) and K * (s * s * s) <= 2e-16 * abs(xn) and lo <= xn <= hi:
+        if K * (s * s * s) <= 2e-16 * abs(xn) and lo <= xn <= hi and isfinite(xn):
             return xn
         if not lo < xn < hi:
             xn = 0.5 * (lo + hi)
-        if hi - lo <= 4e-16 * max(abs(xn), 1e-300):
+        s = abs(xn)  # max(|xn|, 1e-300) written out (xn is finite here: inside the bracket)
+        if hi - lo <= 4e-16 * (s if s >= 1e-300 else 1e-300):
             return xn
         x = xn
         f, d1, d2 = f012(x, *args)
@@ -143,7 +153,22 @@ def _halley_edge(
 
 def normal_float_stage(n: int, p) -> dict:
     """``dict(a, b, top, dtop, lo, hi)`` in ``theta`` for order ``n`` and float normal-form
-    parameters ``p`` (:class:`verify.params.NormalParams` of floats).
+    parameters ``p`` (:class:`verify.params.NormalParams` of floats): :func:`float_stage` as a
+    dict."""
+    return dict(zip(_KEYS, float_stage(n, *_floats(p)), strict=True))
+
+
+_KEYS = ("a", "b", "top", "dtop", "lo", "hi")
+
+
+def _floats(p) -> tuple:
+    """``r, r^2, 1 - r^2, beta, g`` of ``p`` as floats."""
+    return float(p.r), float(p.r2), float(p.u), float(p.beta), float(p.g)
+
+
+def float_stage(n: int, r: float, r2: float, u: float, beta: float, g: float) -> tuple:
+    """``(a, b, top, dtop, lo, hi)`` in ``theta`` for order ``n`` and the float normal-form
+    parameters ``r, r^2, 1 - r^2, beta, g``.
 
     The steps of :func:`verify.grid.damped_normal` on one point: the maximiser by Newton on
     ``D'`` from where the secant of ``D'`` through the bracket's ends vanishes (to ``1e-12``:
@@ -151,7 +176,6 @@ def normal_float_stage(n: int, p) -> dict:
     method, started where the parabola through the maximiser with the curvature there vanishes
     (or at the bracket's end, where that start falls outside)."""
     edge, d012, d12 = _forms(n % 2 == 1)
-    r, r2, u, beta, g = (float(x) for x in (p.r, p.r2, p.u, p.beta, p.g))
     t1 = float_edge(edge, n, 1, r, beta)
     t2 = float_edge(edge, n, -1, r, beta)
     a, b = min(t1, t2), max(t1, t2)
@@ -185,26 +209,31 @@ def normal_float_stage(n: int, p) -> dict:
                 x0, first = end, at_end
             ends.append(_halley_edge(d012, u0, v0, x0, inc, first, args))
         lo, hi = ends
-    return {"a": a, "b": b, "top": top, "dtop": dtop, "lo": lo, "hi": hi}
+    return a, b, top, dtop, lo, hi
 
 
 def normal_float_edges(n: int, p) -> dict:
-    """As :func:`normal_float_stage`, cheaper where the interval is not tiny: ``top`` is then the
+    """As :func:`normal_float_stage`, cheaper where the interval is not tiny (:func:`float_edges`
+    as a dict)."""
+    return dict(zip(_KEYS, float_edges(n, *_floats(p)), strict=True))
+
+
+def float_edges(n: int, r: float, r2: float, u: float, beta: float, g: float) -> tuple:
+    """As :func:`float_stage`, cheaper where the interval is not tiny: ``top`` is then the
     middle of the bracket ``[a, b]`` where ``D > 0`` there (``dtop = D(top)``), not the maximiser,
     and each edge is found by Halley's method started at a root of the parabola through that
     point with the slope and curvature there.  Elsewhere (``D <= 0`` at the middle, or ``D'' >= 0``
-    there) it is :func:`normal_float_stage`.  What the certified solver needs of ``top`` is a
-    point between the edges where ``D > 0``."""
+    there) it is :func:`float_stage`.  What the certified solver needs of ``top`` is a point
+    between the edges where ``D > 0``."""
     edge, d012, _ = _forms(n % 2 == 1)
-    r, beta = float(p.r), float(p.beta)
     t1 = float_edge(edge, n, 1, r, beta)
     t2 = float_edge(edge, n, -1, r, beta)
     a, b = (t1, t2) if t1 < t2 else (t2, t1)
-    args = (n * math.pi / 2, float(p.r2), float(p.u), beta, float(p.g))
+    args = (n * math.pi / 2, r2, u, beta, g)
     mid = 0.5 * (a + b)
     dm, d1, d2 = d012(mid, *args)
     if not (dm > 0 and d2 < 0 and a < mid < b):
-        return normal_float_stage(n, p)
+        return float_stage(n, r, r2, u, beta, g)
     # the parabola dm + d1 t + d2 t^2/2: one root either side of t = 0 (dm > 0 > d2)
     disc = math.sqrt(d1 * d1 - 2.0 * d2 * dm)
     q = -0.5 * (d1 + math.copysign(disc, d1))  # the roots q/(d2/2) and dm/q, without cancellation
@@ -222,4 +251,4 @@ def normal_float_edges(n: int, p) -> dict:
     if not mid < x0 < b:
         x0 = 0.5 * (mid + b)
     hi = _halley_edge(d012, mid, b, x0, False, d012(x0, *args), args)
-    return {"a": a, "b": b, "top": mid, "dtop": dm, "lo": lo, "hi": hi}
+    return a, b, mid, dm, lo, hi

@@ -50,17 +50,18 @@ from .derived import (
     backend,
     edge_equation,
     indicator,
+    indicator_bend,
     near_one_forms,
     order1_forms,
     trace_indicator,
     trace_window,
 )
 from .enclosure import AtPrecision, edges_result, no_interval, sgn_of, theta_floor
-from .float_stage import normal_float_edges, normal_float_stage
-from .params import NEAR_ONE, NormalParams, normal_params, trace_params
+from .float_stage import float_edges, normal_float_edges, normal_float_stage
+from .params import NEAR_ONE, NormalParams, exact_arb_values, normal_params, trace_params
 from .request import Request
 from .result import Boundary, from_balls
-from .system_params import normal_jets
+from .system_params import normal_jets, normal_tuple
 
 __all__ = [
     "hump_normal",
@@ -107,12 +108,16 @@ class _Hump:
     point: object = None
     #: ``(D, D')`` in one evaluation (shared subexpressions), where there is one
     DdD: Callable | None = None
+    #: ``-D''/2`` in a form whose enclosure of a wide ball is tighter and cheaper than ``D''``'s
+    #: (:func:`verify.derived.indicator_bend`), where there is one: the concavity test
+    bend: Callable | None = None
 
 
 def _unimodal_shape(h: _Hump, lo_root, hi_root, budget: int = 16) -> bool:
     """The shape from unimodality: the two root balls disjoint and inside ``(a, b)``, and
     ``[a, b]`` cut (bisection at 64 bits, at most ``budget`` sub-balls; often the whole bracket
-    at once) into pieces each ``cap`` (``D'' < 0``), ``up`` (``D' > 0``), ``down`` (``D' < 0``) or
+    at once) into pieces each ``cap`` (``D'' < 0``: ``-D''/2 > 0`` by ``bend`` where there is one,
+    else ``D'' < 0`` by ``d2D``), ``up`` (``D' > 0``), ``down`` (``D' < 0``) or
     ``neg`` (``D < 0``), where the ``neg`` pieces are at the two ends only (the others make one
     interval, the run) and no ``up`` piece lies right of a ``down`` one.
 
@@ -136,7 +141,7 @@ def _unimodal_shape(h: _Hump, lo_root, hi_root, budget: int = 16) -> bool:
             if count > budget:
                 return False
             X = u.union(v)  # u, v exact: a ball holding [u, v]
-            if h.d2D(X) < 0:
+            if (h.bend is not None and h.bend(X) > 0) or h.d2D(X) < 0:
                 labels.append("cap")
                 continue
             d1 = h.dD(X)
@@ -409,12 +414,14 @@ def _params_at(m, Q, damping, m_box, make):
 
 @cache
 def _normal_forms(parity: int) -> tuple:
-    """``D``, ``D'``, ``D''``, ``(D, D')`` and the undamped edge equation, compiled for arb."""
+    """``D``, ``D'``, ``D''``, ``(D, D')``, the undamped edge equation and ``-D''/2`` in the sines
+    (:func:`verify.derived.indicator_bend`), compiled for arb."""
     form = indicator(parity)
     return (
         *(form.compiled("arb", k) for k in (0, 1, 2)),
         form.compiled("arb", (0, 1)),
         edge_equation(parity).compiled("arb", 0),
+        indicator_bend(parity).compiled("arb", 0),
     )
 
 
@@ -437,7 +444,7 @@ def hump_normal(
     float stage is that of ``m`` (``float_stage``: computed already, a dict as
     :func:`verify.float_stage.normal_float_stage` returns, plus ``"bm"``)."""
     parity = -1 if n % 2 else 1  # the multiplier (analytic.stitching.Parity)
-    D0, D1, D2, D01, E0 = _normal_forms(parity)
+    D0, D1, D2, D01, E0, Bend = _normal_forms(parity)
     if jet:  # parameters as jets in m over the range (for the mean-value form, hump_box)
 
         def jets():
@@ -531,6 +538,7 @@ def hump_normal(
         dD=lambda t: D1(t, *args()),
         d2D=lambda t: D2(t, *args()),
         DdD=lambda t: D01(t, *args()),
+        bend=lambda t: Bend(t, *args()),
         a=a,
         b=b,
         top=fl["top"],
@@ -668,6 +676,7 @@ def _hump_near_one(n, P, fl, b, C, E0, check: bool = True) -> _Hump:
 #: bookkeeping is a negligible part of the work)
 _LEAN_BITS = 4096
 _START_BITS = 50  # quick_root's start_bits
+_START_RAD = 2.0 ** (4 - _START_BITS)  # the relative radius of the interval Newton test's ball
 
 
 def _lean_normal(req: Request, bits: int) -> Boundary | None:
@@ -676,60 +685,83 @@ def _lean_normal(req: Request, bits: int) -> Boundary | None:
     at once -- the bracket proven by the two evaluations with both signs, both float edges
     refined and proven by the steps of :func:`verify.certify.quick_root` (the same balls: the
     parameters at each precision as ``hump_normal``'s ``args`` gives them), the shape by ``D''
-    < 0`` on the whole bracket (the first test of :func:`_unimodal_shape`) -- and the arithmetic
-    of :func:`verify.enclosure.edges_result`.  ``None`` where a step does not succeed at once; the
-    caller then runs the general path, which repeats these steps and goes on from there."""
+    < 0`` on the whole bracket (the first test of :func:`_unimodal_shape`: ``-D''/2 > 0`` in the
+    sines, else ``D'' < 0``) -- and the arithmetic of :func:`verify.enclosure.edges_result`.
+    ``None`` where a step does not succeed at once; the caller then runs the general path, which
+    repeats these steps and goes on from there."""
     n = req.order
-    D0, D1, D2, D01, E0 = _normal_forms(-1 if n % 2 else 1)
+    D0, D1, D2, D01, E0, Bend = _normal_forms(-1 if n % 2 else 1)
     work = bits + QUICK_GUARD
     top = work if work > 80 else 80
     old = ctx.prec
     try:
         # the parameters and c = n pi/2 at the proof's precision, as hump_normal's AtPrecision
-        # objects compute them (12 bits above it)
+        # objects compute them (12 bits above it), without the NormalParams object (the same
+        # balls): the paper's exact model, and the other members of the family
         ctx.prec = top + 12
-        pt = normal_params(req.m, req.Q, req.damping, _ARB, req.system)
-        c = arb.pi() * n / 2
-        if float(pt.bm) < NEAR_ONE:
-            return None
-        fl = normal_float_edges(n, pt)
-        # the bracket (hump_normal's)
-        fa, fb = fl["a"], fl["b"]
-        span = max(fb - fa, 1e-300)
-        a = max(fa - max(span * 1e-6, abs(fa) * 1e-12, 1e-300), -_HALF_PI)
-        b = min(fb + max(span * 1e-6, abs(fb) * 1e-12, 1e-300), _HALF_PI)
-        A, B = arb(a), arb(b)  # floats: exact
-        near = (c, pt.r2, pt.u, pt.beta, pt.g)
-        cache = {}
-        c64, _, _, beta, _ = low = _lean_args(cache, 64, top, near, pt)
-        if low is near:
-            r = pt.r
+        system, m, Q = req.system, req.m, req.Q
+        if system is not PAPER and not system.is_paper:  # normal_params' routes, in its order
+            r, r2, u, beta, w, g, _, dinv, bm = normal_tuple(system, m, Q, req.damping, _ARB)
+        elif req.damping != "paper" and type(m) is Fraction and type(Q) is Fraction:
+            r, r2, u, beta, w, g, _, dinv, bm = exact_arb_values(m, Q)
         else:
+            pt = normal_params(m, Q, req.damping, _ARB, system)
+            r, r2, u, beta, w, g, dinv, bm = pt.r, pt.r2, pt.u, pt.beta, pt.w, pt.g, pt.dinv, pt.bm
+        c = arb.pi() * n / 2
+        if float(bm) < NEAR_ONE:
+            return None
+        beta_f = float(beta)
+        fa, fb, tp, dtop, lo, hi = float_edges(n, float(r), float(r2), float(u), beta_f, float(g))
+        # the bracket (hump_normal's, its max and min written out: the same floats where none
+        # is NaN; with a NaN the bracket's test fails there, and here)
+        if not (fa == fa and fb == fb):
+            return None
+        span = fb - fa
+        if span < 1e-300:
+            span = 1e-300
+        span *= 1e-6
+        pad, pad2 = abs(fa) * 1e-12, abs(fb) * 1e-12
+        a = fa - (span if span >= pad and span >= 1e-300 else pad if pad >= 1e-300 else 1e-300)
+        b = fb + (span if span >= pad2 and span >= 1e-300 else pad2 if pad2 >= 1e-300 else 1e-300)
+        if a < -_HALF_PI:
+            a = -_HALF_PI
+        if b > _HALF_PI:
+            b = _HALF_PI
+        A, B = arb(a), arb(b)  # floats: exact
+        near = (c, r2, u, beta, g)
+        if top <= 192:  # 2 * 64 + 64: args(64) takes the parameters as they are
+            low, cache = near, None
+        else:
+            cache = {}
+            low = _lean_args(cache, 64, top, near)
             ctx.prec = 76  # 64 + 12, as args(64)
-            r = +pt.r
+            r = +r
+        c64, _, _, beta64, _ = low
         ctx.prec = 64
-        sgn = _UNIT[sgn_of(n)]  # exact: the same balls as with the int
+        sgn = _SGN[n & 3]  # exact: the same balls as with the int
         if not (
-            E0(A, c64, sgn, _EPS_BOTH, r, beta) < 0 and E0(B, c64, sgn, _EPS_BOTH, r, beta) > 0
+            E0(A, c64, sgn, _EPS_BOTH, r, beta64) < _ZERO
+            and E0(B, c64, sgn, _EPS_BOTH, r, beta64) > _ZERO
         ):
             return None
-        lo, hi, tp = fl["lo"], fl["hi"], fl["top"]
-        if not (fl["dtop"] > 0 and a < lo < tp < hi < b):  # (NaN compares false)
+        if not (dtop > 0 and a < lo < tp < hi < b):  # (NaN compares false)
             return None
-        floor = theta_floor(bits, n)
         tol = pow2(-bits)
         shift = n * math.pi / 2
         need = (bits + 4) // 2 + 1
-        Tp = arb(tp)
-        balls = []
+        big = n * 1e-59
+        Tp = arb(tp) if need > _START_BITS else None  # (the steps' bracket: none at few digits)
         # the lower edge: a zero of D; the upper one: of -D (quick_root's F and F')
+        N1 = N2 = None
         for x0, left, right in ((lo, A, Tp), (hi, Tp, B)):
             x = arb(x0)
             acc = _START_BITS
             while acc < need:
                 acc = min(2 * acc - 8, need + 8)
                 prec = acc + 12
-                at = _lean_args(cache, prec, top, near, pt)
+                if cache is None:
+                    cache = {}
+                at = _lean_args(cache, prec, top, near)
                 ctx.prec = prec
                 # -D for the upper edge: the step f/d is the same ball (both negated exactly,
                 # the quotient rounded towards zero), and so are the tests
@@ -740,50 +772,63 @@ def _lean_normal(req: Request, bits: int) -> Boundary | None:
                 if not left < x < right:
                     return None
             ctx.prec = work
-            size = abs(x)
-            if floor > size:
-                size = floor
-            X = arb(x, (size * pow2(4 - acc)).abs_upper())
-            dX = D1(X, *near)  # of -D for the upper edge: the same quotient (see above)
+            if acc == _START_BITS and abs(x0) > big:
+                # x is the float start (no step taken) and |x| is above the floor: the radius
+                # |x| 2**(4 - acc) is an exact float, and the ball the one below
+                X = arb(x0, abs(x0) * _START_RAD)
+            else:
+                size = abs(x)
+                floor = theta_floor(bits, n)
+                if floor > size:
+                    size = floor
+                X = arb(x, (size * pow2(4 - acc)).abs_upper())
+            dX = D1(X, c, r2, u, beta, g)  # of -D for the upper edge: the same quotient (above)
             if _ZERO in dX or not dX.is_finite():  # (dX.contains(0), without converting 0)
                 return None
-            N = x - D0(x, *near) / dX
+            N = x - D0(x, c, r2, u, beta, g) / dX
             if not X.contains_interior(N):
                 return None
-            t = float(x)
-            s = min(abs(t), abs(t + shift))
-            # above n 1e-59 the floor (<= 3n 2**-201) and 1e-300 are below s (theta_scale)
-            want = arb(s) if s > n * 1e-59 else arb(max(s, floor, 1e-300))
-            if not N.rad() <= (want * tol).abs_lower():
+            t = float(x) if acc != _START_BITS else x0  # (x = arb(x0) where no step was taken)
+            s, s2 = abs(t), abs(t + shift)
+            if s2 < s:
+                s = s2
+            # above n 1e-59 the floor (<= 3n 2**-201) and 1e-300 are below s (theta_scale); the
+            # product of two exact balls, s and 2**-bits, is exact
+            want = arb(s) if s > big else arb(max(s, theta_floor(bits, n), 1e-300))
+            if not N.rad() <= want * tol:
                 return None
-            balls.append(N)
-        N1, N2 = balls
+            if N1 is None:
+                N1 = N
+            else:
+                N2 = N
         # the shape: D'' < 0 on all of [a, b] (_unimodal_shape's first test)
         ctx.prec = 64
-        if not (A < N1 and N1 < N2 and N2 < B and D2(A.union(B), *low) < 0):
+        if not (A < N1 and N1 < N2 and N2 < B):
+            return None
+        AB = A.union(B)
+        if not (Bend(AB, *low) > _ZERO or D2(AB, *low) < _ZERO):
             return None
         # edges_result at the roots' precision: the parameters as they are at the proof's
         # precision, else rounded from there (AtPrecision with rounded=True)
-        ctx.prec = work
-        if work == top:
-            w, dinv = pt.w, pt.dinv
-        else:  # the two fields used, as _rounded_params(pt, work) rounds them
+        if work != top:  # the two fields used, as _rounded_params(pt, work) rounds them
             ctx.prec = work + 12
-            w, dinv = +pt.w, +pt.dinv
-            ctx.prec = work
+            w, dinv = +w, +dinv
+        ctx.prec = work
         pi = arb.pi()
-        half = arb(n) * _HALF
+        half = _HALVES[n] if n < 8 else arb(n) * _HALF
         pw = pi * w
-        hd = half * dinv
-        Ts = [(half + N1 / pi) / w, (half + N2 / pi) / w]
-        ds = [N1 / pw + hd, N2 / pw + hd] if not dinv.is_zero() else [N1 / pw, N2 / pw]
-        for T in Ts:
-            if not T.rad() <= T.abs_lower() * tol:  # pragma: no cover - guard
-                return None
+        T1, T2 = (half + N1 / pi) / w, (half + N2 / pi) / w
+        if dinv.is_zero():
+            d1, d2 = N1 / pw, N2 / pw
+        else:
+            hd = half * dinv
+            d1, d2 = N1 / pw + hd, N2 / pw + hd
+        if not (T1.rad() <= T1.abs_lower() * tol and T2.rad() <= T2.abs_lower() * tol):
+            return None  # pragma: no cover - guard
     finally:
         ctx.prec = old
     return from_balls(
-        Ts + ds,
+        (T1, T2, d1, d2),
         order=n,
         m=req.m,
         Q=req.Q,
@@ -795,7 +840,7 @@ def _lean_normal(req: Request, bits: int) -> Boundary | None:
     )
 
 
-def _lean_args(cache: dict, prec: int, top: int, near: tuple, pt) -> tuple:
+def _lean_args(cache: dict, prec: int, top: int, near: tuple) -> tuple:
     """``(c, r2, u, beta, g)`` at ``prec`` bits for :func:`_lean_normal`, as hump_normal's
     ``args`` gives them: those of the proof's precision ``top`` as they are (``near``), or
     rounded from there (AtPrecision, rounded=True); kept in ``cache`` by precision.  Leaves
@@ -806,7 +851,7 @@ def _lean_args(cache: dict, prec: int, top: int, near: tuple, pt) -> tuple:
             got = near
         else:  # the fields used, each rounded as _rounded_params rounds it
             ctx.prec = prec + 12
-            got = (+near[0], +pt.r2, +pt.u, +pt.beta, +pt.g)
+            got = (+near[0], +near[1], +near[2], +near[3], +near[4])
         cache[prec] = got
     return got
 
@@ -827,7 +872,9 @@ def _rounded_params(pt, prec: int):
 
 _HALF_PI = math.pi / 2
 _UNIT = {1: arb(1), -1: arb(-1)}
+_SGN = tuple(_UNIT[sgn_of(k)] for k in range(4))  # by n mod 4
 _HALF = arb(0.5)
+_HALVES = tuple(arb(k) * _HALF for k in range(8))  # n/2 as edges_result computes it (exact)
 
 
 def normal_damped(req: Request) -> Boundary:

@@ -63,6 +63,7 @@ __all__ = [
     "NEAR_CRITICAL",
     "NEAR_ONE",
     "normal_params",
+    "exact_arb_values",
     "undamped_params",
     "trace_params",
     "omega_av",
@@ -373,16 +374,30 @@ def _exact_rational(m: Fraction, Q: Fraction, B: Backend) -> NormalParams:
 
 
 def _exact_arb(m: Fraction, Q: Fraction, full: bool = True):
-    """:func:`_exact_rational` in ``arb`` at the working precision, the same operations on the
-    same roundings, without the back end's indirections: the rational parts cached by the
+    """:func:`_exact_rational` in ``arb`` at the working precision (:func:`exact_arb_values`);
+    ``full=False``: the indicator's parameters ``(r2, u, beta, g, w)`` alone (the same balls), as
+    :func:`indicator_params` takes them."""
+    if not full:
+        return exact_arb_values(m, Q, False)
+    return _normal(*exact_arb_values(m, Q))
+
+
+def exact_arb_values(m: Fraction, Q: Fraction, full: bool = True) -> tuple:
+    """The fields of :class:`NormalParams` (in their order) of the exact model at exact ``m``,
+    ``Q``, as ``arb`` balls at the working precision: the operations of :func:`_exact_rational` on
+    the same roundings, without the back end's indirections: the rational parts cached by the
     integers of ``m`` and ``Q`` (a Fraction's hash costs more than the lookup), each lifted by one
     rounded division (:func:`_exact_lifts`), the small integers as exact balls (an ``arb`` with a
     Python int converts the int first: the same ball, at a cost), and the square roots as ``arb``
-    methods.  ``full=False``: the indicator's parameters ``(r2, u, beta, g, w)`` alone (the same
-    balls), as :func:`indicator_params` takes them."""
+    methods.  ``full=False``: ``(r2, u, beta, g, w)`` alone."""
+    small, lifts = _exact_lifts(m.numerator, m.denominator, Q.numerator, Q.denominator)
     U1, U2, K, Uq, d, bq, iq, s2 = (
-        arb(x) if type(x) is fmpq else arb(x[0]) / x[1] if x[1] != 1 else arb(x[0])
-        for x in _exact_lifts(m.numerator, m.denominator, Q.numerator, Q.denominator)
+        map(arb, lifts)
+        if small
+        else (
+            arb(x) if type(x) is fmpq else arb(x[0]) / x[1] if x[1] != 1 else arb(x[0])
+            for x in lifts
+        )
     )
     _, one, two, _ = _ARB_SMALL
     nu1, nu2 = U1.sqrt(), U2.sqrt()
@@ -398,7 +413,7 @@ def _exact_arb(m: Fraction, Q: Fraction, full: bool = True):
     s = s2.sqrt()
     w0 = ((one + s) / two).sqrt() / s  # omega_av/omega0 without friction (see omega_av)
     diff = (one / ((U1 + one).sqrt() + nu1) + one / ((U2 + one).sqrt() + nu2)) * iq
-    return _normal(
+    return (
         r2.sqrt(),
         r2,
         _ARB_FOUR * nu1 * nu2 / den,
@@ -412,18 +427,18 @@ def _exact_arb(m: Fraction, Q: Fraction, full: bool = True):
 
 
 @lru_cache(maxsize=64)
-def _exact_lifts(mp: int, mq: int, qp: int, qq: int) -> tuple:
-    """:func:`_exact_parts` as what :func:`_exact_arb` lifts, cached by the integers: an
+def _exact_lifts(mp: int, mq: int, qp: int, qq: int) -> tuple[bool, tuple]:
+    """:func:`_exact_parts` as what :func:`exact_arb_values` lifts, cached by the integers: an
     ``fmpq`` where numerator and denominator have at most 53 bits (``arb`` of it is the quotient
     rounded once, the ball of ``arb(p) / q``: both integers convert exactly), else the pair
     ``(p, q)`` (a longer integer is rounded to the working precision by ``arb(p)``, and the
-    quotient follows it)."""
+    quotient follows it); and whether every one is an ``fmpq``."""
     out = []
     for x in _exact_parts(Fraction(mp, mq), Fraction(qp, qq)):
         p, q = x.numerator, x.denominator
         small = abs(p).bit_length() <= 53 and q.bit_length() <= 53
         out.append(fmpq(p, q) if small else (p, q))
-    return tuple(out)
+    return all(type(x) is fmpq for x in out), tuple(out)
 
 
 @lru_cache(maxsize=64)

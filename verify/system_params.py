@@ -26,7 +26,7 @@ solvers always see phase 1 as the low-frequency phase.
 from __future__ import annotations
 
 from fractions import Fraction
-from functools import cache
+from functools import cache, lru_cache
 from math import gcd
 
 from analytic.system import System
@@ -213,15 +213,7 @@ def _atoms(system: System, damping: str, m, Q, B: Backend, om=None) -> tuple:
     mq, Qq = _integers(m, 0), _integers(Q, 1)
     if mq is not None and Qq is not None:
         rat = B.namespace["_q"]
-        out = []
-        for num, den in _integer_atoms(system, damping)(*mq, *Qq):
-            if den == 0:
-                raise ZeroDivisionError(f"an atom of {system.label} is infinite at m = {m}")
-            g = gcd(num, den)
-            if den < 0:
-                g = -g
-            out.append(rat(num // g, den // g))  # lowest terms: the rounding of the Fraction
-        return tuple(out)
+        return tuple(rat(num, den) for num, den in _lowest_atoms(system, damping, *mq, *Qq))
     lift = lambda x: B.num(x) if isinstance(x, Fraction | int) else x  # noqa: E731
     fn, fn_om = _numeric_atoms(system, damping, B.name)
     mm = lift(Fraction(0) if m is None else m)
@@ -236,6 +228,23 @@ def _atoms(system: System, damping: str, m, Q, B: Backend, om=None) -> tuple:
         return vals
     vals_om = tuple(lift(v) for v in fn_om(om, QQ))
     return tuple(np.where(high, b, a) for a, b in zip(vals, vals_om, strict=True))
+
+
+@lru_cache(maxsize=256)
+def _lowest_atoms(system: System, damping: str, p: int, q: int, P: int, R: int) -> tuple:
+    """The atoms at ``m = p/q``, ``Q = P/R`` as integer pairs in lowest terms (denominator
+    positive: what the Fraction's rounding rounds), cached by the integers (exact: the same pairs
+    for the same arguments)."""
+    out = []
+    for num, den in _integer_atoms(system, damping)(p, q, P, R):
+        if den == 0:
+            where = f" at m = {Fraction(p, q)}" if system.uses_depth else ""
+            raise ZeroDivisionError(f"an atom of {system.label} is infinite{where}")
+        g = gcd(num, den)
+        if den < 0:
+            g = -g
+        out.append((num // g, den // g))
+    return tuple(out)
 
 
 def _integers(x, default: int) -> tuple[int, int] | None:
