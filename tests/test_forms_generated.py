@@ -155,3 +155,67 @@ def _output_of(code: str) -> str:
     )
     assert proc.returncode == 0, proc.stderr
     return proc.stdout.strip()
+
+
+def test_numpy_texts_write_integer_powers_as_products():
+    """The numpy texts of the parameters write ``x**n`` (``3 <= |n| <= 8``, ``n = -2``) as
+    products of squares (numpy's ``power`` takes about 100 ns an element on a negative base): the
+    printed text has no such power left and gives the power to a few units in the last place,
+    on negative and positive bases, alone and inside a quotient."""
+    import re
+
+    import numpy as np
+    import sympy as sp
+
+    from verify.derived import _printer, backend
+
+    x, y = sp.symbols("x y")
+    base = np.linspace(-3, 3, 601)
+    base = base[base != 0]
+    ns = dict(backend("numpy").namespace)
+    for n in [-8, -5, -3, -2, -1, 2, 3, 4, 5, 6, 7, 8]:
+        for expr in ((x - 1) ** n, 2 * y * (y**2 + 3) / (x - 1) ** n):
+            text = _printer(True).doprint(expr)
+            assert not re.search(r"\*\*\(?-?[3-8]\b|\*\*\(-2\)", text), text
+            fn = eval(f"lambda x, y: {text}", ns)  # noqa: S307 - the printer's own text
+            want = sp.lambdify((x, y), expr, "mpmath")
+            got = fn(base + 1, base)
+            for a, xv in zip(got[::37], (base + 1)[::37], strict=False):
+                yv = xv - 1
+                ref = float(want(xv, yv))
+                assert abs(a - ref) <= 8 * n * n * np.finfo(float).eps * abs(ref), (n, xv)
+    stored = [k for k in SOURCES if k.startswith("system_params") and k.endswith("| numpy")]
+    assert stored and not any(re.search(r"\*\*\(?-?[3-8]\b", SOURCES[k]) for k in stored)
+
+
+def test_numpy_parameter_texts_agree_with_the_math_texts():
+    """Every stored numpy text of the parameters (integer powers as products) gives, element by
+    element, what the math text of the same part gives (powers by ``pow``), to a relative
+    ``1e-13``, at depths over ``(0, 1)`` and quality factors from 1.5 to 100 (the values at the
+    atoms the math text gives)."""
+    import numpy as np
+
+    m = np.array([0.013, 0.2, 0.37, 0.5, 0.61, 0.88, 0.97])
+    Q = np.array([1.5, 2.0, 7.0, 30.0, 100.0, 3.0, 11.0])
+    checked = 0
+    for key, text in SOURCES.items():
+        if not (key.startswith("system_params") and key.endswith("| numpy")):
+            continue
+        head, part, _ = key.split(" | ")
+        mine = derived.load_source(text, "numpy", 0)
+        plain = derived.load_source(SOURCES[f"{head} | {part} | math"], "math", 0)
+        if part == "values":
+            atoms = derived.load_source(SOURCES[f"{head} | atoms | math"], "math", 0)
+            args = [atoms(float(m[i]), float(Q[i])) for i in range(m.size)]
+        else:
+            x = (1 - m) if part == "atoms_om" else m
+            args = [(float(x[i]), float(Q[i])) for i in range(m.size)]
+        columns = np.array(args).T
+        got = mine(*columns)
+        for i in range(m.size):
+            want = plain(*args[i])
+            for a, b in zip(got, want, strict=True):
+                a = np.broadcast_to(a, m.shape)[i]
+                assert abs(a - b) <= 1e-13 * abs(b), (key, i, a, b)
+        checked += 1
+    assert checked >= 30

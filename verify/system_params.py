@@ -118,9 +118,10 @@ def _derive(system: System, damping: str, backends=STORED_BACKENDS) -> dict[str,
         near_one = [sp.factor(sp.expand(e.subs(S.m, 1 - om))) for e in exprs]
     for b in backends:
         ns = backend(b).namespace
-        out[key(f"values | {b}")] = _source(args, values, ns, cse=True)
-        out[key(f"atoms | {b}")] = _source((S.m, S.Q), exprs, ns)
-        out[key(f"atoms_om | {b}")] = _source((om, S.Q), near_one, ns)
+        many = b == "numpy"  # arrays: integer powers as products
+        out[key(f"values | {b}")] = _source(args, values, ns, cse=True, products=many)
+        out[key(f"atoms | {b}")] = _source((S.m, S.Q), exprs, ns, products=many)
+        out[key(f"atoms_om | {b}")] = _source((om, S.Q), near_one, ns, products=many)
     return out
 
 
@@ -154,15 +155,21 @@ def _integer_pairs(exprs) -> list:
     return out
 
 
-def _source(args, exprs, namespace, cse=False) -> str:
-    """The text :func:`sympy.lambdify` writes for ``exprs`` (sympy's dummy names renumbered)."""
+def _source(args, exprs, namespace, cse=False, products=False) -> str:
+    """The text :func:`sympy.lambdify` writes for ``exprs`` (sympy's dummy names renumbered;
+    ``products``: integer powers as products, see :func:`verify.derived._printer`)."""
     import inspect
     import re
 
     import sympy as sp
 
     fn = sp.lambdify(
-        args, exprs, modules=[namespace], printer=_printer(), cse=cse, docstring_limit=0
+        args,
+        exprs,
+        modules=[namespace],
+        printer=_printer(products),
+        cse=cse,
+        docstring_limit=0,
     )
     text = inspect.getsource(fn)
     names = {}
