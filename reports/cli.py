@@ -69,7 +69,7 @@ def _named(first: list[str]) -> str | None:
     lists them."""
     typed = first[0] if first else ""
     name = typed.replace("-", "_")  # a command is typed with hyphens where its module has _
-    if "_" in typed or not name.isidentifier():
+    if "_" in typed or typed.startswith("-") or not name.isidentifier():
         return None
     return name if importlib.util.find_spec(f"{commands.__name__}.{name}") is not None else None
 

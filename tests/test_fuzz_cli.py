@@ -391,7 +391,7 @@ def test_a_real_process_exits_as_the_in_process_call_says(argv, expected):
     check(argv, proc.returncode, proc.stdout, proc.stderr)
 
 
-def test_a_command_named_first_gets_its_own_parser_alone():
+def test_a_command_named_first_gets_its_own_parser_alone(capsys):
     """``main`` builds the parser of the command named first alone (no other command's modules
     imported); it is the very parser of the full build: every command, typed as the full parser
     names it, finds itself and only itself, with the same options and help.  Anything that is
@@ -408,5 +408,12 @@ def test_a_command_named_first_gets_its_own_parser_alone():
         alone = subparsers(build_parser(_named([name])))
         assert list(alone) == [name]
         assert alone[name].format_help() == sp.format_help()
-    for other in ([], ["--help"], ["-h"], ["nonsense"], ["jump_validity"], ["_arguments"], [""]):
+    others = ([], ["--help"], ["-h"], ["nonsense"], ["jump_validity"], ["_arguments"], [""])
+    others += (["--init--"], ["-arguments"], ["--pycache--"], ["-table"], ["--table"])
+    for other in others:
         assert _named(other) is None, other
+    for argv in (["--init--", "table", "-h"], ["-arguments", "boundary", "-h"]):
+        with pytest.raises(SystemExit) as stop:  # the full parser: the command's help, as before
+            main(argv)
+        assert stop.value.code == 0
+        assert f"usage: paramres {argv[1]}" in capsys.readouterr().out

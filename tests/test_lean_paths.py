@@ -204,3 +204,22 @@ def test_normal_tuple_reads_the_named_values(backend_name):
                 lean = undamped_values(system, m, B)
                 assert all(same(a, b) for a, b in zip(lean, (r, beta, w, bm), strict=True))
     assert signs == {True, False}
+
+
+def test_a_paper_system_object_takes_the_papers_parameters():
+    """A pendulum of duty 1/2 built anew (equal to the paper's system, not the same object)
+    takes the paper's parameters in the frictionless short path, as :func:`verify.params
+    .normal_params` gives them to the general path: the same balls as the paper's own object."""
+    from fractions import Fraction
+
+    from analytic.system import PAPER
+    from analytic.system import system as make
+    from verify.request import Request
+
+    twin = make("pendulum", duty="1/2")
+    assert twin is not PAPER and twin.is_paper
+    m = Fraction(3, 10)
+    for digits in (15, 40, 100):
+        a = undamped.undamped(Request(3, m, None, "exact", digits, m, None, PAPER))
+        b = undamped.undamped(Request(3, m, None, "exact", digits, m, None, twin))
+        assert _balls(a) == _balls(b)

@@ -184,8 +184,9 @@ def backend(name: str) -> Backend:
 
 def _printer(products: bool = False):
     """The printer of the compiled texts.  ``products``: integer powers ``x**n`` with ``3 <= |n|
-    <= 8`` or ``n = -2`` written as products of squares (numpy's ``power`` calls the C library's ``pow`` for
-    each element, about 100 ns where the base is negative, against about 1 ns a product)."""
+    <= 8`` or ``n = -2`` written as products of squares (numpy's ``power`` calls the C library's
+    ``pow`` for each element, about 100 ns where the base is negative, against about 1 ns a
+    product)."""
     from sympy.printing.lambdarepr import LambdaPrinter
     from sympy.printing.precedence import PRECEDENCE
 

@@ -172,7 +172,7 @@ def _lean(req, n, bits, forms):
     old = ctx.prec
     try:
         ctx.prec = top + GUARD
-        if req.system is PAPER:  # normal_params(m, None, ...) takes these values
+        if req.system is PAPER or req.system.is_paper:  # normal_params' route for these
             r, _, _, beta, w, bm = undamped_params(req.m, _ARB)
         else:
             r, beta, w, bm = undamped_values(req.system, req.m, _ARB)
