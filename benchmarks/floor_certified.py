@@ -9,8 +9,8 @@ Newton test ``x - F(x)/F'(X)`` inside ``X`` at the target precision, and ``T/T0 
 theta/pi)/w`` as a ball.  No safeguards, no offsets, no formatting.  Ours is
 ``paramres.boundary(3, "3/10", digits=D)`` (both edges, every digit proven, offsets and radii
 included), through the whole public path.  The other members of the family (the torsion
-pendulum, the Meissner equation, a duty of 1/3) are timed against the same floor: their edges
-take the same steps, with their own parameters.
+pendulum, the Meissner equation, a duty of 1/3, a custom system) are timed against the same
+floor: their edges take the same steps, with their own parameters.
 """
 
 from __future__ import annotations
@@ -19,6 +19,8 @@ import math
 from fractions import Fraction
 
 from flint import arb, ctx
+
+from analytic.system import custom
 
 M = Fraction(3, 10)
 ORDER = 3
@@ -149,35 +151,38 @@ def scenes(quick: bool) -> list[dict]:
         )
     # the other members of the family: the same work with their own parameters, against the
     # same floor; and their friction boundary against their frictionless one (Q = 30: at Q = 7
-    # the torsion pendulum and the Meissner equation have no third interval at m = 0.3)
-    for label, kw in OTHERS:
+    # the torsion pendulum and the Meissner equation have no third interval at m = 0.3; the
+    # custom system, whose parameters do not depend on m, has none up to Q = 120)
+    for label, kw, m, Q in OTHERS:
         for d in (15, 1000) if quick else (15, 100, 1000):
             out.append(
                 {
                     "name": f"certified {label}, {d} digits",
                     "target": 1.5,
-                    "ours": lambda d=d, kw=kw: paramres.boundary(ORDER, "3/10", digits=d, **kw),
+                    "ours": lambda d=d, kw=kw, m=m: paramres.boundary(ORDER, m, digits=d, **kw),
                     "floor": lambda d=d: floor_edges(M, d),
                     "note": "the paper's floor: the same work, other parameters",
                 }
             )
         out.append(
             {
-                "name": f"friction Q=30 / none {label}, 15 digits",
+                "name": f"friction Q={Q} / none {label}, 15 digits",
                 "target": 2.0,
-                "ours": lambda kw=kw: paramres.boundary(ORDER, "3/10", Q=30, digits=15, **kw),
-                "floor": lambda kw=kw: paramres.boundary(ORDER, "3/10", digits=15, **kw),
+                "ours": lambda kw=kw, m=m, Q=Q: paramres.boundary(ORDER, m, Q=Q, digits=15, **kw),
+                "floor": lambda kw=kw, m=m: paramres.boundary(ORDER, m, digits=15, **kw),
                 "note": "the friction boundary against the frictionless one",
             }
         )
     return out
 
 
-#: the other members of the family timed here (as the grid's scenes: torsion, Meissner, D = 1/3)
+#: the other members of the family timed here (as the grid's scenes: torsion, Meissner, D = 1/3;
+#: and a custom system), with the depth and the quality factor of their friction scene
 OTHERS = (
-    ("torsion", {"system": "torsion"}),
-    ("meissner", {"system": "meissner"}),
-    ("duty 1/3", {"duty": "1/3"}),
+    ("torsion", {"system": "torsion"}, "3/10", 30),
+    ("meissner", {"system": "meissner"}, "3/10", 30),
+    ("duty 1/3", {"duty": "1/3"}, "3/10", 30),
+    ("custom", {"system": custom(("4/5", "6/5"), jump="3/2", duty="2/5")}, None, 1000),
 )
 
 
