@@ -320,7 +320,7 @@ def normal_params(
 def indicator_params(m, Q, damping: str, B: Backend, system: System = PAPER) -> tuple:
     """``(r2, u, beta, g, w)`` of :func:`normal_params` (the parameters of the indicator ``D``
     and ``omega_av/omega0``), the same numbers; for exact ``m``, ``Q`` in ``arb`` in the exact
-    model of the paper's system without the other fields (:func:`_exact_arb`)."""
+    model of the paper's system without the other fields (:func:`exact_arb_values`)."""
     if (
         B.name == "arb"
         and damping != "paper"
@@ -328,7 +328,7 @@ def indicator_params(m, Q, damping: str, B: Backend, system: System = PAPER) -> 
         and type(Q) is Fraction
         and (system is PAPER or system.is_paper)
     ):
-        return _exact_arb(m, Q, full=False)
+        return exact_arb_values(m, Q, False)
     P = normal_params(m, Q, damping, B, system)
     return P.r2, P.u, P.beta, P.g, P.w
 
@@ -373,12 +373,8 @@ def _exact_rational(m: Fraction, Q: Fraction, B: Backend) -> NormalParams:
     )
 
 
-def _exact_arb(m: Fraction, Q: Fraction, full: bool = True):
-    """:func:`_exact_rational` in ``arb`` at the working precision (:func:`exact_arb_values`);
-    ``full=False``: the indicator's parameters ``(r2, u, beta, g, w)`` alone (the same balls), as
-    :func:`indicator_params` takes them."""
-    if not full:
-        return exact_arb_values(m, Q, False)
+def _exact_arb(m: Fraction, Q: Fraction) -> NormalParams:
+    """:func:`_exact_rational` in ``arb`` at the working precision (:func:`exact_arb_values`)."""
     return _normal(*exact_arb_values(m, Q))
 
 

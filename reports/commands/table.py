@@ -134,8 +134,13 @@ _PLACES: dict[int, tuple[int, int] | bool] = {}
 
 
 def _certified(task):
-    order, m, Q, damping, digits, system, modulation, S = task
-    b = (_solver or _load_solver())(
+    """The row of one engine task ``(order, m, Q, damping, digits, system, modulation, S)``."""
+    return _row(_solver or _load_solver(), *task)
+
+
+def _row(solve, order, m, Q, damping, digits, system, modulation, S):
+    """``(order, m, *texts)``: the edge of ``order`` at ``m`` solved by ``solve`` and printed."""
+    b = solve(
         order,
         m,
         Q=Q,
@@ -230,17 +235,7 @@ def rows(
         out = []
         add = out.append
         for n, m in progress(pairs, total=len(pairs), label=label, quiet=quiet):
-            b = solve(
-                n,
-                m,
-                Q=Q,
-                damping=damping,
-                digits=digits,
-                system=system,
-                modulation=modulation,
-                switch_time=switch_time,
-            )
-            add((n, m, *b.printed()))
+            add(_row(solve, n, m, Q, damping, digits, system, modulation, switch_time))
         return out
     from verify.atlas import edge_seconds
     from verify.engine import cluster, ordered
