@@ -58,10 +58,10 @@ from .derived import (
 )
 from .enclosure import AtPrecision, edges_result, no_interval, sgn_of, theta_floor
 from .float_stage import float_edges, normal_float_edges, normal_float_stage
-from .params import NEAR_ONE, NormalParams, exact_arb_values, normal_params, trace_params
+from .params import NEAR_ONE, NormalParams, normal_params, normal_values, trace_params
 from .request import Request
 from .result import Boundary, from_balls
-from .system_params import normal_jets, normal_tuple
+from .system_params import normal_jets
 
 __all__ = [
     "hump_normal",
@@ -699,14 +699,9 @@ def _lean_normal(req: Request, bits: int) -> Boundary | None:
         # objects compute them (12 bits above it), without the NormalParams object (the same
         # balls): the paper's exact model, and the other members of the family
         ctx.prec = top + 12
-        system, m, Q = req.system, req.m, req.Q
-        if system is not PAPER and not system.is_paper:  # normal_params' routes, in its order
-            r, r2, u, beta, w, g, _, dinv, bm = normal_tuple(system, m, Q, req.damping, _ARB)
-        elif req.damping != "paper" and type(m) is Fraction and type(Q) is Fraction:
-            r, r2, u, beta, w, g, _, dinv, bm = exact_arb_values(m, Q)
-        else:
-            pt = normal_params(m, Q, req.damping, _ARB, system)
-            r, r2, u, beta, w, g, dinv, bm = pt.r, pt.r2, pt.u, pt.beta, pt.w, pt.g, pt.dinv, pt.bm
+        r, r2, u, beta, w, g, _, dinv, bm = normal_values(
+            req.m, req.Q, req.damping, _ARB, req.system
+        )
         c = arb.pi() * n / 2
         if float(bm) < NEAR_ONE:
             return None

@@ -63,6 +63,7 @@ __all__ = [
     "NEAR_CRITICAL",
     "NEAR_ONE",
     "normal_params",
+    "normal_values",
     "exact_arb_values",
     "undamped_params",
     "trace_params",
@@ -259,8 +260,14 @@ def _normal(*values) -> NormalParams:
 def normal_params(
     m, Q, damping: str, B: Backend, system: System = PAPER, *, om=None
 ) -> NormalParams:
-    """The normal-form parameters for depth ``m`` and quality factor ``Q`` (``None``: no friction)
-    in the damping model ``damping`` (``"exact"`` or ``"paper"``), as numbers of back end ``B``.
+    """The normal-form parameters of :func:`normal_values` as a :class:`NormalParams`."""
+    return _normal(*normal_values(m, Q, damping, B, system, om=om))
+
+
+def normal_values(m, Q, damping: str, B: Backend, system: System = PAPER, *, om=None) -> tuple:
+    """The fields of :class:`NormalParams`, in their order (no object built): the normal-form
+    parameters for depth ``m`` and quality factor ``Q`` (``None``: no friction) in the damping
+    model ``damping`` (``"exact"`` or ``"paper"``), as numbers of back end ``B``.
 
     ``m`` and ``Q`` are exact :class:`~fractions.Fraction` s (the rational parts are then computed
     exactly and rounded once) or numbers of the back end.  For the exact model both halves must be
@@ -276,7 +283,7 @@ def normal_params(
     if system is not PAPER and not system.is_paper:
         from .system_params import normal_tuple
 
-        return _normal(*normal_tuple(system, m, Q, damping, B, om))
+        return normal_tuple(system, m, Q, damping, B, om)
     if (
         Q is not None
         and damping != "paper"
@@ -288,9 +295,9 @@ def normal_params(
     r, r2, u, beta, w0, bm = undamped_params(m, B, om)
     zero = r * _small(B)[0]
     if Q is None:
-        return _normal(r, r2, u, beta, w0, zero, w0, zero, bm)
+        return r, r2, u, beta, w0, zero, w0, zero, bm
     if damping == "paper":
-        return NormalParams(r, r2, u, beta, w0, 1 / (2 * _lift(Q, B) * w0), w0, zero, bm)
+        return r, r2, u, beta, w0, 1 / (2 * _lift(Q, B) * w0), w0, zero, bm
     om = _one_minus(m, om)
     q2 = 4 * Q * Q
     u1, u2, om2 = (q2 - 1 - m) / (1 + m), (q2 - 1 + m) / om, om * (1 + m)
@@ -314,7 +321,7 @@ def normal_params(
     g = 2 / nsum
     # w0 - w = (omega1 - Omega1 + omega2 - Omega2)/(4 pi), omega - Omega = gamma^2/(omega + Omega)
     diff = (1 / (2 * Qb / _root(op, B) + nu1) + 1 / (2 * Qb / _root(om, B) + nu2)) / (4 * Qb)
-    return NormalParams(B.sqrt(r2), r2, u, beta, w, g, w0, diff / (w * w0), 2 * nu1 / nsum)
+    return B.sqrt(r2), r2, u, beta, w, g, w0, diff / (w * w0), 2 * nu1 / nsum
 
 
 def indicator_params(m, Q, damping: str, B: Backend, system: System = PAPER) -> tuple:
@@ -329,11 +336,11 @@ def indicator_params(m, Q, damping: str, B: Backend, system: System = PAPER) -> 
         and (system is PAPER or system.is_paper)
     ):
         return exact_arb_values(m, Q, False)
-    P = normal_params(m, Q, damping, B, system)
-    return P.r2, P.u, P.beta, P.g, P.w
+    _, r2, u, beta, w, g, _, _, _ = normal_values(m, Q, damping, B, system)
+    return r2, u, beta, g, w
 
 
-def _exact_rational(m: Fraction, Q: Fraction, B: Backend) -> NormalParams:
+def _exact_rational(m: Fraction, Q: Fraction, B: Backend) -> tuple:
     """The exact model's parameters for exact ``m``, ``Q``: the formulas of the general branch of
     :func:`normal_params`, with their rational parts combined exactly first (once per ``(m, Q)``,
     :func:`_exact_parts`), so that fewer numbers are converted and rounded::
@@ -342,7 +349,7 @@ def _exact_rational(m: Fraction, Q: Fraction, B: Backend) -> NormalParams:
         beta = (8 m Q^2/(1-m^2)) / (nu1 + nu2)^2;   2Q/sqrt(1 +- m) = sqrt(nu_i^2 + 1)
     """
     if B.name == "arb":
-        return _exact_arb(m, Q)
+        return exact_arb_values(m, Q)
     u1, u2, k, Uq, dq, bq, q4, s2 = _exact_parts(m, Q)
     lift = B.num
     U1, U2, K = lift(u1), lift(u2), lift(k)
@@ -360,7 +367,7 @@ def _exact_rational(m: Fraction, Q: Fraction, B: Backend) -> NormalParams:
     w0 = B.sqrt((1 + s) / 2) / s  # omega_av/omega0 without friction (see omega_av)
     # w0 - w = (omega1 - Omega1 + omega2 - Omega2)/(4 pi), omega - Omega = gamma^2/(omega + Omega)
     diff = (1 / (B.sqrt(U1 + 1) + nu1) + 1 / (B.sqrt(U2 + 1) + nu2)) * iq
-    return NormalParams(
+    return (
         B.sqrt(r2),
         r2,
         4 * nu1 * nu2 / den,
@@ -371,11 +378,6 @@ def _exact_rational(m: Fraction, Q: Fraction, B: Backend) -> NormalParams:
         diff / (w * w0),
         2 * nu1 / nsum,
     )
-
-
-def _exact_arb(m: Fraction, Q: Fraction) -> NormalParams:
-    """:func:`_exact_rational` in ``arb`` at the working precision (:func:`exact_arb_values`)."""
-    return _normal(*exact_arb_values(m, Q))
 
 
 def exact_arb_values(m: Fraction, Q: Fraction, full: bool = True) -> tuple:
