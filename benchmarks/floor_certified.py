@@ -149,6 +149,18 @@ def scenes(quick: bool) -> list[dict]:
                 "note": "the friction boundary against the frictionless one",
             }
         )
+    # no interval (closed by friction): the proof that D < 0 on the bracket against the
+    # frictionless edges -- the paper's pendulum at Q = 3, and the custom system at Q = 30
+    for label, kw, m, Q in (("", {}, "3/10", 3), (" custom", OTHERS[-1][1], None, 30)):
+        out.append(
+            {
+                "name": f"friction Q={Q} / none{label}, no interval, 15 digits",
+                "target": 2.0,
+                "ours": lambda kw=kw, m=m, Q=Q: paramres.boundary(ORDER, m, Q=Q, digits=15, **kw),
+                "floor": lambda kw=kw, m=m: paramres.boundary(ORDER, m, digits=15, **kw),
+                "note": "a friction boundary with no interval against the frictionless one",
+            }
+        )
     # the other members of the family: the same work with their own parameters, against the
     # same floor; and their friction boundary against their frictionless one (Q = 30: at Q = 7
     # the torsion pendulum and the Meissner equation have no third interval at m = 0.3; the

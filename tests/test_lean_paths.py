@@ -133,6 +133,12 @@ def test_lean_paths_are_taken(monkeypatch):
         boundary(3, m, digits=15, **kw)
         boundary(3, m, Q=1000, digits=15, **kw)  # an interval for each (at Q = 7 not all)
     assert used == [("_lean", True), ("_lean_normal", True)] * len(SYSTEMS)
+    # no interval: the short path proves D < 0 on the bracket itself
+    used.clear()
+    for kw, m, Q in (({}, "3/10", 3), (SYSTEMS[0], "3/10", 7), (SYSTEMS[-1], None, 30)):
+        for digits in (15, 120):
+            assert not boundary(3, m, Q=Q, digits=digits, **kw).exists
+    assert used == [("_lean_normal", True)] * 6
 
 
 @pytest.mark.parametrize("backend_name", ["arb", "math", "mpmath"])

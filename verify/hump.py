@@ -226,8 +226,12 @@ def _prove_shape(h: _Hump, lo_root, hi_root, unimodal: bool = True) -> bool:
     return False
 
 
+#: evaluations of the bisection that proves ``D < 0`` on the bracket (:func:`prove_negative`)
+_NEGATIVE_BUDGET = 400
+
+
 def prove_negative(
-    h: _Hump, bits: int = 64, max_bits: int | None = None, budget: int = 400
+    h: _Hump, bits: int = 64, max_bits: int | None = None, budget: int = _NEGATIVE_BUDGET
 ) -> bool:
     """``D < 0`` on all of ``[a, b]`` (no interval).
 
@@ -687,6 +691,8 @@ def _lean_normal(req: Request, bits: int) -> Boundary | None:
     parameters at each precision as ``hump_normal``'s ``args`` gives them), the shape by ``D''
     < 0`` on the whole bracket (the first test of :func:`_unimodal_shape`: ``-D''/2 > 0`` in the
     sines, else ``D'' < 0``) -- and the arithmetic of :func:`verify.enclosure.edges_result`.
+    Where the float stage finds no interval, ``D < 0`` on the bracket proven by the first step of
+    :func:`prove_negative` (no interval).
     ``None`` where a step does not succeed at once; the caller then runs the general path, which
     repeats these steps and goes on from there."""
     n = req.order
@@ -739,7 +745,21 @@ def _lean_normal(req: Request, bits: int) -> Boundary | None:
             and E0(B, c64, sgn, _EPS_BOTH, r, beta64) > _ZERO
         ):
             return None
-        if not (dtop > 0 and a < lo < tp < hi < b):  # (NaN compares false)
+        if not dtop > 0:
+            # the float stage finds no interval: D < 0 on all of [a, b] (the first step of
+            # prove_negative, on the same balls: args(64)); else the general path goes on
+            if prove_sign(
+                lambda t: D0(t, *low),
+                lambda t: D1(t, *low),
+                a,
+                b,
+                -1,
+                prec=64,
+                budget=_NEGATIVE_BUDGET,
+            ):
+                return no_interval(req, "certified", _FRICTION_REGIME)
+            return None
+        if not (a < lo < tp < hi < b):  # (NaN compares false)
             return None
         tol = pow2(-bits)
         shift = n * math.pi / 2
@@ -830,9 +850,12 @@ def _lean_normal(req: Request, bits: int) -> Boundary | None:
         damping=req.damping,
         digits=req.digits,
         method="certified",
-        regime="normal form with friction",
+        regime=_FRICTION_REGIME,
         system=req.system,
     )
+
+
+_FRICTION_REGIME = "normal form with friction"
 
 
 def _lean_args(cache: dict, prec: int, top: int, near: tuple) -> tuple:
@@ -879,7 +902,7 @@ def normal_damped(req: Request) -> Boundary:
         if lean is not None:
             return lean
     h, P = hump_normal(req.order, req.m, req.Q, req.damping, bits, system=req.system)
-    regime = "normal form with friction"
+    regime = _FRICTION_REGIME
     exists, lo_root, hi_root, shape = _solve_hump(req, h, bits)
     notes = (
         []
