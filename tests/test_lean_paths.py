@@ -229,3 +229,33 @@ def test_a_paper_system_object_takes_the_papers_parameters():
         a = undamped.undamped(Request(3, m, None, "exact", digits, m, None, PAPER))
         b = undamped.undamped(Request(3, m, None, "exact", digits, m, None, twin))
         assert _balls(a) == _balls(b)
+
+
+@pytest.mark.parametrize("Q, exists", [(7, True), (3, False), (4, False)])
+def test_concave_bound_decides_only_where_there_is_no_interval(Q, exists):
+    """Taylor's bound of the short path (:func:`verify.hump._concave_negative`) proves ``D < 0``
+    on the bracket where there is no interval, and never where there is one (``D > 0`` at the
+    float maximiser)."""
+    from fractions import Fraction
+
+    from flint import arb, ctx
+
+    from verify.float_stage import float_edges
+    from verify.params import normal_values
+
+    n = 3
+    _, _, D2, D01, _, Bend = hump._normal_forms(-1)
+    old = ctx.prec
+    ctx.prec = 76
+    try:
+        r, r2, u, beta, _, g, _, _, _ = normal_values(
+            Fraction(3, 10), Fraction(Q), "exact", hump._ARB
+        )
+        args = (arb.pi() * n / 2, r2, u, beta, g)
+        a, b, top, dtop, _, _ = float_edges(n, *(float(v) for v in (r, r2, u, beta, g)))
+        assert (dtop > 0) is exists
+        got = hump._concave_negative(arb(a).union(arb(b)), arb(top), args, D01, D2, Bend)
+    finally:
+        ctx.prec = old
+    assert got is (not exists)
+    assert boundary(n, "3/10", Q=Q, digits=15).exists is exists

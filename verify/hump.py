@@ -746,8 +746,12 @@ def _lean_normal(req: Request, bits: int) -> Boundary | None:
         ):
             return None
         if not dtop > 0:
-            # the float stage finds no interval: D < 0 on all of [a, b] (the first step of
-            # prove_negative, on the same balls: args(64)); else the general path goes on
+            # the float stage finds no interval: D < 0 on all of [a, b], on the balls args(64)
+            # -- by Taylor's bound at the float maximiser where D'' < 0 on the whole bracket
+            # (taylor_negative's, on all of [a, b]), else by the first step of prove_negative;
+            # else the general path goes on
+            if a <= tp <= b and _concave_negative(A.union(B), arb(tp), low, D01, D2, Bend):
+                return no_interval(req, "certified", _FRICTION_REGIME)
             if prove_sign(
                 lambda t: D0(t, *low),
                 lambda t: D1(t, *low),
@@ -856,6 +860,24 @@ def _lean_normal(req: Request, bits: int) -> Boundary | None:
 
 
 _FRICTION_REGIME = "normal form with friction"
+
+
+def _concave_negative(X: arb, t: arb, args: tuple, D01, D2, Bend) -> bool:
+    """``D < 0`` on all of the ball ``X`` is proven by Taylor's bound at the point ``t`` of ``X``:
+    where ``D'' <= -k < 0`` on ``X`` (``-D''/2 > 0`` in the sines, else ``D'' < 0``), ``D(x) <=
+    D(t) + D'(t) (x - t) - k (x - t)^2 / 2 <= D(t) + D'(t)^2 / (2 k)`` (:func:`taylor_negative`'s
+    bound, on one ball).  ``D01``, ``D2``, ``Bend``: the normal form's arb functions, evaluated
+    with ``args``."""
+    bend = Bend(X, *args)
+    if bend > _ZERO:
+        k = 2 * bend.lower()
+    else:
+        d2 = D2(X, *args)
+        if not d2 < _ZERO:
+            return False
+        k = -d2.upper()
+    Dt, D1t = D01(t, *args)
+    return bool(Dt + D1t * D1t / (2 * k) < _ZERO)
 
 
 def _lean_args(cache: dict, prec: int, top: int, near: tuple) -> tuple:
