@@ -114,11 +114,26 @@ class _Hump:
 
 
 def _unimodal_shape(h: _Hump, lo_root, hi_root, budget: int = 16) -> bool:
-    """The shape from unimodality: the two root balls disjoint and inside ``(a, b)``, and
-    ``[a, b]`` cut (bisection at 64 bits, at most ``budget`` sub-balls; often the whole bracket
-    at once) into pieces each ``cap`` (``D'' < 0``: ``-D''/2 > 0`` by ``bend`` where there is one,
-    else ``D'' < 0`` by ``d2D``), ``up`` (``D' > 0``), ``down`` (``D' < 0``) or
-    ``neg`` (``D < 0``), where the ``neg`` pieces are at the two ends only (the others make one
+    """The shape from unimodality (:func:`_unimodal`) on the bracket ``[a, b]`` of ``h`` at 64
+    bits, with the root balls of ``lo_root`` and ``hi_root``."""
+    old = ctx.prec  # set and restored here (a workprec context costs a sizeable part of this)
+    ctx.prec = 64
+    try:
+        return _unimodal(
+            arb(h.a), arb(h.b), lo_root.ball, hi_root.ball, h.bend, h.d2D, h.dD, h.D, budget
+        )  # (h.a, h.b floats: exact)
+    finally:
+        ctx.prec = old
+
+
+def _unimodal(a: arb, b: arb, lo: arb, hi: arb, bend, d2D, dD, D, budget: int = 16) -> bool:
+    """The shape from unimodality, at the working precision: the two root balls ``lo``, ``hi``
+    disjoint and inside ``(a, b)`` (exact ends), and ``[a, b]`` cut (bisection, at most
+    ``budget`` sub-balls; often the whole bracket at once) into pieces each ``cap`` (``D'' <
+    0``: ``-D''/2 > 0`` by ``bend`` where there is one, else ``D'' < 0`` by ``d2D``), ``up``
+    (``D' > 0``), ``down`` (``D' < 0``) -- ``D'`` by the mean-value form around the piece's
+    midpoint with the ``D''`` of the first test -- or ``neg`` (``D < 0``; only a piece that meets
+    no root ball can be), where the ``neg`` pieces are at the two ends only (the others make one
     interval, the run) and no ``up`` piece lies right of a ``down`` one.
 
     On the run, ``D' > 0`` up to the last ``up`` piece (a run of ``cap`` pieces before an ``up``
@@ -127,48 +142,50 @@ def _unimodal_shape(h: _Hump, lo_root, hi_root, budget: int = 16) -> bool:
     most two zeros there, and none on the ``neg`` pieces.  The two enclosed zeros are therefore all
     of them, ``D > 0`` between them and ``D < 0`` on either side: the shape of
     :func:`_prove_shape`, and existence with it.  ``False`` where this is not proven."""
-    old = ctx.prec  # set and restored here (a workprec context costs a sizeable part of this)
-    ctx.prec = 64
-    try:
-        a, b = arb(h.a), arb(h.b)  # floats: exact
-        lo, hi = lo_root.ball, hi_root.ball
-        if not (a < lo and lo < hi and hi < b):
+    if not (a < lo and lo < hi and hi < b):
+        return False
+    stack, count, labels = [(a, b)], 0, []
+    while stack:  # left to right: the left half is pushed last
+        u, v = stack.pop()
+        count += 1
+        if count > budget:
             return False
-        stack, count, labels = [(a, b)], 0, []
-        while stack:  # left to right: the left half is pushed last
-            u, v = stack.pop()
-            count += 1
-            if count > budget:
-                return False
-            X = u.union(v)  # u, v exact: a ball holding [u, v]
-            if (h.bend is not None and h.bend(X) > 0) or h.d2D(X) < 0:
+        X = u.union(v)  # u, v exact: a ball holding [u, v]
+        if bend is not None:
+            d2 = bend(X)
+            if d2 > 0:
                 labels.append("cap")
                 continue
-            d1 = h.dD(X)
-            if d1 < 0 or d1 > 0:
-                labels.append("down" if d1 < 0 else "up")
+            d2 = -2 * d2  # D'' on X (bend is -D''/2, in a tighter form than d2D's)
+        else:
+            d2 = d2D(X)
+            if d2 < 0:
+                labels.append("cap")
                 continue
-            if h.D(X) < 0:
-                labels.append("neg")
-                continue
-            mid = X.mid()
-            stack.append((mid, v))
-            stack.append((u, mid))
-        while labels and labels[0] == "neg":
-            labels.pop(0)
-        while labels and labels[-1] == "neg":
-            labels.pop()
-        if "neg" in labels:
+        # D' on X by the mean-value form around the midpoint (D'' on X is d2)
+        mid = X.mid()
+        d1 = dD(mid) + d2 * (X - mid)
+        if d1 < 0 or d1 > 0:
+            labels.append("down" if d1 < 0 else "up")
+            continue
+        if (v < lo or hi < u) and D(X) < 0:  # (a piece that meets a root is never neg)
+            labels.append("neg")
+            continue
+        stack.append((mid, v))
+        stack.append((u, mid))
+    while labels and labels[0] == "neg":
+        labels.pop(0)
+    while labels and labels[-1] == "neg":
+        labels.pop()
+    if "neg" in labels:
+        return False
+    down = False
+    for label in labels:
+        if label == "down":
+            down = True
+        elif label == "up" and down:
             return False
-        down = False
-        for label in labels:
-            if label == "down":
-                down = True
-            elif label == "up" and down:
-                return False
-        return True
-    finally:
-        ctx.prec = old
+    return True
 
 
 def _prove_shape(h: _Hump, lo_root, hi_root, unimodal: bool = True) -> bool:
@@ -688,9 +705,9 @@ def _lean_normal(req: Request, bits: int) -> Boundary | None:
     function: the steps of :func:`hump_normal` and :func:`_solve_hump` where everything succeeds
     at once -- the bracket proven by the two evaluations with both signs, both float edges
     refined and proven by the steps of :func:`verify.certify.quick_root` (the same balls: the
-    parameters at each precision as ``hump_normal``'s ``args`` gives them), the shape by ``D''
-    < 0`` on the whole bracket (the first test of :func:`_unimodal_shape`: ``-D''/2 > 0`` in the
-    sines, else ``D'' < 0``) -- and the arithmetic of :func:`verify.enclosure.edges_result`.
+    parameters at each precision as ``hump_normal``'s ``args`` gives them), the shape by
+    unimodality (:func:`_unimodal_shape`'s test) -- and the arithmetic of
+    :func:`verify.enclosure.edges_result`.
     Where the float stage finds no interval, ``D < 0`` on the bracket proven by the first step of
     :func:`prove_negative` (no interval).
     ``None`` where a step does not succeed at once; the caller then runs the general path, which
@@ -820,12 +837,18 @@ def _lean_normal(req: Request, bits: int) -> Boundary | None:
                 N1 = N
             else:
                 N2 = N
-        # the shape: D'' < 0 on all of [a, b] (_unimodal_shape's first test)
+        # the shape: unimodality on [a, b] at 64 bits (_unimodal_shape's test, on args(64))
         ctx.prec = 64
-        if not (A < N1 and N1 < N2 and N2 < B):
-            return None
-        AB = A.union(B)
-        if not (Bend(AB, *low) > _ZERO or D2(AB, *low) < _ZERO):
+        if not _unimodal(
+            A,
+            B,
+            N1,
+            N2,
+            lambda t: Bend(t, *low),
+            lambda t: D2(t, *low),
+            lambda t: D1(t, *low),
+            lambda t: D0(t, *low),
+        ):
             return None
         # edges_result at the roots' precision: the parameters as they are at the proof's
         # precision, else rounded from there (AtPrecision with rounded=True)
