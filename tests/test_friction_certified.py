@@ -71,6 +71,25 @@ def test_unimodal_shape_refuses_a_second_hump():
     assert not hump._unimodal_shape(h, _root(-math.pi / 2), _root(math.pi / 2))
 
 
+def test_unimodal_shape_tests_no_slope_on_a_piece_with_both_zeros():
+    """``D = cos(x) - 1/2`` on ``[-2, 2]`` (zeros at -+pi/3; convex beyond -+pi/2): proven in the
+    pieces ``[-2, -1]`` up, ``[-1, 0]``, ``[0, 1]`` cap, ``[1, 2]`` down.  ``D'`` is evaluated
+    (once, at the midpoint) on each half and on the two monotone pieces, not on the whole
+    bracket: it holds both zeros, so a zero of ``D'`` (Rolle)."""
+    calls = []
+
+    def dD(x):
+        calls.append(x)
+        return -x.sin()
+
+    h = hump._Hump(
+        D=lambda x: x.cos() - 0.5, dD=dD, d2D=lambda x: -x.cos(), a=-2.0, b=2.0, top=0.0,
+        dtop=0.5, lo=math.nan, hi=math.nan, floor=0.0, bend=lambda x: x.cos() / 2,
+    )  # fmt: skip
+    assert hump._unimodal_shape(h, _root(-math.pi / 3), _root(math.pi / 3))
+    assert [float(x) for x in calls] == [-1.0, -1.5, 1.0, 1.5]
+
+
 def test_unimodal_shape_refuses_bad_roots():
     """The same zero twice, or a zero outside the bracket: not proven."""
     h = _hump_of(lambda x: 1 - x * x, lambda x: -2 * x, lambda x: x * 0 - 2, -2.0, 2.0)

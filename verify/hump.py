@@ -134,7 +134,8 @@ def _unimodal(a: arb, b: arb, lo: arb, hi: arb, bend, d2D, dD, D, budget: int = 
     (``D' > 0``), ``down`` (``D' < 0``) -- ``D'`` by the mean-value form around the piece's
     midpoint with the ``D''`` of the first test -- or ``neg`` (``D < 0``; only a piece that meets
     no root ball can be), where the ``neg`` pieces are at the two ends only (the others make one
-    interval, the run) and no ``up`` piece lies right of a ``down`` one.
+    interval, the run) and no ``up`` piece lies right of a ``down`` one.  A piece that holds both
+    root balls holds a zero of ``D'`` (Rolle) and is not tested for ``up`` or ``down``.
 
     On the run, ``D' > 0`` up to the last ``up`` piece (a run of ``cap`` pieces before an ``up``
     one has ``D'`` decreasing to a positive value), ``D' < 0`` from the first ``down`` piece on, and
@@ -162,12 +163,13 @@ def _unimodal(a: arb, b: arb, lo: arb, hi: arb, bend, d2D, dD, D, budget: int = 
             if d2 < 0:
                 labels.append("cap")
                 continue
-        # D' on X by the mean-value form around the midpoint (D'' on X is d2)
         mid = X.mid()
-        d1 = dD(mid) + d2 * (X - mid)
-        if d1 < 0 or d1 > 0:
-            labels.append("down" if d1 < 0 else "up")
-            continue
+        if not (u < lo and hi < v):
+            # D' on X by the mean-value form around the midpoint (D'' on X is d2)
+            d1 = dD(mid) + d2 * (X - mid)
+            if d1 < 0 or d1 > 0:
+                labels.append("down" if d1 < 0 else "up")
+                continue
         if (v < lo or hi < u) and D(X) < 0:  # (a piece that meets a root is never neg)
             labels.append("neg")
             continue
