@@ -149,6 +149,16 @@ def scenes(quick: bool) -> list[dict]:
                 "note": "the friction boundary against the frictionless one",
             }
         )
+    # a deep modulation: the bracket is wide and the shape takes several pieces
+    out.append(
+        {
+            "name": "friction Q=7 / none, m = 0.9, 15 digits",
+            "target": 2.0,
+            "ours": lambda: paramres.boundary(ORDER, "9/10", Q=7, digits=15),
+            "floor": lambda: paramres.boundary(ORDER, "9/10", digits=15),
+            "note": "the friction boundary against the frictionless one at a deep modulation",
+        }
+    )
     # no interval (closed by friction): the proof that D < 0 on the bracket against the
     # frictionless edges -- the paper's pendulum at Q = 3, and the custom system at Q = 30
     for label, kw, m, Q in (("", {}, "3/10", 3), (" custom", OTHERS[-1][1], None, 30)):
