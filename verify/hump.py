@@ -132,9 +132,10 @@ def _unimodal(a: arb, b: arb, lo: arb, hi: arb, bend, d2D, dD, D, budget: int = 
     ``budget`` sub-balls; often the whole bracket at once) into pieces each ``cap`` (``D'' <
     0``: ``-D''/2 > 0`` by ``bend`` where there is one, else ``D'' < 0`` by ``d2D``), ``up``
     (``D' > 0``), ``down`` (``D' < 0``) -- ``D'`` by the mean-value form around the piece's
-    midpoint with the ``D''`` of the first test -- or ``neg`` (``D < 0``; only a piece that meets
-    no root ball can be), where the ``neg`` pieces are at the two ends only (the others make one
-    interval, the run) and no ``up`` piece lies right of a ``down`` one.  A piece that holds both
+    midpoint with the ``D''`` of the first test -- or ``neg`` (``D < 0``; tested only left of
+    ``lo`` or right of ``hi``, where the ``neg`` pieces must lie), where the ``neg`` pieces are at
+    the two ends only (the others make one interval, the run) and no ``up`` piece lies right of
+    a ``down`` one.  A piece that holds both
     root balls holds a zero of ``D'`` (Rolle) and is not tested for ``up`` or ``down``.
 
     On the run, ``D' > 0`` up to the last ``up`` piece (a run of ``cap`` pieces before an ``up``
@@ -170,7 +171,7 @@ def _unimodal(a: arb, b: arb, lo: arb, hi: arb, bend, d2D, dD, D, budget: int = 
             if d1 < 0 or d1 > 0:
                 labels.append("down" if d1 < 0 else "up")
                 continue
-        if (v < lo or hi < u) and D(X) < 0:  # (a piece that meets a root is never neg)
+        if (v < lo or hi < u) and D(X) < 0:  # (elsewhere a neg piece fails the shape)
             labels.append("neg")
             continue
         stack.append((mid, v))
