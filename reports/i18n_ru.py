@@ -140,7 +140,7 @@ PHRASES: dict[str, str] = {
     ),
     # paragraphs of the model section
     "Two damping models are carried through everything: paper, the appendix's approximation "
-    "(used by the paper's eqs. 32-45 and its Fig. 8), and exact, the true damped oscillator "
+    "(used by the paper's eqs. 32–45 and its Fig. 8), and exact, the true damped oscillator "
     "with frequency $\\Omega_i = \\sqrt{\\omega_i^2 - \\gamma^2}$ and its over- and critically "
     "damped "
     "forms. The gap between them is one of the results.": (
@@ -763,6 +763,7 @@ PATTERNS: list[tuple[str, object]] = [
             "Сравнение со статьёй: "
             + m[1]
             .replace(" closes orders ", " смыкает порядки ")
+            .replace(" closes order ", " смыкает порядок ")
             .replace(" at $m = ", " при $m = ")
             + ". Среди первых шести интервалов (рис. 2 статьи) теорема даёт ещё "
             + m[2]
