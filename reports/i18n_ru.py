@@ -1043,7 +1043,7 @@ _CATALOGUE = [
     (
         "The threshold is the tangency of the normal form ($N = 0$, $dN/d\\theta = 0$), solved "
         "in the distinguished scaling <p> and compared with the printed leading term, "
-        "coefficient by coefficient in $1/Q$. paper model: leading term <v1>; next term of <x1>: "
+        "coefficient by coefficient in $1/Q$. Paper model: leading term <v1>; next term of <x1>: "
         "<a>; exact model: leading term <v2>; next term of <x2>: <b>. The two damping models "
         "part at relative order <o> in the threshold (<mp>; exact: damped frequencies "
         "$\\sqrt{\\omega_i^2 - \\gamma^2}$ and their $r$, $\\beta$, $w$).",

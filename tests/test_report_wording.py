@@ -55,3 +55,13 @@ def test_closings_model_text_and_the_references():
     assert "3:1 closes order 4 at" in tex and "2:1 closes orders 3, 6 at" in tex
     assert "eqs. 32--45" in tex
     assert tex.index("\\clearpage\n\n\\begin{thebibliography}") > tex.index(r"\label{sec:closings}")
+
+
+def test_a_sentence_of_the_threshold_verdict_starts_with_a_capital():
+    from analytic.catalogue import catalogue
+    from reports.i18n import language, tr
+
+    (row,) = [r for r in catalogue() if r.equation == "38"]
+    assert "$1/Q$. Paper model: leading term" in row.how
+    with language("ru"):
+        assert "Модель статьи: главный член" in tr(row.how)
