@@ -480,8 +480,8 @@ def _mmin_row(label: str, n: int, printed_Qmin: sp.Expr, printed_mmin: sp.Expr, 
         ok_all = ok_all and ok and okQ
         what = "$m_{\\min}$" if n % 2 else "$m_{\\min}^2$"
         texts.append(
-            f"{model} model: leading term {'agrees' if ok and okQ else 'differs'}; next term of "
-            f"{what}: ${latex(nxt)}$"
+            f"{model.capitalize() if not texts else model} model: leading term "
+            f"{'agrees' if ok and okQ else 'differs'}; next term of {what}: ${latex(nxt)}$"
         )
         if model == "paper":
             derived_show = [

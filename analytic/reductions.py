@@ -287,7 +287,12 @@ def _friction_chain(parity: Parity) -> Chain:
         Step(
             "36" if odd else "41",
             e36,
-            "cos(a) = 2 cos^2(a/2) - 1 in (34); one sign per edge (checked squared)",
+            (
+                "cos(a) = 2 cos^2(a/2) - 1 in (34)"
+                if odd
+                else "cos(a) = 1 - 2 sin^2(a/2) in the determinant above"
+            )
+            + "; one sign per edge (checked squared)",
             _follows(_squared_residual(e36), d34, keep=(q, p)),
         )
     )

@@ -140,7 +140,7 @@ PHRASES: dict[str, str] = {
     ),
     # paragraphs of the model section
     "Two damping models are carried through everything: paper, the appendix's approximation "
-    "(used by the paper's eqs. 32-45 and its Fig. 8), and exact, the true damped oscillator "
+    "(used by the paper's eqs. 32–45 and its Fig. 8), and exact, the true damped oscillator "
     "with frequency $\\Omega_i = \\sqrt{\\omega_i^2 - \\gamma^2}$ and its over- and critically "
     "damped "
     "forms. The gap between them is one of the results.": (
@@ -763,6 +763,7 @@ PATTERNS: list[tuple[str, object]] = [
             "Сравнение со статьёй: "
             + m[1]
             .replace(" closes orders ", " смыкает порядки ")
+            .replace(" closes order ", " смыкает порядок ")
             .replace(" at $m = ", " при $m = ")
             + ". Среди первых шести интервалов (рис. 2 статьи) теорема даёт ещё "
             + m[2]
@@ -1042,7 +1043,7 @@ _CATALOGUE = [
     (
         "The threshold is the tangency of the normal form ($N = 0$, $dN/d\\theta = 0$), solved "
         "in the distinguished scaling <p> and compared with the printed leading term, "
-        "coefficient by coefficient in $1/Q$. paper model: leading term <v1>; next term of <x1>: "
+        "coefficient by coefficient in $1/Q$. Paper model: leading term <v1>; next term of <x1>: "
         "<a>; exact model: leading term <v2>; next term of <x2>: <b>. The two damping models "
         "part at relative order <o> in the threshold (<mp>; exact: damped frequencies "
         "$\\sqrt{\\omega_i^2 - \\gamma^2}$ and their $r$, $\\beta$, $w$).",

@@ -143,6 +143,12 @@ TEXTS: dict[str, tuple[str, str]] = {
         r"$\cos a = 2\cos^2(a/2) - 1$ in (34); one sign per edge (checked squared).",
         r"$\cos a = 2\cos^2(a/2) - 1$ в (34); по знаку на каждую границу (проверено в квадрате).",
     ),
+    "cos(a) = 1 - 2 sin^2(a/2) in the determinant above; one sign per edge (checked squared).": (
+        r"$\cos a = 1 - 2\sin^2(a/2)$ in the determinant above; one sign per edge (checked "
+        r"squared).",
+        r"$\cos a = 1 - 2\sin^2(a/2)$ в определителе выше; по знаку на каждую границу "
+        r"(проверено в квадрате).",
+    ),
     "radicand of the previous step = 0 (the two signs give the same T).": (
         "The radicand of the previous step vanishes (the two signs give the same $T$).",
         "Подкоренное выражение предыдущего шага равно нулю (оба знака дают одно $T$).",

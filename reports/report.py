@@ -391,7 +391,8 @@ def _assemble(ctx: Context, sections, lang: str, command: str | None, jobs: int)
             Latex(r"\clearpage"),
             Latex(r"\pagenumbering{arabic}"),
         ),
-        back=(bibliography(),),
+        # the figures still floating end before the references, not between them
+        back=(Latex(r"\clearpage"), bibliography()),
     ).raw
     files[name] = tex
     return Assembled(tex, files, tuple(timings))

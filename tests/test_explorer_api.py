@@ -111,6 +111,12 @@ def test_simulate_is_the_time_domain_run(server):
         ("/api/boundary?order=0&m=0.3", "order 0 is outside the allowed range"),
         ("/api/boundary?m=0.3", "order is required"),
         ("/api/boundary?order=1&m=0.3&digits=5000", "outside the explorer's range 5 to 100"),
+        # beyond the command line's range too: the message still names the explorer's range
+        ("/api/boundary?order=1&m=0.3&digits=100000", "outside the explorer's range 5 to 100"),
+        ("/api/boundary?order=1&m=0.3&digits=abc", "the explorer's range is 5 to 100"),
+        ("/api/boundary?order=99999&m=0.3", "order 99999 is outside the allowed range 1 to 120"),
+        ("/api/multipliers?T=1e400&m=0.3", "outside the explorer's range 0.01 <= T <= 20"),
+        ("/api/multipliers?T=abc&m=0.3", "allowed range 0.01 <= T <= 20"),
         ("/api/boundary?order=1&m=0.3&digits=abc", "digits 'abc' is not an integer"),
         ("/api/boundary?order=1&m=0.3&colour=red", "unknown parameter 'colour'"),
         ("/api/boundary?order=1&order=2&m=0.3", "given 2 times"),

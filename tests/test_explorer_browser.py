@@ -151,7 +151,10 @@ def test_a_click_shows_the_certified_values_of_the_api(page, server):
     text = lambda tid: page.inner_text(f"[data-testid={tid}]").strip()  # noqa: E731
     assert text("mu-max") == mu["max_modulus"]
     assert text("growth") == mu["growth_rate"]
-    assert mu["max_modulus_error_bound"] in text("mu-bound")
+    # one bound row for mu1, mu2, |mu|max and ln|mu|max: the largest of their bounds
+    bounds = [mu["max_modulus_error_bound"], mu["growth_rate_error_bound"]]
+    bounds += [x["error_bound"] for x in mu["multipliers"]]
+    assert text("mu-bound").split()[-1] == max(bounds, key=float)
     assert text("mu1") == mu["multipliers"][0]["re"]
     # (1.45, 0.3) lies inside the third interval (/api/boundary: [1.3411..., 1.5447...])
     assert text("order") == "3"
@@ -159,6 +162,33 @@ def test_a_click_shows_the_certified_values_of_the_api(page, server):
     assert (text("edge-lower"), text("edge-upper")) == (b["lower"], b["upper"])
     assert b["error_bound"] in text("edge-bound")
     assert page.problems == []
+
+
+def test_the_bound_shown_covers_the_multipliers_at_a_stable_point(page, server):
+    """At a stable point ``|mu| = 1`` is known far better than the digits of ``mu1`` and ``mu2``;
+    the one bound row under the four numbers must be the largest of their bounds."""
+    page.evaluate("() => window.paramresApp.examine('0.7', '0.3')")
+    assert page.get_attribute("[data-testid=point]", "data-t") == "0.7"
+    mu = api(server, "api/multipliers?T=0.7&m=0.3&digits=30")
+    assert not mu["real"]
+    bounds = [mu["max_modulus_error_bound"], mu["growth_rate_error_bound"]]
+    bounds += [x["error_bound"] for x in mu["multipliers"]]
+    worst = max(bounds, key=float)
+    assert float(worst) > float(mu["max_modulus_error_bound"])  # the case this test is about
+    assert page.inner_text("[data-testid=mu-bound]").strip().split()[-1] == worst
+    assert page.problems == []
+
+
+def test_a_phone_screen_needs_no_sideways_scrolling(browser, server):
+    phone = browser.new_page(viewport={"width": 390, "height": 844})
+    try:
+        phone.set_default_timeout(WAIT)
+        phone.goto(server.url)
+        phone.wait_for_function("() => window.paramresApp && window.paramresApp.chart")
+        width = phone.evaluate("() => document.documentElement.scrollWidth")
+        assert width <= 390, f"the page is {width} px wide on a 390 px screen"
+    finally:
+        phone.close()
 
 
 def test_moving_a_control_redraws_the_chart(page):

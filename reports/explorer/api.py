@@ -36,7 +36,6 @@ from paramres.inputs import (
     as_digits,
     as_integer,
     as_number,
-    as_period,
     as_quality,
 )
 from verify.inputs import as_system
@@ -99,23 +98,27 @@ def _capped(value, name: str) -> int:
 
 
 def _digits(p: dict) -> int:
-    d = as_digits(p.get("digits", "30"))
+    """The digits asked for, within the explorer's range (every message names that range, not
+    the command line's)."""
     low, high = LIMITS["digits"]
-    if not low <= d <= high:
+    try:
+        return as_digits(p.get("digits", "30"), allowed=(low, high))
+    except InputError as exc:
         raise InputError(
-            f"digits {d} is outside the explorer's range {low} to {high} "
-            "(the command line goes further)"
-        )
-    return d
+            str(exc)
+            .replace("the allowed range", "the explorer's range")
+            .replace("; allowed range", "; the explorer's range is")
+            + " (the command line goes further)"
+        ) from None
 
 
 def _period(text, name="T") -> Fraction:
-    T = as_period(text, name=f"period {name}")
     low, high = LIMITS["T"]
+    allowed = f"{float(low):g} <= T <= {float(high):g}"
+    T = as_number(text, name=f"period {name}", allowed=allowed)
     if not low <= T <= high:
         raise InputError(
-            f"period {name} = {_short(text)} is outside the explorer's range "
-            f"{float(low):g} <= T <= {float(high):g}"
+            f"period {name} = {_short(text)} is outside the explorer's range {allowed}"
         )
     return T
 
@@ -157,13 +160,10 @@ def boundary(query: dict) -> dict:
 
 
 def _boundary_doc(p: dict) -> dict:
-    from paramres.inputs import as_order
     from verify.modulation import boundary as certified
 
     sysv = _system(p)
-    n = as_order(p["order"])
-    if n > LIMITS["max_order"][1] * 10:
-        raise InputError(f"order {n} is outside the explorer's range 1 to 120")
+    n = as_integer(p["order"], name="order", low=1, high=LIMITS["max_order"][1] * 10)
     return _certified_doc(certified, n, p, sysv)
 
 

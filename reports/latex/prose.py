@@ -161,6 +161,11 @@ def mixed(s: str, config: Config = DEFAULT) -> Latex:
         elif visible_width(part) > config.fit_width or (
             r"\frac" in part and visible_width(part) > INLINE_FRACTION_WIDTH
         ):
+            # the punctuation right after a displayed formula ends the display, not the next line
+            stop = re.match(r"[.,;:]", parts[k + 1]) if k + 1 < len(parts) else None
+            if stop:
+                part += stop.group()
+                parts[k + 1] = parts[k + 1][1:].lstrip()
             lines = break_source(part, config.max_width)
             if len(lines) == 1:
                 out.append(r"\[" + fit(lines[0], config).raw + r"\]")

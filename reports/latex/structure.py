@@ -100,7 +100,8 @@ def equation_lines(
     lines = [fit(line, config) for line in lines]
     marks = ""
     if tag is not None:
-        marks += command("tag", raw(tag)).raw
+        # a tag is set as text: a prime typed as ' would come out as an apostrophe
+        marks += command("tag", raw(tag if "$" in tag else tag.replace("'", "$'$"))).raw
     if label:
         marks += command("label", raw(label)).raw
     star = "" if (numbered or tag is not None) else "*"

@@ -148,9 +148,11 @@ def chain(
                 r"\begin{gathered}" + " \\\\\n".join(x.raw for x in lines) + r"\end{gathered}"
             )
             out.append(equation_lines([body], tag=tag))
-        reasons = []
+        reasons: list[Latex] = []
         for s in grp:
-            reasons.append(paragraph(prose(s.why + "."), check(s.verdict, config)))
+            reason = paragraph(prose(s.why + "."), check(s.verdict, config))
+            if reason not in reasons:  # two lines with the same reason: said once
+                reasons.append(reason)
         out.append(note(*reasons))
     return Latex("\n\n".join(x.raw for x in out))
 

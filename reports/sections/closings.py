@@ -129,7 +129,8 @@ def build(ctx: Context) -> Part:
     for b, a in paper_ratios:
         hits = [c for c in cl.at_ratio(b, a) if c.order <= 6]
         found.append(
-            f"{b}:{a} closes orders {', '.join(str(c.order) for c in hits)} at $m = "
+            f"{b}:{a} closes order{'s' if len(hits) > 1 else ''} "
+            f"{', '.join(str(c.order) for c in hits)} at $m = "
             f"{hits[0].m.numerator}/{hits[0].m.denominator}$"
             if hits
             else f"{b}:{a} not found"

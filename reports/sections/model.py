@@ -234,7 +234,7 @@ def build(ctx: Context) -> Part:
         paragraph(
             prose(
                 "Two damping models are carried through everything: paper, the appendix's "
-                "approximation (used by the paper's eqs. 32-45 and its Fig. 8), and exact, the "
+                "approximation (used by the paper's eqs. 32–45 and its Fig. 8), and exact, the "
                 "true damped oscillator with frequency "
                 "$\\Omega_i = \\sqrt{\\omega_i^2 - \\gamma^2}$ and its over- and critically "
                 "damped forms. The gap between them is one of the results."

@@ -331,7 +331,12 @@
     $('mu2').textContent = z(mu.multipliers[1]);
     $('mu-max').textContent = mu.max_modulus;
     $('growth').textContent = mu.growth_rate;
-    $('mu-bound').textContent = say('certified') + ' ' + mu.max_modulus_error_bound;
+    // one bound for the four numbers above it: the largest of their own bounds
+    const bounds = [mu.max_modulus_error_bound, mu.growth_rate_error_bound]
+      .concat(mu.multipliers.map((x) => x.error_bound))
+      .filter((x) => x !== null && x !== undefined);
+    const worst = bounds.reduce((a, x) => (Number(x) > Number(a) ? x : a), bounds[0]);
+    $('mu-bound').textContent = say('certified') + ' ' + worst;
     const v = $('verdict');
     v.className = 'verdict ' + (mu.unstable === true ? 'unstable' : mu.unstable === false ? 'stable' : '');
     v.textContent = mu.unstable === true ? say('unstable') : mu.unstable === false ? say('stable') : say('edge');
