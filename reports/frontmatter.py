@@ -194,7 +194,8 @@ def abstract(f: dict, config) -> Latex:
             rf"exact tuning). Beyond the paper, every interval of instability closes exactly "
             rf"where $\omega_1T/2 = a\pi$ and $\omega_2T/2 = b\pi$ with $a + b = n$, i.e.\ at "
             rf"${m_eq}$, and nowhere else; with friction the $n$-th interval exists only above "
-            rf"${odd}$ for odd and ${even}$ for even $n$; at $Q = {f['island_Q']}$ the "
+            rf"${odd}$ for odd and ${even}$ for even $n$ (to leading order in $1/Q$); at "
+            rf"$Q = {f['island_Q']}$ the "
             rf"third interval vanishes for ${gap}$ in the paper's model. Every edge is computed "
             rf"to any number of digits with a proof in ball arithmetic.",
             rf"Все {n_rows} пронумерованных результатов статьи Е.\,И.~Бутикова об областях "
@@ -205,7 +206,8 @@ def abstract(f: dict, config) -> Latex:
             rf"настройке). Помимо статьи: каждый интервал неустойчивости смыкается в "
             rf"точности там, где $\omega_1T/2 = a\pi$ и $\omega_2T/2 = b\pi$ при $a + b = n$, "
             rf"т.\,е.\ при ${m_eq}$, и нигде больше; с трением $n$-й интервал существует лишь "
-            rf"при ${odd}$ для нечётных и ${even}$ для чётных $n$; при $Q = {f['island_Q']}$ "
+            rf"при ${odd}$ для нечётных и ${even}$ для чётных $n$ (в главном порядке по "
+            rf"$1/Q$); при $Q = {f['island_Q']}$ "
             rf"третий интервал исчезает при ${gap}$ в модели статьи. Каждая граница вычисляется "
             rf"с любым числом знаков и доказательством в шаровой арифметике.",
         )

@@ -65,3 +65,20 @@ def test_a_sentence_of_the_threshold_verdict_starts_with_a_capital():
     assert "$1/Q$. Paper model: leading term" in row.how
     with language("ru"):
         assert "Модель статьи: главный член" in tr(row.how)
+
+
+def test_the_printed_command_names_no_directory_of_the_machine():
+    """The command under the title names the output directory by its last component: an absolute
+    ``--out`` is no part of the report."""
+    from argparse import Namespace
+
+    from reports.commands.report import _command_line
+
+    def line(out, **kw):
+        args = {"lang": "en", "no_pdf": False, "no_cache": False, **kw}
+        return _command_line(Namespace(out=out, **args))
+
+    assert line("/home/someone/work/report") == "paramres report --out report"
+    assert line("report") == "paramres report --out report"
+    assert line("out dir/", lang="ru") == "paramres report --out 'out dir' --lang ru"
+    assert line(".") == "paramres report --out ."

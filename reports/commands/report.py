@@ -6,7 +6,7 @@ from __future__ import annotations
 import shlex
 import sys
 import time
-from pathlib import Path
+from pathlib import Path, PurePath
 
 from ..output import dump_json
 
@@ -139,8 +139,9 @@ def _run(args) -> int:
 
 def _command_line(args) -> str:
     """The command that produced the report, as a user would type it again (the options given,
-    with their values; machine-specific cache paths are left out)."""
-    words = ["paramres", "report", "--out", str(args.out)]
+    with their values; machine-specific cache paths are left out, and the output directory is
+    named by its last component alone: where the report was written is no part of it)."""
+    words = ["paramres", "report", "--out", PurePath(str(args.out)).name or "."]
     if args.lang != "en":
         words += ["--lang", args.lang]
     if args.no_pdf:
