@@ -325,6 +325,22 @@ def test_nonlinear_runaway_stops_at_its_budget_of_steps():
     assert len(sim.strobe) == 4 and len(sim.envelope) == 3
 
 
+def test_nonlinear_budget_of_a_whole_run(monkeypatch):
+    # the budget of the whole run caps the per-period one: 300 periods of small swings (about
+    # 20 steps each) refused under a budget of 2000 where the steps run out, run in full below
+    import verify.pendulum_ode as ode
+
+    monkeypatch.setattr(ode, "MAX_STEPS", 2000)
+    with pytest.raises(InputError) as exc:
+        simulate(1, F(1, 20), T="0.98", periods=300, amplitude=F(1, 100), nonlinear=True)
+    msg = str(exc.value)
+    assert "more than 2000 integration steps by period " in msg
+    k = int(msg.split("by period ")[1].split()[0])
+    assert 50 < k < 300 and f"ask for at most {k - 1} periods" in msg
+    sim = simulate(1, F(1, 20), T="0.98", periods=k - 1, amplitude=F(1, 100), nonlinear=True)
+    assert len(sim.envelope) == k - 1
+
+
 def test_nonlinear_runaway_in_the_first_period():
     # m = 0.99: the angular velocity is multiplied by ((1+m)/(1-m))^2 ~ 4e4 at the first switch
     with pytest.raises(InputError, match="by period 1 of 60 .*; ask for a smaller depth m"):
