@@ -156,6 +156,19 @@ def test_bad_input_exit_2_nothing_written(capsys, tmp_path, argv):
     assert not list(tmp_path.iterdir())
 
 
+def test_nonlinear_runaway_refused_nothing_written(capsys, tmp_path):
+    # the jumps at m = 0.99 speed the pendulum up without bound: the run stops at its budget of
+    # integration steps at once (it used to run for minutes, its memory growing by GBs)
+    path = tmp_path / "out.png"
+    argv = ["--order", "1", "--m", "0.99", "--T", "20", "--periods", "60", "--nonlinear"]
+    assert exit_code(["simulate", *argv, "--plot", str(path)]) == 2
+    _, err = capsys.readouterr()
+    assert err.startswith("paramres: error: the motion grows too fast to follow: more than ")
+    assert "integration steps by period 1 of 60" in err and "a smaller depth m" in err
+    assert "Traceback" not in err and len(err.strip().splitlines()) == 1
+    assert not list(tmp_path.iterdir())
+
+
 def test_bad_plot_name_refused_before_any_work(capsys, tmp_path):
     path = tmp_path / "scene.txt"
     code = main(["simulate", "--order", "1", "--m", "0.3", "--edge", "lower", "--plot", str(path)])

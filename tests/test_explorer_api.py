@@ -104,6 +104,20 @@ def test_simulate_is_the_time_domain_run(server):
     assert status == 200 and doc["nonlinear"] is True
 
 
+def test_simulate_runaway_gets_400_at_once(server):
+    # every value within the explorer's caps, yet the jumps at m = 0.99 speed the rotation up
+    # without bound: refused by the budget of integration steps, the worker free again at once
+    import time
+
+    start = time.monotonic()
+    status, doc = get(server, "/api/simulate?T=20&m=0.99&periods=60&samples=200&nonlinear=1")
+    assert status == 400 and doc["error"].startswith("the motion grows too fast to follow")
+    assert "by period 1 of 60" in doc["error"]
+    assert time.monotonic() - start < 10
+    status, _ = get(server, "/api/simulate?T=1.45&m=0.3&periods=2&nonlinear=1")
+    assert status == 200
+
+
 @pytest.mark.parametrize(
     ("path", "words"),
     [
@@ -174,10 +188,16 @@ def test_a_computation_past_the_time_cap_gets_503(monkeypatch):
         return {}
 
     monkeypatch.setitem(api.ENDPOINTS, "boundary", slow)
+    monkeypatch.setitem(api.ENDPOINTS, "simulate", slow)
     app = Explorer(port=0, timeout=0.2, warm=False).start()
     try:
         status, doc = get(app, "/api/boundary?order=1&m=0.3")
         assert status == 503 and "took longer than 0.2 s" in doc["error"]
+        assert doc["error"].endswith("ask for fewer digits")
+        release.set()  # the worker is free again
+        release.clear()
+        status, doc = get(app, "/api/simulate?T=1&m=0.3")
+        assert status == 503 and doc["error"].endswith("ask for fewer periods or fewer samples")
     finally:
         release.set()
         app.stop()

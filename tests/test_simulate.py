@@ -308,6 +308,45 @@ def test_nonlinear_with_friction_settles_near_the_estimate():
     assert abs(sim.saturation_estimate / tail.mean() - 1) < 0.1
 
 
+def test_nonlinear_runaway_stops_at_its_budget_of_steps():
+    # at m = 0.9, T = 20 the jumps speed the rotation up until a period needs tens of thousands
+    # of steps: the run stops in period 4 (more than 4 * MAX_STEPS_PER_PERIOD steps by then)
+    # and says so; the 3 periods it offers are run in full, the same as at the start of the
+    # refused run
+    from verify.pendulum_ode import MAX_STEPS_PER_PERIOD
+
+    with pytest.raises(InputError) as exc:
+        simulate(1, "0.9", T="20", periods=60, nonlinear=True)
+    msg = str(exc.value)
+    assert msg.startswith("the motion grows too fast to follow: ")
+    assert f"more than {4 * MAX_STEPS_PER_PERIOD} integration steps by period 4 of 60" in msg
+    assert "times the natural frequency" in msg and "ask for at most 3 periods" in msg
+    sim = simulate(1, "0.9", T="20", periods=3, nonlinear=True, samples=8)
+    assert len(sim.strobe) == 4 and len(sim.envelope) == 3
+
+
+def test_nonlinear_budget_of_a_whole_run(monkeypatch):
+    # the budget of the whole run caps the per-period one: 300 periods of small swings (about
+    # 20 steps each) refused under a budget of 2000 where the steps run out, run in full below
+    import verify.pendulum_ode as ode
+
+    monkeypatch.setattr(ode, "MAX_STEPS", 2000)
+    with pytest.raises(InputError) as exc:
+        simulate(1, F(1, 20), T="0.98", periods=300, amplitude=F(1, 100), nonlinear=True)
+    msg = str(exc.value)
+    assert "more than 2000 integration steps by period " in msg
+    k = int(msg.split("by period ")[1].split()[0])
+    assert 50 < k < 300 and f"ask for at most {k - 1} periods" in msg
+    sim = simulate(1, F(1, 20), T="0.98", periods=k - 1, amplitude=F(1, 100), nonlinear=True)
+    assert len(sim.envelope) == k - 1
+
+
+def test_nonlinear_runaway_in_the_first_period():
+    # m = 0.99: the angular velocity is multiplied by ((1+m)/(1-m))^2 ~ 4e4 at the first switch
+    with pytest.raises(InputError, match="by period 1 of 60 .*; ask for a smaller depth m"):
+        simulate(1, "0.99", T="20", periods=60, nonlinear=True, samples=200)
+
+
 def test_amplitude_factor():
     # K(0) = pi/2: small swings keep their period; at 90 degrees the period grows by 18.0%
     assert amplitude_factor(1e-8) == pytest.approx(1.0, abs=1e-12)

@@ -18,10 +18,28 @@ import sys
 import numpy as np
 
 from analytic.system import PAPER
+from paramres.inputs import InputError
 
 from .simulation import Segment
 
-__all__ = ["amplitude_factor", "saturation_estimate", "run_nonlinear"]
+__all__ = [
+    "MAX_STEPS",
+    "MAX_STEPS_PER_PERIOD",
+    "amplitude_factor",
+    "saturation_estimate",
+    "run_nonlinear",
+]
+
+#: the most integration steps (DOP853's steps, rejected ones included) a run may take by the end
+#: of its ``k``-th modulation period: ``MAX_STEPS_PER_PERIOD * k``, and never more than
+#: :data:`MAX_STEPS` in all.  A pendulum swinging or rotating at a few times its natural frequency
+#: takes 10 to 50 steps per period at the default tolerances (a few hundred at ``rtol = 1e-14``,
+#: a few thousand when it rotates hundreds of times per ``T0`` through long periods); one whose
+#: rotation the jumps keep speeding up (``phi'`` multiplied by ``((1+m)/(1-m))^2`` at every other
+#: switch) takes ever more, and would run until the memory of its recorded steps ran out.
+MAX_STEPS_PER_PERIOD = 10_000
+#: the most integration steps of a whole run (their record takes about 150 bytes each)
+MAX_STEPS = 4_000_000
 
 
 def amplitude_factor(A: float) -> float:
@@ -71,7 +89,11 @@ def run_nonlinear(m, Q, tau, s0, loop, K, samples, rtol, atol, system=PAPER):
     Each half period starts with the step the integrator chose at the same place of the previous
     half period of the same kind (:class:`_Halves`) instead of DOP853's own guess, which is smaller
     and costs two evaluations: the step control (the same ``rtol``/``atol``) accepts it or shrinks
-    it, as any step."""
+    it, as any step.
+
+    A run that needs more than ``MAX_STEPS_PER_PERIOD * k`` integration steps by the end of its
+    ``k``-th period (or more than :data:`MAX_STEPS` in all) stops there with an
+    :class:`~paramres.inputs.InputError`: the runs within that budget are not changed by it."""
     W = system.values(m)
     w2 = [(2 * math.pi) ** 2 * float(W[0]), (2 * math.pi) ** 2 * float(W[1])]
     g = 0.0 if Q is None else math.pi / float(Q)
@@ -107,13 +129,22 @@ def run_nonlinear(m, Q, tau, s0, loop, K, samples, rtol, atol, system=PAPER):
     halves = []  # the index in ``steps`` of the first step of each recorded half period
     jumps = (k12, 1 / k12)
     first = [0.0, 0.0]  # the first step of the next half period of each kind (0: DOP853's guess)
+    used = 0  # DOP853's steps so far
     for k in loop:
+        budget = min(MAX_STEPS_PER_PERIOD * (k + 1), MAX_STEPS)
         for h in (0, 1):
             cur[0] = w2[h]
             mark = len(steps)
             if k < K:
                 halves.append(mark)
-            p, v = run((p, v), lengths[h], first[h])
+            left = budget - used
+            if left < 1:  # pragma: no cover - a half period takes at least one step
+                raise _too_fast(budget, k, K, steps[mark:])
+            done = run((p, v), lengths[h], first[h], left)
+            if done is None:
+                raise _too_fast(budget, k, K, steps[mark:])
+            p, v, taken = done
+            used += taken
             if len(steps) - mark >= 4:  # a second step that is not the last (cut to the jump)
                 first[h] = steps[mark + 2][0] - steps[mark + 1][0]
             if k >= K:  # beyond the plotted periods: nothing kept
@@ -126,6 +157,18 @@ def run_nonlinear(m, Q, tau, s0, loop, K, samples, rtol, atol, system=PAPER):
         return _hermite_segments(steps, halves, lengths, tau, w2, g, samples)
 
     return strobe, dense, env
+
+
+def _too_fast(budget: int, k: int, K: int, half: list) -> InputError:
+    """The refusal of a run that went past its budget of steps in period ``k + 1`` (``half``:
+    the steps recorded in the half period where it stopped)."""
+    top = max((abs(s[2]) for s in half), default=0.0) / (2 * math.pi)  # in units of omega0
+    fewer = f"at most {k} periods, " if k >= 2 else ""
+    return InputError(
+        f"the motion grows too fast to follow: more than {budget} integration steps by period "
+        f"{k + 1} of {max(K, 2)} (|phi'| reached {top:.3g} times the natural frequency); ask for "
+        f"{fewer}a smaller depth m or a shorter period T"
+    )
 
 
 def _dop853_module():
@@ -159,9 +202,9 @@ def _dop853_module():
 
 class _Halves:
     """DOP853 as :class:`scipy.integrate.ode` runs it (``set_integrator("dop853", rtol=rtol,
-    atol=atol, nsteps=10**7)``, the step callback ``solout``, scipy's defaults for the step
-    control), run from ``t = 0`` over one half period at a time, the integrator's arrays made
-    once and its first step given: :meth:`run`."""
+    atol=atol)``, the step callback ``solout``, scipy's defaults for the step control), run from
+    ``t = 0`` over one half period at a time, the integrator's arrays made once, its first step
+    and its largest number of steps given: :meth:`run`."""
 
     #: scipy's ``dop853`` defaults: WORK(2) safety factor, WORK(3) and WORK(4) the bounds of the
     #: step ratio, WORK(5) beta of the step control, WORK(6) the largest step (0: no limit)
@@ -174,18 +217,22 @@ class _Halves:
         iwork = np.zeros(21, dtype=np.int32)
         self.rhs = rhs
         self.runner = _dop853_module().dopri853
-        self.args = (rtol, atol, solout, 1, work, iwork, 10**7, -1, ())
+        self.args = (rtol, atol, solout, 1, work, iwork)  # then nsteps, verbosity (-1: silent), ()
         self.work = work
+        self.iwork = iwork
 
-    def run(self, state, length: float, first: float) -> tuple[float, float]:
+    def run(self, state, length: float, first: float, most: int) -> tuple[float, float, int] | None:
         """The state ``(phi, phi')`` after ``length`` from ``state``, the first step ``first``
-        (``0``: DOP853's own initial guess)."""
+        (``0``: DOP853's own initial guess), and the number of steps DOP853 took (rejected ones
+        included); ``None`` when that would be more than ``most`` (``>= 1``)."""
         self.work[6] = first  # DOP853's WORK(7): the initial step
-        _, y, istate = self.runner(self.rhs, 0.0, np.array(state), length, *self.args)
+        _, y, istate = self.runner(self.rhs, 0.0, np.array(state), length, *self.args, most, -1, ())
+        if istate == -2:  # DOP853's "larger nmax is needed"
+            return None
         if istate < 0:  # pragma: no cover - DOP853 on a smooth right-hand side
             raise RuntimeError(f"the integration of a half period failed (DOP853 status {istate})")
         p, v = y.tolist()
-        return p, v
+        return p, v, int(self.iwork[17])  # IWORK(18): the number of steps
 
 
 def _hermite_envelope(steps, halves, w2, g, K) -> tuple[float, ...]:

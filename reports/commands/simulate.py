@@ -46,7 +46,9 @@ def register(subparsers) -> None:
             "multiplier. The linear model is propagated exactly (closed-form segments) at "
             "--digits digits; --nonlinear integrates phi'' + 2 gamma phi' + omega^2 sin(phi) = 0 "
             "between the jumps: the amplitude-dependent period limits the growth, unless the "
-            "pendulum goes over the top, which the run detects and reports (it then rotates)."
+            "pendulum goes over the top, which the run detects and reports (it then rotates); a "
+            "rotation that the jumps keep speeding up is stopped at a budget of integration steps "
+            "and refused."
         ),
         formatter_class=argparse.RawDescriptionHelpFormatter,
     )

@@ -12,8 +12,10 @@ at once could disturb each other's digits (the colour map alone, pure numpy, and
 answered on the HTTP thread without waiting); the HTTP threads wait for the worker at most
 :data:`REQUEST_SECONDS` and answer 503 (``{"error": "... took longer than ..."}``) past that.
 The explorer's caps (:data:`.api.LIMITS`: digits <= 100, grids <= 600 x 400, orders <= 12, runs
-<= 60 periods) keep each computation to seconds, so a request that timed out does not hold the
-worker for long.  The server binds ``127.0.0.1`` unless another host is asked for.
+<= 60 periods; the nonlinear run's budget of integration steps,
+:data:`verify.pendulum_ode.MAX_STEPS_PER_PERIOD`) keep each computation to seconds, so a request
+that timed out does not hold the worker for long.  The server binds ``127.0.0.1`` unless another
+host is asked for.
 """
 
 from __future__ import annotations
@@ -44,6 +46,15 @@ MAX_QUERY = 4000
 MAX_PENDING = 16
 #: seconds after the start when the rest of the warm-up begins if no chart was asked for
 WARM_DELAY = 5.0
+
+#: what a request that took too long may change, per endpoint (the parameters that set its cost)
+_ADVICE = {
+    "boundary": "ask for fewer digits",
+    "multipliers": "ask for fewer digits",
+    "point": "ask for fewer digits",
+    "chart": "ask for a smaller grid (nt, nm) or fewer orders (max_order)",
+    "simulate": "ask for fewer periods or fewer samples",
+}
 
 
 def static_file(name: str) -> bytes | None:
@@ -192,7 +203,7 @@ class Explorer:
                 future.cancel()
                 return 503, {
                     "error": f"the computation took longer than {self.timeout:g} s; "
-                    "ask for fewer digits or a smaller grid"
+                    + _ADVICE.get(name, "try again in a moment")
                 }
             except InputError as exc:
                 return 400, {"error": " ".join(str(exc).split())}
