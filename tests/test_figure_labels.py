@@ -74,3 +74,46 @@ def test_a_closings_label_lies_on_a_light_ground():
     ground = label.get_bbox_patch()
     assert ground is not None and ground.get_facecolor()[:3] == (1.0, 1.0, 1.0)
     assert label.get_zorder() > max(line.get_zorder() for line in fig.axes[0].lines)
+
+
+def test_the_labels_of_the_front_cover_no_marker_and_no_other_label():
+    """A front label goes where it covers no point (a slower method just right of a front point
+    at its height, like findroot beside 'auto, tol=1e-13'), no other label, no step."""
+    from reports.benchplots import pareto_figure
+
+    points = [
+        {"method": "series K=1", "family": "series", "seconds": 1e-6, "error": 1e-3, "front": 1},
+        {
+            "method": "auto, tol=1e-13",
+            "family": "auto",
+            "seconds": 1e-5,
+            "error": 1e-14,
+            "front": 1,
+        },
+        {"method": "findroot 15", "family": "findroot", "seconds": 2.5e-5, "error": 3e-14},
+        {"method": "mpmath 15", "family": "mpmath", "seconds": 3e-5, "error": 1e-19},
+        {
+            "method": "certified 15",
+            "family": "certified",
+            "seconds": 1.2e-5,
+            "error": 1e-22,
+            "front": 1,
+        },
+        {"method": "mpmath 30", "family": "mpmath", "seconds": 1e-2, "error": 1e-35},
+    ]
+    fig = pareto_figure([("all scenes", points)])
+    pdf_bytes(fig)
+    renderer = fig._get_renderer()
+    ax = fig.axes[0]
+    labels = [
+        t for t in ax.texts if t.get_text() in ("auto, tol=1e-13", "certified 15", "series K=1")
+    ]
+    assert len(labels) == 3
+    boxes = [t.get_window_extent(renderer) for t in labels]
+    centres = [ax.transData.transform((p["seconds"], p["error"])) for p in points]
+    for t, box in zip(labels, boxes, strict=True):
+        for x, y in centres:
+            assert not (box.x0 - 2 < x < box.x1 + 2 and box.y0 - 2 < y < box.y1 + 2), t.get_text()
+    for i, a in enumerate(boxes):
+        for b in boxes[i + 1 :]:
+            assert not a.overlaps(b)
