@@ -625,5 +625,5 @@ def _claim15() -> Row:
         _latex(generalised),
         _latex((f13, f17)),
         how,
-        "Left edge of the third interval (section 3.2)",
+        "Left edge of the third interval (the paper's section 3.2)",
     )

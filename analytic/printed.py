@@ -202,7 +202,8 @@ CLAIMS: dict[str, tuple[str, str, str]] = {
         "radicand",
     ),
     "15-n3": (
-        "Section 3.2: for the left edge of the third interval 'we get the same equations (10)-(11) "
+        "The paper's section 3.2: for the left edge of the third interval "
+        "'we get the same equations (10)-(11) "
         "and the same equation (15) ... this holds for all odd-order intervals', solved near "
         "$T = nT_{av}/2$.",
         "15",

@@ -72,13 +72,16 @@ def pareto_figure(panels: Sequence[tuple[str, Sequence[dict]]], *, subtitle: str
                     label=label,
                     zorder=3,
                 )
+            ax.set_ylim(FLOOR / 1e4, 10 ** (np.ceil(np.log10(top)) + 2))
             front = sorted((p for p in points if p.get("front")), key=lambda p: p["seconds"])
             if front:
                 xs = np.array([p["seconds"] for p in front])
                 ys = np.array([max(float(p["error"]), FLOOR) for p in front])
                 ax.step(xs, ys, where="post", color="0.4", lw=0.6, zorder=2)
+                scale = _Points(fig, ax, len(panels))
+                taken: list[tuple[float, float, float, float]] = []
                 for text, x, y in _front_labels(front, xs, ys, points):
-                    ax.annotate(
+                    label = ax.annotate(
                         text,
                         (x, y),
                         textcoords="offset points",
@@ -86,6 +89,7 @@ def pareto_figure(panels: Sequence[tuple[str, Sequence[dict]]], *, subtitle: str
                         fontsize=6,
                         color="0.2",
                     )
+                    taken.append(_place(fig, label, scale, points, xs, ys, taken))
             ax.axhline(FLOOR, color="0.6", lw=0.5, ls="--", zorder=1)
             ax.annotate(
                 say("resolution of the reference", "разрешение эталона"),
@@ -98,7 +102,6 @@ def pareto_figure(panels: Sequence[tuple[str, Sequence[dict]]], *, subtitle: str
             )
             ax.set_title(title)
             ax.set_xlabel(say("median CPU time per edge (s)", "медиана времени ЦП на границу (с)"))
-            ax.set_ylim(FLOOR / 1e4, 10 ** (np.ceil(np.log10(top)) + 2))
             ax.grid(True, which="major", lw=0.3, color="0.85")
         axes[0].set_ylabel(
             say(
@@ -163,6 +166,82 @@ def _front_labels(front, xs, ys, points=()):
         out.append((text, x, y))
         k = j + 1
     return out
+
+
+#: where a front label may go, tried in turn: (offset in points, horizontal alignment, vertical
+#: alignment) -- above right of its point, a little higher, below right, above left, below left
+LABEL_PLACES = (
+    ((4, 3), "left", "baseline"),
+    ((4, 6), "left", "baseline"),
+    ((4, -3), "left", "top"),
+    ((-4, 3), "right", "baseline"),
+    ((-4, -3), "right", "top"),
+)
+
+#: a marker's half width and a little air, points: the markers of the front are 6 points across,
+#: the others 4
+MARKER_PT = {True: 3.5, False: 2.5}
+
+#: room the axes of one row of panels leave for the tick labels, the axis label and the padding:
+#: across, per panel, and up, as a share of the figure's height, points
+AXES_MARGIN_PT = 26.0
+AXES_HEIGHT_SHARE = 0.75
+
+
+class _Points:
+    """Data to points from the axes' lower left corner, the axes' size estimated from the
+    figure's (the layout comes when the figure is drawn)."""
+
+    def __init__(self, fig, ax, panels: int):
+        self.w = (72 * fig.get_figwidth() - AXES_MARGIN_PT * panels) / panels
+        self.h = 72 * fig.get_figheight() * AXES_HEIGHT_SHARE
+        self.x = np.log10(ax.get_xlim())
+        self.y = np.log10(ax.get_ylim())
+
+    def __call__(self, x: float, y: float) -> tuple[float, float]:
+        u = (np.log10(x) - self.x[0]) / (self.x[1] - self.x[0]) * self.w
+        v = (np.log10(max(y, FLOOR)) - self.y[0]) / (self.y[1] - self.y[0]) * self.h
+        return float(u), float(v)
+
+
+def _place(fig, label, scale, points, xs, ys, taken):
+    """Put ``label`` at the first place of :data:`LABEL_PLACES` where it covers no marker, no
+    label placed before (``taken``, boxes in points) and no part of the front's step line
+    (``xs``, ``ys``); where none is clear, above right.  Its box, in points."""
+    from .figures import pdf_text_extent
+
+    x0, x1 = pdf_text_extent(fig, label)
+    width = x1 - x0
+    px, py = scale(*label.xy)
+    marks = [
+        (*scale(p["seconds"], float(p["error"])), MARKER_PT[bool(p.get("front"))]) for p in points
+    ]
+    line = [scale(x, y) for x, y in zip(xs, ys, strict=True)]
+    steps = []  # the step line: a horizontal then a vertical piece from each point to the next
+    for (u0, v0), (u1, v1) in zip(line, line[1:], strict=False):
+        steps += [(u0, v0, u1, v0), (u1, min(v0, v1), u1, max(v0, v1))]
+    boxes = []
+    for (dx, dy), ha, va in LABEL_PLACES:
+        left = px + (dx if ha == "left" else dx - width)
+        bottom = py + (dy - 1.5 if va == "baseline" else dy - 6.0)
+        box = (left, bottom, left + width, bottom + 6.5)
+        boxes.append(box)
+        clear = not any(
+            box[0] - r < u < box[2] + r and box[1] - r < v < box[3] + r for u, v, r in marks
+        )
+        clear = clear and not any(
+            a[0] < box[2] and box[0] < a[2] and a[1] < box[3] and box[1] < a[3] for a in taken
+        )
+        clear = clear and not any(
+            min(a, c) < box[2] and box[0] < max(a, c) and min(b, d) < box[3] and box[1] < max(b, d)
+            for a, b, c, d in steps
+        )
+        if clear:
+            label.set_position((dx, dy))
+            label.set_horizontalalignment(ha)
+            label.set_verticalalignment(va)
+            return box
+    return boxes[0]
 
 
 def save_figure(fig: Figure, path) -> Path:

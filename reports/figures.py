@@ -181,8 +181,10 @@ def pdf_text_extent(fig: Figure, text) -> tuple[float, float]:
     laid out at the size and resolution the PDF uses, so that drawing the figure later reuses
     those layouts (:data:`MATHTEXT_CACHE`) instead of making its own at the screen's
     resolution."""
+    from matplotlib.text import Text
+
     renderer = _PdfMetrics(fig.get_figwidth(), fig.get_figheight())
-    box = text.get_window_extent(renderer, dpi=72)
+    box = Text.get_window_extent(text, renderer, dpi=72)  # an annotation: its text alone
     return box.x0, box.x1
 
 
@@ -258,9 +260,14 @@ def draw_regions(
                 ax.plot(np.where(ok, side, np.nan), m, color=edge, lw=linewidth, ls=linestyle)
 
 
-def _order_label(ax, n: int, T: float, m: float, color) -> None:
+#: room the axes leave on the left and right of a full-width figure (tick labels, the axis
+#: label, the padding), points
+AXES_MARGIN_PT = 52.0
+
+
+def _order_label(ax, n: int, T: float, m: float, color=None):
     """The order's label just right of the tip of its interval (not on it)."""
-    ax.annotate(
+    return ax.annotate(
         f"$n={n}$",
         (T, m),
         xytext=(4, 3),
@@ -270,6 +277,15 @@ def _order_label(ax, n: int, T: float, m: float, color) -> None:
         color=color,
         fontsize=8,
     )
+
+
+def _room_right(fig: Figure, label, T: float, hi: float, lo: float = 0.0, panels: int = 1) -> float:
+    """The right end of the horizontal axis, at least ``hi``, that leaves room inside the axes for
+    ``label`` (an annotation of :func:`_order_label` at the period ``T``)."""
+    x0, x1 = pdf_text_extent(fig, label)
+    axes_pt = (72 * fig.get_figwidth() - AXES_MARGIN_PT * panels) / panels
+    need = (x1 - x0 + 4 + 3) / axes_pt  # the offset and a little air, as a share of the axes
+    return max(hi, (T - need * lo) / (1 - need))
 
 
 def intervals_figure(
@@ -291,14 +307,24 @@ def intervals_figure(
         for k, n in enumerate(orders):
             col = ORDER_COLOURS[k % len(ORDER_COLOURS)]
             draw_regions(ax, m, bounds[k : k + 1], color=col, alpha=0.35, edge=col)
-            _order_label(ax, n, n / 2, 0.0, col)
+            last = _order_label(ax, n, n / 2, 0.0, col)
         for _, mc, tc, label in closings:
             ax.plot([tc], [mc], "o", ms=3, color="k", zorder=5)
-            ax.annotate(label, (tc, mc), xytext=(4, 2), textcoords="offset points", fontsize=7)
+            ax.annotate(  # on a light ground: where closings crowd, an edge passes behind it
+                label,
+                (tc, mc),
+                xytext=(4, 2),
+                textcoords="offset points",
+                fontsize=7,
+                zorder=6,
+                bbox={"boxstyle": "square,pad=0.1", "fc": "white", "ec": "none", "alpha": 0.85},
+            )
         ax.set_xlabel(say(r"modulation period $T/T_0$", r"период модуляции $T/T_0$"))
         ax.set_ylabel(say(r"modulation depth $m$", r"глубина модуляции $m$"))
         ax.set_ylim(0, float(np.nanmax(m)))
         hi = t_max if t_max is not None else float(np.nanmax(bounds)) + 0.05
+        if orders:  # the last order's label inside the axes
+            hi = _room_right(fig, last, max(orders) / 2, hi)
         ax.set_xlim(0, hi)
         if title:
             ax.set_title(title)
@@ -356,7 +382,7 @@ def friction_figure(
                 shade = FRICTION_SHADES[min(j, len(FRICTION_SHADES) - 1)]
                 draw_regions(ax, m, b, color=shade, edge="k", linewidth=0.4, label=label)
             for n in orders:
-                ax.annotate(f"$n={n}$", (n / 2, 0.0), ha="center", va="bottom", fontsize=8)
+                _order_label(ax, n, n / 2, 0.0)  # beside the tip, not on it
             ax.set_title(title)
             ax.set_xlabel(r"$T/T_0$")
             hi = t_max if t_max is not None else max(orders) / 2 + 0.4

@@ -398,7 +398,9 @@ PHRASES: dict[str, str] = {
         "Отрезки на нижней границе первого интервала"
     ),
     "Product-to-sum form of (12)": "(12) с произведениями, записанными как суммы",
-    "Left edge of the third interval (section 3.2)": "Левая граница третьего интервала (разд. 3.2)",
+    "Left edge of the third interval (the paper's section 3.2)": (
+        "Левая граница третьего интервала (разд. 3.2 статьи)"
+    ),
     "Stationary initial condition on the lower edge (after eq. 15)": (
         "Стационарное начальное условие на нижней границе (после ур. 15)"
     ),
@@ -955,7 +957,8 @@ _CATALOGUE = [
         {"check": _check_ru},
     ),
     (
-        "Section 3.2: for the left edge of the third interval 'we get the same equations (10)-(11) "
+        "The paper's section 3.2: for the left edge of the third interval "
+        "'we get the same equations (10)-(11) "
         "and the same equation (15) ... this holds for all odd-order intervals', solved near "
         "$T = nT_{av}/2$. Derived: for $n = 3$ the shape (8)-(9) of eqs. (10)-(11) gives <eq>, "
         "whose small-$m$ root has $\\Delta T > 0$: the upper (right) edge. Eq. (15) with "
@@ -965,7 +968,8 @@ _CATALOGUE = [
         "two shapes swap edges at every closing of the interval. The printed (15) with "
         "$nT_{av}/2$ does give the left edge of every odd interval at small $m$; the statement "
         "that it comes from (10)-(11) holds only for $n = 1, 5, 9, \\dots$",
-        "Раздел 3.2: для левой границы третьего интервала «получаются те же уравнения (10)-(11) и "
+        "Раздел 3.2 статьи: для левой границы третьего интервала "
+        "«получаются те же уравнения (10)-(11) и "
         "то же уравнение (15) ... это справедливо для всех интервалов нечётного порядка», "
         "решаемое вблизи $T = nT_{av}/2$. Вывод: при $n = 3$ форма (8)-(9) уравнений (10)-(11) "
         "даёт <eq>; корень этого уравнения при малых $m$ имеет $\\Delta T > 0$, т. е. это верхняя "

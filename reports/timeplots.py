@@ -118,6 +118,11 @@ PAPER_SCENES: dict[int, Scene] = {
 # drawing
 
 
+#: the vertical margins of the phase plane and of the velocity plot, as shares of the data range
+#: (matplotlib's default is 0.05): a number is drawn 3 points above its point and is 7 points high
+NUMBERED_MARGIN = (0.1, 0.2)
+
+
 def _new(width: float, height: float) -> Figure:
     fig = Figure(figsize=(width, height))
     FigureCanvasAgg(fig)
@@ -279,6 +284,10 @@ def draw_run(ax_phase, ax_vel, ax_angle, sim, *, numbered: int = 8) -> None:
     for k, t, _, dphi in points:
         ax_vel.plot([t], [dphi], "o", ms=2.2, color="k")
         ax_vel.annotate(str(k), (t, dphi), textcoords="offset points", xytext=(3, 3), fontsize=7)
+    # room above and below the curves, so that the numbered points at their extremes and the
+    # numbers above them stay off the frame
+    ax_phase.margins(y=NUMBERED_MARGIN[0])
+    ax_vel.margins(y=NUMBERED_MARGIN[1])
     rad = say("rad", "рад")
     ax_phase.set_xlabel(rf"$\varphi$ ({rad})")
     ax_phase.set_ylabel(rf"$\dot\varphi$ ({rad}$/T_0$)")

@@ -123,3 +123,16 @@ def test_exact_average_frequency_is_decided_symbolically(rows):
     # eq. (7): omega_av/omega_0 = (1/sqrt(1+m) + 1/sqrt(1-m))/2 is an exact identity of the model;
     # the check reduces it to zero without falling back to random points
     assert "(simplifies symbolically to zero)" in rows["7"].how
+
+
+def test_the_papers_sections_are_named_as_the_papers(rows):
+    """'(section 3.2)' would read as a section of the report: it is the paper's, in both
+    languages."""
+    from reports.i18n import language, tr
+
+    r = rows["15-n3"]
+    assert "the paper's section 3.2" in r.title
+    assert r.how.startswith("The paper's section 3.2:")
+    with language("ru"):
+        assert "разд. 3.2 статьи" in tr(r.title)
+        assert tr(r.how).startswith("Раздел 3.2 статьи:")

@@ -60,6 +60,8 @@ def test_prose(plain, expected):
         ("printed $q^2$ where omega_1 gives $q$", r"printed $q^2$ where $\omega_{1}$ gives $q$"),
         ("no math", "no math"),
         ("costs $5", r"costs \$5"),
+        # a range of equations takes an en dash in the text, not inside a formula
+        ("the printed (22)-(23) and $x-(1)$", r"the printed (22)--(23) and $x-(1)$"),
     ],
 )
 def test_mixed(src, expected):

@@ -140,6 +140,10 @@ def _prose_only(s: str) -> Latex:
 INLINE_FRACTION_WIDTH = 24
 
 
+#: a range of equations in prose, ``(10)-(11)``: set with an en dash
+_EQ_RANGE = re.compile(r"\((\d+)\)-\((\d+)\)")
+
+
 def mixed(s: str, config: Config = DEFAULT) -> Latex:
     """Text with in-line formulas already in LaTeX between ``$`` signs (as the engine's
     explanations are written): the formulas pass through, the text between them goes through
@@ -157,7 +161,7 @@ def mixed(s: str, config: Config = DEFAULT) -> Latex:
     out = []
     for k, part in enumerate(parts):
         if k % 2 == 0:
-            out.append(_prose_only(part).raw)
+            out.append(_EQ_RANGE.sub(r"(\1)--(\2)", _prose_only(part).raw))
         elif visible_width(part) > config.fit_width or (
             r"\frac" in part and visible_width(part) > INLINE_FRACTION_WIDTH
         ):
