@@ -125,8 +125,10 @@ def test_front_matter(reports, lang):
         assert prov.commit in head
     today = datetime.now(timezone.utc)
     assert str(today.year) in head
-    expected = f"paramres report -{{}}-out {reports[lang]}"
+    # the producing command, its output directory by name alone (no path of this machine)
+    expected = f"paramres report -{{}}-out {reports[lang].name}"
     assert expected in head.replace("-{}-{}", "-{}-"), "the producing command is printed"
+    assert str(reports[lang].parent) not in head
     if lang == "ru":
         assert "-{}-lang ru" in head.replace("-{}-{}", "-{}-")
     for piece in (

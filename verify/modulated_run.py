@@ -26,6 +26,7 @@ import numpy as np
 
 from .inputs import InputError, as_depth, as_modulation, as_order, as_period, as_quality
 from .params import exact_fraction
+from .pendulum_ode import MAX_STEPS, MAX_STEPS_PER_PERIOD, too_fast
 
 __all__ = ["ModulatedRun", "simulate_modulated"]
 
@@ -141,19 +142,41 @@ def _strobe_growth(states) -> float:
     return float(math.log(max(abs(mu))))
 
 
+class _OverBudget(Exception):
+    """Raised by the right-hand side of a run past its budget of evaluations."""
+
+
+#: evaluations of the right-hand side per step of DOP853 (its stages)
+_STAGES = 12
+
+
 def _propagate(y, pieces, T, periods, gamma, nonlinear, peak):
+    """The states once per period over ``periods`` periods; a run that needs more than
+    :data:`verify.pendulum_ode.MAX_STEPS_PER_PERIOD` steps per period so far (counted as
+    evaluations of the right-hand side over DOP853's 12 stages), or more than
+    :data:`~verify.pendulum_ode.MAX_STEPS`, stops with :func:`~verify.pendulum_ode.too_fast`'s
+    refusal."""
     from scipy.integrate import solve_ivp
 
     f = math.sin if nonlinear else (lambda x: x)
     states = [np.array(y, dtype=float)]
-    for _ in range(periods):
+    calls = [0, 0]  # evaluations so far, and the most allowed by the end of this period
+    for k in range(periods):
+        budget = min(MAX_STEPS_PER_PERIOD * (k + 1), MAX_STEPS)
+        calls[1] = _STAGES * budget
         for ta, tb, l in pieces:
 
             def rhs(t, u, l=l):
+                calls[0] += 1
+                if calls[0] > calls[1]:
+                    raise _OverBudget
                 L = l(t)
                 return [u[1] / (L * L), -2 * gamma * u[1] - _G * L * f(u[0])]
 
-            sol = solve_ivp(rhs, (ta, tb), y, method="DOP853", rtol=1e-12, atol=1e-14)
+            try:
+                sol = solve_ivp(rhs, (ta, tb), y, method="DOP853", rtol=1e-12, atol=1e-14)
+            except _OverBudget:
+                raise too_fast(budget, k, periods) from None
             y = sol.y[:, -1]
             peak[0] = max(peak[0], float(np.max(np.abs(sol.y[0]))))
         states.append(np.array(y))

@@ -25,6 +25,7 @@ from .simulation import Segment
 __all__ = [
     "MAX_STEPS",
     "MAX_STEPS_PER_PERIOD",
+    "too_fast",
     "amplitude_factor",
     "saturation_estimate",
     "run_nonlinear",
@@ -163,11 +164,18 @@ def _too_fast(budget: int, k: int, K: int, half: list) -> InputError:
     """The refusal of a run that went past its budget of steps in period ``k + 1`` (``half``:
     the steps recorded in the half period where it stopped)."""
     top = max((abs(s[2]) for s in half), default=0.0) / (2 * math.pi)  # in units of omega0
+    return too_fast(budget, k, K, top)
+
+
+def too_fast(budget: int, k: int, K: int, top: float | None = None) -> InputError:
+    """The refusal of a run of ``K`` periods that went past its budget of ``budget`` integration
+    steps in period ``k + 1`` (``top``: the largest ``|phi'|`` seen, in units of the natural
+    frequency, where known)."""
     fewer = f"at most {k} periods, " if k >= 2 else ""
+    seen = "" if top is None else f" (|phi'| reached {top:.3g} times the natural frequency)"
     return InputError(
         f"the motion grows too fast to follow: more than {budget} integration steps by period "
-        f"{k + 1} of {max(K, 2)} (|phi'| reached {top:.3g} times the natural frequency); ask for "
-        f"{fewer}a smaller depth m or a shorter period T"
+        f"{k + 1} of {max(K, 2)}{seen}; ask for {fewer}a smaller depth m or a shorter period T"
     )
 
 
