@@ -398,3 +398,17 @@ def test_edge_without_an_interval():
     # order 2 at m = 0.1 needs Q above ~2/(3 m^2) ~ 67 (eq. 43); at Q = 3 there is no interval
     with pytest.raises(InputError, match="no interval"):
         simulate(2, F(1, 10), edge="lower", Q=F(3))
+
+
+def test_a_ramp_run_past_its_budget_is_refused():
+    """The ramp modulation's nonlinear run at ``m = 0.99`` over ``T = 20`` spins ever faster (the
+    run of the square wave is refused alike): refused in its first period with the advice, not
+    run for minutes."""
+    from verify.inputs import InputError
+    from verify.modulated_run import simulate_modulated
+
+    with pytest.raises(InputError, match="grows too fast to follow") as info:
+        simulate_modulated(
+            1, "0.99", modulation="ramp", switch_time="0.01", T="20", periods=60, nonlinear=True
+        )
+    assert "by period 1 of 60" in str(info.value)

@@ -386,3 +386,22 @@ def test_switching_chapter_states_the_closings():
     assert "0.6072728525" in text and "0.6072728527" in text
     assert r"2.75936 \cdot 10^{-7}" in text
     assert text.count("closed ($M = I$)") == 3 and text.count("open (proven)") == 3
+
+
+def test_a_path_past_the_step_budget_is_refused(monkeypatch, capsys):
+    """The sine modulation at ``m = 0.9`` over ``T = 20`` takes about 1700 Taylor steps; with a
+    budget of 200 the integration is refused at once (its steps extrapolated over the period),
+    as a proof that could not be completed: exit status 2 and the advice, no traceback."""
+    import verify.taylor as taylor
+    from verify.certify import CertificationError
+    from verify.modulation import multipliers
+
+    monkeypatch.setattr(taylor, "MAX_STEPS", 200)
+    with pytest.raises(CertificationError, match="vary too fast") as info:
+        multipliers(F(20), F(9, 10), modulation="sine", digits=15)
+    assert "at most 200" in str(info.value)
+    code, out, err = _cli(capsys, "multipliers", "--T", "20", "--m", "0.9", "--modulation", "sine")
+    assert code == 2 and not out
+    assert err.startswith("paramres: error: the coefficients vary too fast")
+    assert "Traceback" not in err
+    assert "a smaller depth m or a shorter period T" in err

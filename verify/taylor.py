@@ -41,7 +41,9 @@ from operator import mul
 
 from flint import acb, arb, arb_series, ctx
 
-__all__ = ["MAX_TERMS", "flow", "IntegrationError"]
+from .certify import CertificationError
+
+__all__ = ["MAX_TERMS", "MAX_STEPS", "flow", "IntegrationError"]
 
 #: the most Taylor terms one step may use beyond half the bits wanted (a step that needs more
 #: is halved; with ``rho = 4 h`` each term gains about two bits)
@@ -54,8 +56,18 @@ _GROW = 4
 _RHO = 4
 
 
-class IntegrationError(ArithmeticError):
-    """The integrator could not bound a step (a singularity of ``A`` on the path)."""
+class IntegrationError(CertificationError):
+    """The integrator could not bound a step (a singularity of ``A`` on the path), or the path
+    needs more than :data:`MAX_STEPS` steps."""
+
+
+#: the most Taylor steps one :func:`flow` tries (taken or shortened).  Where the coefficients
+#: vary fast (a length that comes close to zero: the sine modulation at a depth near 1 over a
+#: long period) the steps are short and many, each of them dear; a path that needs more is
+#: refused, and so is one whose steps so far, extrapolated over the whole span, would number more
+#: (checked from the :data:`_FORESEE`-th step on).
+MAX_STEPS = 3000
+_FORESEE = 64
 
 
 def _bound(coef, tc: arb, rho: arb, real: bool = False) -> arb | None:
@@ -285,6 +297,8 @@ def flow(coef, t0: arb, t1: arb, *, h0=None, scale=None, goal_bits=None):
     M = (arb(1), arb(0), arb(0), arb(1))
     t = t0
     span = t1 - t0
+    whole = float(span.mid())
+    tries = 0
     h = arb(span.mid() / 4) if h0 is None else arb(h0)
     while True:
         rest = t1 - t
@@ -292,6 +306,13 @@ def flow(coef, t0: arb, t1: arb, *, h0=None, scale=None, goal_bits=None):
         step = rest if last else h
         hm = arb(step.upper()) if last else step
         rho = hm * _RHO
+        tries += 1
+        if tries >= _FORESEE and tries * whole > MAX_STEPS * float((t - t0).mid()):
+            raise IntegrationError(
+                f"the coefficients vary too fast to integrate over this period: {tries} Taylor "
+                f"steps cover {float(((t - t0) / span).mid()):.2g} of it (at most {MAX_STEPS} "
+                "in all); ask for a smaller depth m or a shorter period T"
+            )
         K = _bound(coef, t, rho)
         done = None if K is None else _step(coef, t, step, K, rho, bits)
         if done is None:
