@@ -395,7 +395,9 @@ def _depths(system: System, a: int, b: int) -> list[Fraction]:
     value = _ratio_sq(system, a, b)
     out = []
     for sol in sols:
-        mv = sp.nsimplify(sol.subs(rho2, sp.Rational(value.numerator, value.denominator)))
+        mv = sol.subs(rho2, sp.Rational(value.numerator, value.denominator))
+        if not mv.is_Rational:  # nsimplify can turn a Rational into powers (-2303/2305)
+            mv = sp.nsimplify(mv)
         if mv.is_Rational and 0 < mv < 1:
             out.append(Fraction(int(mv.p), int(mv.q)))
         elif mv.is_real and not mv.is_Rational:  # pragma: no cover - no built-in law needs it

@@ -200,3 +200,20 @@ def test_factors_swap_across_a_closing():
         arr = np.array([mm])
         d = _window_roots(3, arr, 1) - _window_roots(3, arr, -1)
         assert np.sign(d[0]) == sign
+
+
+def test_family_closings_where_sympy_would_rewrite_a_negative_depth():
+    """Was: NotImplementedError (a traceback from ``paramres crossings --max-order 10 --duty
+    1/7``): for a = 8, b = 1 the depth -2303/2305 (no closing) went through nsimplify, which
+    returned a product of fractional powers.  Every closing listed is the rational
+    m = (rho^2 - 1)/(rho^2 + 1), rho = b D / (a (1 - D))."""
+    from analytic.system import system
+
+    for name, duty, n_max in (("pendulum", "1/7", 10), ("meissner", "0.98", 8)):
+        sysv = system(name, duty=duty)
+        D = sysv.duty
+        items = closings(n_max, sysv).items
+        assert items
+        for c in items:
+            rho = Fraction(c.b) * D / (c.a * (1 - D))
+            assert c.m == (rho**2 - 1) / (rho**2 + 1) and 0 < c.m < 1

@@ -51,6 +51,18 @@ def test_narrow_island_is_found_and_agrees_with_boundary():
         assert not boundary(5, outside, Q="2.008906").exists
 
 
+@pytest.mark.parametrize("order,Q,damping", [(3, "7", "exact"), (1, "10", "paper")])
+def test_json_enclosure_contains_the_threshold(order, Q, damping):
+    """Was: the JSON enclosure was both ends rounded to nearest at 18 digits, e.g.
+    ["0.260066468682716239", "0.260066468682716239"] for order 3, Q = 7, whose threshold is
+    0.2600664686827162388625... (mpmath, the Floquet tangency): a point beside it."""
+    ex = _ex(order, Q, damping)
+    for t, row in zip(ex.thresholds, ex.as_json()["thresholds"], strict=True):
+        lo, hi = (Fraction(x) for x in row["enclosure"])
+        assert lo <= t.enclosure[0] and t.enclosure[1] <= hi and lo < hi
+        assert hi - lo <= Fraction(2, 10**18) * max(1, 10 * abs(lo))  # still 18 digits
+
+
 @pytest.mark.parametrize(
     "order,damping", [(1, "exact"), (3, "exact"), (4, "exact"), (5, "exact"), (3, "paper")]
 )

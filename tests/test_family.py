@@ -328,6 +328,18 @@ def test_multipliers_text_shows_only_proven_digits():
     assert "stable" in text
 
 
+def test_multipliers_decide_growth_far_below_double_precision():
+    """At m = 1e-10, T = 1 (inside the second interval, whose width is about 1e-20) the proven
+    |mu|max = 1 + 4.08e-20 decides instability, whatever mpmath's working precision."""
+    res = multipliers("1", "1e-10", digits=30)
+    with mpmath.workdps(15):
+        assert res.unstable is True
+    assert "unstable" in str(res) and "undecided" not in str(res)
+    assert res.as_json()["unstable"] is True
+    # just outside the upper edge 1.00000000000000000000375...: the pair on the unit circle
+    assert multipliers("1.00000000000000000001", "1e-10", digits=30).unstable is False
+
+
 @pytest.mark.parametrize(
     "kwargs, word",
     [

@@ -200,7 +200,10 @@ class Existence:
                 {
                     "m": t.text(),
                     "appears": t.appears,
-                    "enclosure": [mpmath.nstr(_mpf(e), self.digits + 3) for e in t.enclosure],
+                    "enclosure": [
+                        _directed_text(t.enclosure[0], self.digits + 3, up=False),
+                        _directed_text(t.enclosure[1], self.digits + 3, up=True),
+                    ],
                 }
                 for t in self.thresholds
             ],
@@ -479,6 +482,36 @@ def _refine(n, Q, damping, m_neg: float, m_pos: float, digits: int) -> Threshold
 def _enough(value, width: Fraction, digits: int) -> bool:
     with mpmath.workdps(30):
         return _mpf(width) <= abs(value) * mpmath.mpf(10) ** (-digits)
+
+
+def _directed_text(x: Fraction, digits: int, *, up: bool) -> str:
+    """``x`` rounded to ``digits`` significant digits towards +inf (``up``) or -inf, as decimal
+    text: the printed ends of an enclosure still contain what the exact ends contain."""
+    if x == 0:
+        return "0"
+    ax = abs(x)
+    e = len(str(ax.numerator)) - len(str(ax.denominator))  # 10**(e-1) <= ax < 10**(e+1)
+    if Fraction(10) ** e <= ax:
+        pass
+    else:
+        e -= 1
+    scale = digits - 1 - e
+    scaled = x * Fraction(10) ** scale
+    n = math.ceil(scaled) if up else math.floor(scaled)
+    sign, digs = ("-" if n < 0 else ""), str(abs(n))
+    if len(digs) > digits:  # rounding carried into a new digit (9.99... -> 10.0)
+        e += 1
+        scale -= 1
+        digs = digs[:-1]
+    if -5 <= e < digits:
+        if scale > 0:
+            digs = digs.rjust(scale + 1, "0")
+            text = f"{digs[:-scale]}.{digs[-scale:]}".rstrip("0").rstrip(".")
+        else:
+            text = digs + "0" * (-scale)
+        return sign + text
+    mant = f"{digs[0]}.{digs[1:]}".rstrip("0").rstrip(".")
+    return f"{sign}{mant}e{e}"
 
 
 def _mpf(x: Fraction) -> mpmath.mpf:

@@ -78,11 +78,12 @@ class Multipliers:
         A proven complex pair is stable: ``|mu|^2 = det M = exp(-2 gamma T) <= 1``."""
         if not self.real and not self.double:
             return False
-        if self.modulus - self.modulus_radius > 1:
+        # exact rational comparisons: mpf arithmetic would round to the caller's precision
+        # (|mu|max - 1 can be far below 10^-15)
+        mod, rad = _exact(self.modulus), _exact(self.modulus_radius)
+        if mod - rad > 1:
             return True
-        if self.modulus + self.modulus_radius < 1 or (
-            self.modulus == 1 and self.modulus_radius == 0
-        ):
+        if mod + rad < 1 or (mod == 1 and rad == 0):
             return False
         return None
 
@@ -174,6 +175,12 @@ class Multipliers:
         from paramres.display import pre_html
 
         return pre_html(self)
+
+
+def _exact(x: mpmath.mpf) -> Fraction:
+    """The binary value of a finite ``mpf``, exactly."""
+    man, exp = x.man_exp
+    return Fraction(man) * Fraction(2) ** exp
 
 
 def _text(x: Fraction) -> str:
