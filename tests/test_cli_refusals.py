@@ -47,6 +47,10 @@ def refused(capsys, argv, *words):
         ),
         (["boundary", "--order", "9" * 5000, "--m", "0.3"], ("order", "1 to")),
         (["boundary", "--order", "1", "--m", "0.3", "--digits", "9" * 5000], ("digits",)),
+        (
+            ["boundary", "--order", "3", "--m", "0.3", "--system", "torsion", "--tol", "1e-8"],
+            ("tolerance", "--digits for torsion"),
+        ),
     ],
 )
 def test_refused_at_once(capsys, argv, words):

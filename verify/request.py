@@ -67,6 +67,11 @@ def make_request(order, m, Q, damping, digits, method, tol, system, duty) -> tup
     QF = None if QQ is None else exact_fraction(QQ)
     if sysv is PAPER or sysv.is_paper:
         return _request(n, exact_fraction(mm), QF, model, d, mm, tt, PAPER), method
+    if tt is not None:  # (method is 'auto' here)
+        raise InputError(
+            f"a tolerance (--tol) chooses among methods built for the paper's system; use "
+            f"--digits for {sysv.label}"
+        )
     if method != "certified":
         raise InputError(
             f"method {method!r} is for the paper's system only; {sysv.label} uses 'certified'"
