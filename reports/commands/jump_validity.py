@@ -39,7 +39,7 @@ def register(subparsers) -> None:
         "--tol",
         required=True,
         metavar="TOL",
-        help="relative tolerance of the edges T/T0 (e.g. 1e-3; at most 0.1)",
+        help="relative tolerance of the edges T/T0, 1e-12 to 0.1 (e.g. 1e-3)",
     )
     p.add_argument(
         "--duty",
