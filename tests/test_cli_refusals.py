@@ -135,3 +135,28 @@ def mpmath_eps():
     import mpmath
 
     return mpmath.mpf("1e-6")
+
+
+def test_every_help_states_the_ranges_and_an_example():
+    """Each command's --help ends with a typical command line, which its own parser accepts, and
+    the shared options state their ranges (the ones the checks in paramres.inputs enforce)."""
+    import shlex
+
+    from reports.cli import EXAMPLES, build_parser
+
+    parser = build_parser()
+    sub = next(a for a in parser._actions if a.__class__.__name__ == "_SubParsersAction")
+    assert set(sub.choices) == set(EXAMPLES)
+    for name, sp in sub.choices.items():
+        text = " ".join(sp.format_help().split())
+        assert f"example: {EXAMPLES[name]}" in text, name
+        argv = shlex.split(EXAMPLES[name])
+        assert argv[:2] == ["paramres", name]
+        parser.parse_args(argv[1:])  # a malformed example would exit here
+        if any(a.dest == "order" for a in sp._actions) and name != "series":
+            assert "order of the resonance, 1 to 10000" in text, name
+        if any(a.dest == "Q" for a in sp._actions) and name != "atlas":
+            assert "1e-6 <= Q <= 1e30" in text, name
+    boundary = " ".join(sub.choices["boundary"].format_help().split())
+    assert "5 to 100000" in boundary  # verify.inputs.BOUNDARY_DIGITS_RANGE
+    assert "0 < T <= 1e6" in " ".join(sub.choices["multipliers"].format_help().split())

@@ -53,7 +53,7 @@ def register(subparsers) -> None:
     add_system(p)
     add_modulation(p)
     p.add_argument(
-        "--digits", default=None, metavar="D", help="significant digits, 5 to 10000 (default 30)"
+        "--digits", default=None, metavar="D", help="significant digits, 5 to 100000 (default 30)"
     )
     p.add_argument(
         "--tol",

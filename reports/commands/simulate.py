@@ -57,7 +57,9 @@ def register(subparsers) -> None:
         "--edge", choices=EDGES, help="start on this edge of the interval of order N"
     )
     where.add_argument(
-        "--T", metavar="T", help="modulation period in units of T0 (start from rest at angle A)"
+        "--T",
+        metavar="T",
+        help="modulation period in units of T0, 0 < T <= 1e6 (start from rest at angle A)",
     )
     add_friction(p)
     add_system(p)
@@ -79,7 +81,7 @@ def register(subparsers) -> None:
         "--digits",
         metavar="D",
         default="30",
-        help="working precision of the linear model (default 30)",
+        help="working precision of the linear model, 5 to 10000 digits (default 30)",
     )
     p.add_argument(
         "--plot",
