@@ -160,3 +160,17 @@ def test_every_help_states_the_ranges_and_an_example():
     boundary = " ".join(sub.choices["boundary"].format_help().split())
     assert "5 to 100000" in boundary  # verify.inputs.BOUNDARY_DIGITS_RANGE
     assert "0 < T <= 1e6" in " ".join(sub.choices["multipliers"].format_help().split())
+
+
+@pytest.mark.parametrize(
+    "argv, words",
+    [
+        # an empty file name is refused as typed: it used to mean "no plot" (simulate ran and
+        # drew nothing) or the current directory (named '.' in the refusal)
+        (["simulate", "--order", "1", "--m", "0.3", "--edge", "lower", "--plot", ""], "''"),
+        (["table", "--orders", "1", "--m", "0.1:0.2:0.1", "--output", ""], "--output ''"),
+    ],
+)
+def test_an_empty_file_name_is_refused(capsys, argv, words):
+    line = refused(capsys, argv, words)
+    assert "'.'" not in line

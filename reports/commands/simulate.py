@@ -97,7 +97,9 @@ def run(args) -> int:
     from reports.timeplots import check_plot_path, save_figure, time_figure
     from verify.timedomain import simulate
 
-    plot = check_plot_path(args.plot) if args.plot else None  # refuse a bad name before any work
+    plot = (
+        check_plot_path(args.plot) if args.plot is not None else None
+    )  # refuse a bad name before any work
     sysv = system_of(args)
     if args.modulation.strip().lower() != "square" or args.switch_time is not None:
         return _run_modulated(args, sysv, plot)
