@@ -174,3 +174,63 @@ def test_every_help_states_the_ranges_and_an_example():
 def test_an_empty_file_name_is_refused(capsys, argv, words):
     line = refused(capsys, argv, words)
     assert "'.'" not in line
+
+
+def test_a_decimal_over_an_integer_is_read(capsys):
+    """``0.3/2`` and ``1e-1/3`` match the number syntax but are no literal ``Fraction`` reads:
+    they used to end in a ValueError traceback."""
+    from fractions import Fraction
+
+    assert as_number("0.3/2", name="x", allowed="") == Fraction(3, 20)
+    assert as_depth("1e-1/3") == Fraction(1, 30)
+    code, out, err = run(capsys, ["boundary", "--order", "1", "--m", "0.3/2", "--digits", "10"])
+    assert code == 0, err
+    assert out == run(capsys, ["boundary", "--order", "1", "--m", "3/20", "--digits", "10"])[1]
+    refused(capsys, ["boundary", "--order", "1", "--m", "1e-1/0"], "1e-1/0", "divides by zero")
+
+
+@pytest.fixture
+def int_text_limit():
+    """Python's default guard on long integer text (4300 digits) in force, restored after."""
+    import sys
+
+    old = sys.get_int_max_str_digits()
+    sys.set_int_max_str_digits(4300)
+    yield
+    sys.set_int_max_str_digits(old)
+
+
+@pytest.mark.parametrize(
+    "argv",
+    [
+        ["multipliers", "--T", "1e-4999", "--m", "0.3"],
+        ["boundary", "--order", "1", "--m", "0.3", "--duty", "1e-4999", "--digits", "10"],
+        [
+            "boundary",
+            "--order",
+            "1",
+            "--m",
+            "0.3",
+            "--modulation",
+            "ramp",
+            "--switch-time",
+            "1e4999",
+        ],
+        ["multipliers", "--T", "1", "--m", "0.3", "--digits", "5000"],
+    ],
+)
+def test_values_of_thousands_of_digits_end_in_an_answer(capsys, int_text_limit, argv):
+    # a value of 5000 digits, echoed in a result or a message, or a result of 5000 digits, used
+    # to hit Python's limit on integer text and end in a traceback
+    code, out, err = run(capsys, argv)
+    assert code in (0, 2) and "Traceback" not in err, err
+    if code == 2:
+        assert len(err.splitlines()) == 1 and err.startswith("paramres: error: ")
+
+
+def test_a_bound_of_a_print_of_thousands_of_digits(int_text_limit):
+    """The bound of a 5000-digit print is computed in the API too (no CLI to lift the limit)."""
+    from verify.multipliers import multipliers
+
+    text = str(multipliers("1", "0.3", digits=5000))
+    assert "certified: |printed - exact| < " in text
