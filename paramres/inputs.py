@@ -54,7 +54,7 @@ Q_RANGE = (Fraction(1, 10**6), Fraction(10**30))
 #: the longest text of a number accepted, and the largest decimal exponent written in one: both
 #: are checked before any arithmetic, so that ``1e999999999`` is refused at once
 MAX_NUMBER_TEXT = 2000
-MAX_EXPONENT = 5000
+MAX_EXPONENT = 10000  # the smallest tolerance, 1e-10000, can be typed
 
 _NUMBER = re.compile(r"[+-]?(\d+(\.\d*)?|\.\d+)([eE]([+-]?\d+))?(/\d+)?")
 

@@ -97,7 +97,7 @@ def _named(first: list[str]) -> str | None:
 
 def main(argv: list[str] | None = None) -> int:
     if hasattr(sys, "set_int_max_str_digits"):
-        # every number typed is bounded (2000 characters, exponents within +-5000) and results
+        # every number typed is bounded (2000 characters, exponents within +-10000) and results
         # run to 100000 digits: Python's guard on converting long integers to text (4300 digits)
         # would turn such a value, echoed in a message or a result, into a traceback
         sys.set_int_max_str_digits(0)

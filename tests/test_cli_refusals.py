@@ -234,3 +234,14 @@ def test_a_bound_of_a_print_of_thousands_of_digits(int_text_limit):
 
     text = str(multipliers("1", "0.3", digits=5000))
     assert "certified: |printed - exact| < " in text
+
+
+def test_the_smallest_tolerance_can_be_typed(capsys):
+    """The range of a tolerance starts at 1e-10000: that text is read (it used to be refused by
+    the limit on exponents, 5000, with the message 'tolerance = 1e-10000 is outside the allowed
+    range 1e-10000 to 0.1')."""
+    import mpmath
+
+    tol = as_tolerance("1e-10000")
+    assert abs(int(mpmath.floor(mpmath.log10(tol))) + 10000) <= 1
+    refused(capsys, ["boundary", "--order", "1", "--m", "0.3", "--tol", "1e-10001"], "1e-10000")
