@@ -159,6 +159,9 @@ def test_every_help_states_the_ranges_and_an_example():
             assert "1e-6 <= Q <= 1e30" in text, name
     boundary = " ".join(sub.choices["boundary"].format_help().split())
     assert "5 to 100000" in boundary  # verify.inputs.BOUNDARY_DIGITS_RANGE
+    # --tol (and --method auto/fixedpoint) refuse every other system: the help says so
+    assert boundary.count("the paper's system only") == 2
+    assert "the paper's system only" in " ".join(sub.choices["table"].format_help().split())
     assert "0 < T <= 1e6" in " ".join(sub.choices["multipliers"].format_help().split())
 
 

@@ -374,6 +374,9 @@ def test_the_checker_catches_a_traceback_and_a_hang(monkeypatch):
         (["existence", "--order", "3", "--Q", "1e400"], 2),
         (["table", "--orders", "1", "--m", "0.3", "--output", "/proc/x.csv"], 2),
         (["boundary", "--order", "1", "--m", "0.3", "--json"], 0),
+        # the tolerance path with friction reaches the certified solver without the dispatcher
+        # that registers it: in a fresh process it used to end in KeyError: 'certified'
+        (["table", "--orders", "1", "--m", "0.3:0.3:1", "--tol", "1e-5", "--Q", "3"], 0),
     ],
 )
 def test_a_real_process_exits_as_the_in_process_call_says(argv, expected):

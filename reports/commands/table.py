@@ -78,7 +78,8 @@ def register(subparsers) -> None:
         help=(
             "instead of --digits: the relative error of T/T0 wanted (1e-10000 to 0.1); each entry "
             "is computed by the cheapest method that provably meets it (series in m, double "
-            "precision, certified), named in a method column"
+            "precision, certified), named in a method column; the paper's system only "
+            "(pendulum, D = 1/2, square modulation)"
         ),
     )
     p.add_argument(
