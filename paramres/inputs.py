@@ -54,7 +54,7 @@ Q_RANGE = (Fraction(1, 10**6), Fraction(10**30))
 #: the longest text of a number accepted, and the largest decimal exponent written in one: both
 #: are checked before any arithmetic, so that ``1e999999999`` is refused at once
 MAX_NUMBER_TEXT = 2000
-MAX_EXPONENT = 5000
+MAX_EXPONENT = 10000  # the smallest tolerance, 1e-10000, can be typed
 
 _NUMBER = re.compile(r"[+-]?(\d+(\.\d*)?|\.\d+)([eE]([+-]?\d+))?(/\d+)?")
 
@@ -107,7 +107,7 @@ def as_number(value, *, name: str, allowed: str) -> Fraction:
     if exponent is not None and abs(int(exponent)) > MAX_EXPONENT:
         raise InputError(f"{name} = {shown} is outside the allowed range {allowed}")
     try:
-        return Fraction(text)
+        return _fraction(text)
     except ZeroDivisionError:
         raise InputError(f"{name} = {shown} divides by zero; allowed range {allowed}") from None
 
@@ -125,9 +125,19 @@ def _parsed(text: str) -> Fraction | None:
     if exponent is not None and abs(int(exponent)) > MAX_EXPONENT:
         return None
     try:
-        return Fraction(text)
+        return _fraction(text)
     except ZeroDivisionError:
         return None
+
+
+def _fraction(text: str) -> Fraction:
+    """The value of a text :data:`_NUMBER` matches: ``Fraction`` itself reads a decimal or an
+    integer ratio, not a decimal over an integer (``0.3/2``, ``1e-1/3``), so the two parts are
+    read apart."""
+    num, slash, den = text.partition("/")
+    if not slash:
+        return Fraction(num)
+    return Fraction(num) / int(den)
 
 
 class InputError(ValueError):

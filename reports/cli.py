@@ -19,7 +19,7 @@ from verify.certify import CertificationError
 
 from . import commands
 
-__all__ = ["main", "build_parser"]
+__all__ = ["main", "build_parser", "EXAMPLES"]
 
 PROG = "paramres"
 
@@ -57,7 +57,28 @@ def build_parser(only: str | None = None) -> argparse.ArgumentParser:
     for name in names:
         if not name.startswith("_"):
             importlib.import_module(f"{commands.__name__}.{name}").register(sub)
+    for name, sp in sub.choices.items():
+        if name in EXAMPLES and sp.epilog is None:
+            sp.epilog = f"example: {EXAMPLES[name]}"
     return parser
+
+
+#: one typical command line of each command, shown at the end of its --help
+EXAMPLES = {
+    "atlas": "paramres atlas --orders 1-3 --m 0.1:0.9:0.1 --Q none,7 --output atlas.nc",
+    "bench": "paramres bench --quick --plot bench.pdf",
+    "boundary": "paramres boundary --order 3 --m 3/5 --digits 40",
+    "catalogue": "paramres catalogue --only differs",
+    "crossings": "paramres crossings --max-order 6",
+    "existence": "paramres existence --order 3 --Q 7",
+    "explore": "paramres explore --port 8765",
+    "jump-validity": "paramres jump-validity --order 1 --m 0.3 --tol 1e-3",
+    "multipliers": "paramres multipliers --T 1.45 --m 0.3 --digits 20",
+    "report": "paramres report --out report --lang en",
+    "series": "paramres series --order 2 --terms 6",
+    "simulate": "paramres simulate --order 1 --m 0.3 --edge lower --plot run.pdf",
+    "table": "paramres table --orders 1-6 --m 0.05:0.95:0.05 --output edges.csv",
+}
 
 
 def _named(first: list[str]) -> str | None:
@@ -75,6 +96,11 @@ def _named(first: list[str]) -> str | None:
 
 
 def main(argv: list[str] | None = None) -> int:
+    if hasattr(sys, "set_int_max_str_digits"):
+        # every number typed is bounded (2000 characters, exponents within +-10000) and results
+        # run to 100000 digits: Python's guard on converting long integers to text (4300 digits)
+        # would turn such a value, echoed in a message or a result, into a traceback
+        sys.set_int_max_str_digits(0)
     parser = build_parser(_named((sys.argv[1:] if argv is None else argv)[:1]))
     args = parser.parse_args(argv)
     try:

@@ -482,9 +482,10 @@ FORMATS = (".pdf", ".png", ".svg")
 
 def check_plot_path(path) -> Path:
     """The plot file name, refused (before any work) unless it ends in one of :data:`FORMATS`."""
+    given = str(path)  # as typed (Path("") would show as ".")
     path = Path(path)
     if path.suffix.lower() not in FORMATS:
-        raise InputError(f"plot file {str(path)!r} must end in one of: {', '.join(FORMATS)}")
+        raise InputError(f"plot file {given!r} must end in one of: {', '.join(FORMATS)}")
     from .output import check_writable
 
     return check_writable(path, "plot file")

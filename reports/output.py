@@ -39,10 +39,11 @@ def check_writable(path: str | os.PathLike, what: str, *, directory: bool = Fals
     existing directory, removed at once (so ``/proc/x.csv`` is refused even for root)."""
     from paramres.inputs import InputError
 
+    given = os.fspath(path)  # as typed: Path("") would be "." (the current directory)
+    if not str(given).strip() or "\0" in str(given):
+        raise InputError(f"{what} {given!r} is not a usable file name")
     path = Path(path)
     text = str(path)
-    if not text.strip() or "\0" in text:
-        raise InputError(f"{what} {text!r} is not a usable file name")
     if path.exists():
         if directory and not path.is_dir():
             raise InputError(f"{what} {text!r} exists and is not a directory")

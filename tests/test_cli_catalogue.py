@@ -25,6 +25,19 @@ def test_catalogue_json(capsys):
     assert any(r["status"] == "differs" for r in rows)
 
 
+def test_catalogue_help_says_what_json_gives():
+    from reports.cli import build_parser
+
+    text = " ".join(
+        build_parser("catalogue")
+        ._subparsers._group_actions[0]
+        .choices["catalogue"]
+        .format_help()
+        .split()
+    )
+    assert "one JSON object" in text and "JSON list" not in text
+
+
 def test_catalogue_text_only_differs(capsys):
     assert main(["catalogue", "--only", "differs"]) == 0
     out = capsys.readouterr().out

@@ -139,3 +139,116 @@ def mpmath_eps():
     import mpmath
 
     return mpmath.mpf("1e-6")
+
+
+def test_every_help_states_the_ranges_and_an_example():
+    """Each command's --help ends with a typical command line, which its own parser accepts, and
+    the shared options state their ranges (the ones the checks in paramres.inputs enforce)."""
+    import shlex
+
+    from reports.cli import EXAMPLES, build_parser
+
+    parser = build_parser()
+    sub = next(a for a in parser._actions if a.__class__.__name__ == "_SubParsersAction")
+    assert set(sub.choices) == set(EXAMPLES)
+    for name, sp in sub.choices.items():
+        text = " ".join(sp.format_help().split())
+        assert f"example: {EXAMPLES[name]}" in text, name
+        argv = shlex.split(EXAMPLES[name])
+        assert argv[:2] == ["paramres", name]
+        parser.parse_args(argv[1:])  # a malformed example would exit here
+        if any(a.dest == "order" for a in sp._actions) and name != "series":
+            assert "order of the resonance, 1 to 10000" in text, name
+        if any(a.dest == "Q" for a in sp._actions) and name != "atlas":
+            assert "1e-6 <= Q <= 1e30" in text, name
+    boundary = " ".join(sub.choices["boundary"].format_help().split())
+    assert "5 to 100000" in boundary  # verify.inputs.BOUNDARY_DIGITS_RANGE
+    # --tol (and --method auto/fixedpoint) refuse every other system: the help says so
+    assert boundary.count("the paper's system only") == 2
+    assert "the paper's system only" in " ".join(sub.choices["table"].format_help().split())
+    assert "0 < T <= 1e6" in " ".join(sub.choices["multipliers"].format_help().split())
+
+
+@pytest.mark.parametrize(
+    "argv, words",
+    [
+        # an empty file name is refused as typed: it used to mean "no plot" (simulate ran and
+        # drew nothing) or the current directory (named '.' in the refusal)
+        (["simulate", "--order", "1", "--m", "0.3", "--edge", "lower", "--plot", ""], "''"),
+        (["table", "--orders", "1", "--m", "0.1:0.2:0.1", "--output", ""], "--output ''"),
+    ],
+)
+def test_an_empty_file_name_is_refused(capsys, argv, words):
+    line = refused(capsys, argv, words)
+    assert "'.'" not in line
+
+
+def test_a_decimal_over_an_integer_is_read(capsys):
+    """``0.3/2`` and ``1e-1/3`` match the number syntax but are no literal ``Fraction`` reads:
+    they used to end in a ValueError traceback."""
+    from fractions import Fraction
+
+    assert as_number("0.3/2", name="x", allowed="") == Fraction(3, 20)
+    assert as_depth("1e-1/3") == Fraction(1, 30)
+    code, out, err = run(capsys, ["boundary", "--order", "1", "--m", "0.3/2", "--digits", "10"])
+    assert code == 0, err
+    assert out == run(capsys, ["boundary", "--order", "1", "--m", "3/20", "--digits", "10"])[1]
+    refused(capsys, ["boundary", "--order", "1", "--m", "1e-1/0"], "1e-1/0", "divides by zero")
+
+
+@pytest.fixture
+def int_text_limit():
+    """Python's default guard on long integer text (4300 digits) in force, restored after."""
+    import sys
+
+    old = sys.get_int_max_str_digits()
+    sys.set_int_max_str_digits(4300)
+    yield
+    sys.set_int_max_str_digits(old)
+
+
+@pytest.mark.parametrize(
+    "argv",
+    [
+        ["multipliers", "--T", "1e-4999", "--m", "0.3"],
+        ["boundary", "--order", "1", "--m", "0.3", "--duty", "1e-4999", "--digits", "10"],
+        [
+            "boundary",
+            "--order",
+            "1",
+            "--m",
+            "0.3",
+            "--modulation",
+            "ramp",
+            "--switch-time",
+            "1e4999",
+        ],
+        ["multipliers", "--T", "1", "--m", "0.3", "--digits", "5000"],
+    ],
+)
+def test_values_of_thousands_of_digits_end_in_an_answer(capsys, int_text_limit, argv):
+    # a value of 5000 digits, echoed in a result or a message, or a result of 5000 digits, used
+    # to hit Python's limit on integer text and end in a traceback
+    code, out, err = run(capsys, argv)
+    assert code in (0, 2) and "Traceback" not in err, err
+    if code == 2:
+        assert len(err.splitlines()) == 1 and err.startswith("paramres: error: ")
+
+
+def test_a_bound_of_a_print_of_thousands_of_digits(int_text_limit):
+    """The bound of a 5000-digit print is computed in the API too (no CLI to lift the limit)."""
+    from verify.multipliers import multipliers
+
+    text = str(multipliers("1", "0.3", digits=5000))
+    assert "certified: |printed - exact| < " in text
+
+
+def test_the_smallest_tolerance_can_be_typed(capsys):
+    """The range of a tolerance starts at 1e-10000: that text is read (it used to be refused by
+    the limit on exponents, 5000, with the message 'tolerance = 1e-10000 is outside the allowed
+    range 1e-10000 to 0.1')."""
+    import mpmath
+
+    tol = as_tolerance("1e-10000")
+    assert abs(int(mpmath.floor(mpmath.log10(tol))) + 10000) <= 1
+    refused(capsys, ["boundary", "--order", "1", "--m", "0.3", "--tol", "1e-10001"], "1e-10000")

@@ -268,6 +268,14 @@ def test_explore_refuses_an_export_into_a_file(tmp_path, capsys):
     assert target.read_text() == "x"
 
 
+def test_explore_refuses_an_export_where_nothing_can_be_made(capsys):
+    # /proc passes os.access for root, but no directory can be made there: one line, no traceback
+    assert main(["explore", "--export", "/proc/paramres-export"]) == 2
+    err = capsys.readouterr().err
+    assert err.startswith("paramres: error: --export /proc/paramres-export: cannot write in /proc")
+    assert len(err.splitlines()) == 1
+
+
 def test_export_writes_a_static_copy(tmp_path):
     from reports.explorer.export import export
 

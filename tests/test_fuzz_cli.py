@@ -374,6 +374,9 @@ def test_the_checker_catches_a_traceback_and_a_hang(monkeypatch):
         (["existence", "--order", "3", "--Q", "1e400"], 2),
         (["table", "--orders", "1", "--m", "0.3", "--output", "/proc/x.csv"], 2),
         (["boundary", "--order", "1", "--m", "0.3", "--json"], 0),
+        # the tolerance path with friction reaches the certified solver without the dispatcher
+        # that registers it: in a fresh process it used to end in KeyError: 'certified'
+        (["table", "--orders", "1", "--m", "0.3:0.3:1", "--tol", "1e-5", "--Q", "3"], 0),
     ],
 )
 def test_a_real_process_exits_as_the_in_process_call_says(argv, expected):
@@ -417,3 +420,55 @@ def test_a_command_named_first_gets_its_own_parser_alone(capsys):
             main(argv)
         assert stop.value.code == 0
         assert f"usage: paramres {argv[1]}" in capsys.readouterr().out
+
+
+_THREES = "0." + "3" * 400  # a duty near 1/3 whose exact fraction has 400 digits
+
+
+@pytest.mark.parametrize(
+    "argv, words",
+    [
+        # the search for the longest valid ramp runs in doubles: a tolerance or a duty that
+        # underflows there used to loop for ever
+        (["jump-validity", "--order", "1", "--m", "0.3", "--tol", "1e-400"], ("1e-400", "1e-12")),
+        (["jump-validity", "--order", "1", "--m", "0.3", "--tol", "1e-13"], ("1e-13", "1e-12")),
+        (
+            ["jump-validity", "--order", "1", "--m", "0.3", "--tol", "1e-3", "--duty", "1e-400"],
+            ("1e-400", "1e-300 <= D"),
+        ),
+        # the double-precision grid of a duty whose exact coefficients overflow a double used to
+        # end in an OverflowError traceback
+        (
+            ["table", "--orders", "1-2", "--m", "0.1:0.2:0.1", "--duty", _THREES],
+            ("33333", "double"),
+        ),
+        (["table", "--orders", "1", "--m", "0.1:0.2:0.1", "--duty", "1e-400"], ("D = 1/1000",)),
+    ],
+)
+def test_inputs_that_used_to_hang_or_fail_are_refused(argv, words):
+    code, out, err = call(argv)
+    check(argv, code, out, err)
+    assert code == 2 and out == "", (argv, code, out, err)
+    for word in words:
+        assert word in err, (word, err)
+
+
+def test_a_switching_time_below_the_smallest_double(capsys):
+    """A ramp of S = 1e-400 (a step of the continuation below the smallest double used to divide
+    by zero) gives the jump model's edges (reference: the square modulation, same digits)."""
+    argv = ["boundary", "--order", "1", "--m", "0.3", "--digits", "20", "--json"]
+    code, out, err = call([*argv, "--modulation", "ramp", "--switch-time", "1e-400"])
+    check(argv, code, out, err)
+    assert code == 0, err
+    ramp = json.loads(out)
+    code, out, err = call(argv)
+    square = json.loads(out)
+    assert (ramp["lower"], ramp["upper"]) == (square["lower"], square["upper"])
+
+
+def test_an_exact_edge_is_not_said_to_be_within_zero():
+    """Equal custom frequencies: the edges are exact rationals, the bound 0; the text says they
+    are exact (``|printed - exact| < 0`` would be false)."""
+    code, out, err = call(["boundary", "--order", "2", "--system", "custom", "--omega-sq", "1,1"])
+    assert code == 0, err
+    assert "printed = exact" in out and "< 0]" not in out

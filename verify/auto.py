@@ -520,6 +520,9 @@ def _from_values(req, choice: Choice, values, tol, proof, notes) -> object:
 
 def _certified(req, tol, notes=()):
     """The certified route at just enough digits, its radius checked against ``tol``."""
+    from . import certified as _registers  # noqa: F401  (registers "certified": the table's
+
+    # tolerance path reaches here without the dispatcher verify.solve, which imports it)
     from .methods import METHODS
     from .request import Request
 

@@ -330,8 +330,9 @@ def _follow(
                         "or leave the window)"
                     )
                 continue
-            if s_next > s_now:
-                slope = (root - T_now) / float(s_next - s_now)
+            ds = float(s_next - s_now)
+            if ds > 0:  # a step below the smallest double (S = 1e-400) keeps the slope it had
+                slope = (root - T_now) / ds
             s_now, T_now = s_next, root
             step = min(step * 2, cap, S)
         if trail is not None:
@@ -709,6 +710,14 @@ def _round_decimal(x: float, sig: int, up: bool) -> Fraction:
     return max(k, 1) * unit
 
 
+#: the smallest tolerance of :func:`jump_validity`: the crossing is located on the followed edges,
+#: which are doubles (a relative shift below about 1e-15 is not resolved)
+JUMP_TOL_LOW = Fraction(1, 10**12)
+#: the duty of :func:`jump_validity` keeps ``min(D, 1 - D)`` at least this: the longest ramp
+#: ``S <= min(D, 1 - D) T`` is a double in the search
+JUMP_DUTY_LOW = Fraction(1, 10**300)
+
+
 def jump_validity(order, m, tol, *, duty="1/2", digits=15, fit=True) -> Validity:
     """The largest switching time ``S`` for which both edges of the ``order``-th interval with
     ramps stay within the relative tolerance ``tol`` of the jump model's edges.
@@ -725,6 +734,16 @@ def jump_validity(order, m, tol, *, duty="1/2", digits=15, fit=True) -> Validity
     D = as_system("pendulum", duty).duty
     mm = exact_fraction(as_depth(m))
     tt = exact_fraction(as_tolerance(tol))
+    if tt < JUMP_TOL_LOW:
+        raise InputError(
+            f"tolerance {tol} is outside the allowed range 1e-12 to 0.1 of the jump-model "
+            "validity (the crossing is located on double-precision edges)"
+        )
+    if min(D, 1 - D) < JUMP_DUTY_LOW:
+        raise InputError(
+            f"duty D = {duty} is outside the allowed range 1e-300 <= D <= 1 - 1e-300 of the "
+            "jump-model validity (the ramp's length is searched in double precision)"
+        )
     d = as_digits(digits)
     jump = _jump(n, mm, D, d + 10)
     with ctx.workprec(96):

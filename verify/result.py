@@ -208,11 +208,12 @@ class Boundary:
                 f"({off} = {self._fmt(self.delta_upper, 3)})"
             )
         bound = self.error_bound()
-        proof = (
-            f"certified: |printed - exact| < {bound}"
-            if bound is not None
-            else ("certified" if self.certified else "not certified")
-        )
+        if bound == "0":  # the edges are exact rationals printed in full: "< 0" would be false
+            proof = "certified: printed = exact"
+        elif bound is not None:
+            proof = f"certified: |printed - exact| < {bound}"
+        else:
+            proof = "certified" if self.certified else "not certified"
         tail = f"  [{self.method}; {self.regime}; {proof}]"
         notes = "".join(f"\n  note: {n}" for n in self.notes)
         return f"{head}\n{body}\n{tail}{notes}"

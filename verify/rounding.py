@@ -123,7 +123,25 @@ def _decimal(text: str) -> tuple[int, int]:
     (``"-1.2345e-7"``, ``"0.00123"``, ``"12"``)."""
     mant, _, ex = text.lower().partition("e")
     whole, _, frac = mant.partition(".")
-    return int(whole + frac), (int(ex) if ex else 0) - len(frac)
+    return _integer(whole + frac), (int(ex) if ex else 0) - len(frac)
+
+
+#: digits converted by one ``int()`` (below Python's limit on integer string conversion, 4300)
+_CHUNK = 4000
+
+
+def _integer(digits: str) -> int:
+    """``int(digits)`` for any length: a print of 10000 digits is beyond the single conversion
+    Python allows, so longer texts are read in chunks."""
+    if len(digits) <= _CHUNK:
+        return int(digits)
+    sign = -1 if digits[0] == "-" else 1
+    body = digits.lstrip("+-")
+    value = 0
+    for i in range(0, len(body), _CHUNK):
+        chunk = body[i : i + _CHUNK]
+        value = value * 10 ** len(chunk) + int(chunk)
+    return sign * value
 
 
 def bound_text(bound: Fraction | None, digits: int = 2) -> str | None:

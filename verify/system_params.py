@@ -225,7 +225,16 @@ def _atoms(system: System, damping: str, m, Q, B: Backend, om=None) -> tuple:
     fn, fn_om = _numeric_atoms(system, damping, B.name)
     mm = lift(Fraction(0) if m is None else m)
     QQ = lift(Fraction(1) if Q is None else Q)
-    vals = tuple(lift(v) for v in fn(mm, QQ))
+    try:
+        vals = tuple(lift(v) for v in fn(mm, QQ))
+    except OverflowError:  # an exact coefficient beyond the doubles (a duty of 400 digits)
+        from paramres.inputs import InputError
+
+        raise InputError(
+            f"{system.label}: its exact coefficients lie beyond the range of double precision "
+            "(a duty with too many digits, or too close to 0 or 1); the double-precision grid "
+            "cannot take it, ask for certified digits"
+        ) from None
     if om is None or B.name != "numpy" or not system.uses_depth:
         return vals
     import numpy as np

@@ -14,7 +14,7 @@ __all__ = [
 ]
 
 
-def add_order(p, help: str = "order of the resonance (1, 2, ...)") -> None:
+def add_order(p, help: str = "order of the resonance, 1 to 10000") -> None:
     p.add_argument("--order", required=True, metavar="N", help=help)
 
 
@@ -80,10 +80,13 @@ def system_of(args):
 def add_friction(p, *, required: bool = False) -> None:
     """``--Q`` (the quality factor; optional unless ``required``) and ``--damping``."""
     if required:
-        p.add_argument("--Q", required=True, metavar="Q", help="quality factor, Q > 0")
+        p.add_argument("--Q", required=True, metavar="Q", help="quality factor, 1e-6 <= Q <= 1e30")
     else:
         p.add_argument(
-            "--Q", metavar="Q", default=None, help="quality factor (omit for no friction)"
+            "--Q",
+            metavar="Q",
+            default=None,
+            help="quality factor, 1e-6 <= Q <= 1e30 (omit for no friction)",
         )
     p.add_argument(
         "--damping",

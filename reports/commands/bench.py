@@ -118,7 +118,7 @@ def run_floors(args) -> int:
             "--floors runs benchmarks/floors.py of a source checkout, which this installation "
             "does not have"
         )
-    if args.output:
+    if args.output is not None:
         check_writable(args.output, "--output")
     spec = importlib.util.spec_from_file_location("_paramres_floors", path)
     if spec is None or spec.loader is None:  # pragma: no cover - a file that is not Python
@@ -143,18 +143,18 @@ def run(args) -> int:
     from reports.output import check_writable
 
     if getattr(args, "floors", False):
-        if args.plot:
+        if args.plot is not None:
             from verify.inputs import InputError
 
             raise InputError("--plot draws the method comparison; it does not go with --floors")
         return run_floors(args)
 
     # refuse a bad file name before the work
-    if args.plot:
+    if args.plot is not None:
         from reports.figures import check_plot_path
 
         check_plot_path(args.plot)
-    if args.output:
+    if args.output is not None:
         check_writable(args.output, "--output")
 
     from reports.benchmark import run as bench_run

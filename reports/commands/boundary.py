@@ -53,7 +53,7 @@ def register(subparsers) -> None:
     add_system(p)
     add_modulation(p)
     p.add_argument(
-        "--digits", default=None, metavar="D", help="significant digits, 5 to 10000 (default 30)"
+        "--digits", default=None, metavar="D", help="significant digits, 5 to 100000 (default 30)"
     )
     p.add_argument(
         "--tol",
@@ -62,14 +62,16 @@ def register(subparsers) -> None:
         help=(
             "instead of --digits: the relative error of T/T0 wanted (1e-10000 to 0.1); the "
             "cheapest method that provably meets it is used (a series in m, double precision or "
-            "the certified solver at just enough digits) and named in the output"
+            "the certified solver at just enough digits) and named in the output; the paper's "
+            "system only (pendulum, D = 1/2, square modulation)"
         ),
     )
     p.add_argument(
         "--method",
         default="certified",
         metavar="METHOD",
-        help=f"solver: {', '.join(sorted(METHODS))} (default certified)",
+        help=f"solver: {', '.join(sorted(METHODS))} (default certified; auto and fixedpoint: "
+        "the paper's system only)",
     )
     add_json(p)
     p.set_defaults(func=run)

@@ -24,7 +24,11 @@ def register(sub) -> None:
         ),
         formatter_class=argparse.RawDescriptionHelpFormatter,
     )
-    p.add_argument("--json", action="store_true", help="a JSON list of rows instead of text")
+    p.add_argument(
+        "--json",
+        action="store_true",
+        help="one JSON object (its rows under 'results') instead of text",
+    )
     p.add_argument(
         "--only",
         choices=("agrees", "differs"),

@@ -39,7 +39,7 @@ def register(subparsers) -> None:
         "--tol",
         required=True,
         metavar="TOL",
-        help="relative tolerance of the edges T/T0 (e.g. 1e-3; at most 0.1)",
+        help="relative tolerance of the edges T/T0, 1e-12 to 0.1 (e.g. 1e-3)",
     )
     p.add_argument(
         "--duty",
@@ -48,7 +48,10 @@ def register(subparsers) -> None:
         help="fraction of the period spent in phase 1 (the long pendulum), 0 < D < 1; default 1/2",
     )
     p.add_argument(
-        "--digits", default="15", metavar="D", help="digits of the certified edges (default 15)"
+        "--digits",
+        default="15",
+        metavar="D",
+        help="digits of the certified edges, 5 to 10000 (default 15)",
     )
     add_json(p)
     p.set_defaults(func=run)

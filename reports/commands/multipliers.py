@@ -33,7 +33,9 @@ def register(subparsers) -> None:
         ),
         formatter_class=argparse.RawDescriptionHelpFormatter,
     )
-    p.add_argument("--T", required=True, metavar="T", help="modulation period T/T0 > 0 (exact)")
+    p.add_argument(
+        "--T", required=True, metavar="T", help="modulation period T/T0, 0 < T <= 1e6 (exact)"
+    )
     add_depth(p, required=False)
     add_friction(p)
     p.add_argument(

@@ -40,7 +40,7 @@ def register(subparsers) -> None:
         "--order",
         required=True,
         metavar="N",
-        help="order of the resonance (1, 2, ..., or odd/even)",
+        help="order of the resonance, 1 to 10000, or odd/even",
     )
     p.add_argument(
         "--terms",

@@ -59,7 +59,9 @@ def register(subparsers) -> None:
         "--edge", choices=EDGES, help="start on this edge of the interval of order N"
     )
     where.add_argument(
-        "--T", metavar="T", help="modulation period in units of T0 (start from rest at angle A)"
+        "--T",
+        metavar="T",
+        help="modulation period in units of T0, 0 < T <= 1e6 (start from rest at angle A)",
     )
     add_friction(p)
     add_system(p)
@@ -81,7 +83,7 @@ def register(subparsers) -> None:
         "--digits",
         metavar="D",
         default="30",
-        help="working precision of the linear model (default 30)",
+        help="working precision of the linear model, 5 to 10000 digits (default 30)",
     )
     p.add_argument(
         "--plot",
@@ -97,7 +99,9 @@ def run(args) -> int:
     from reports.timeplots import check_plot_path, save_figure, time_figure
     from verify.timedomain import simulate
 
-    plot = check_plot_path(args.plot) if args.plot else None  # refuse a bad name before any work
+    plot = (
+        check_plot_path(args.plot) if args.plot is not None else None
+    )  # refuse a bad name before any work
     sysv = system_of(args)
     if args.modulation.strip().lower() != "square" or args.switch_time is not None:
         return _run_modulated(args, sysv, plot)

@@ -69,7 +69,7 @@ def register(subparsers) -> None:
         "--digits",
         default=None,
         metavar="D",
-        help="certify every entry to D digits (default: double-precision grid)",
+        help="certify every entry to D digits, 5 to 10000 (default: double-precision grid)",
     )
     p.add_argument(
         "--tol",
@@ -78,17 +78,20 @@ def register(subparsers) -> None:
         help=(
             "instead of --digits: the relative error of T/T0 wanted (1e-10000 to 0.1); each entry "
             "is computed by the cheapest method that provably meets it (series in m, double "
-            "precision, certified), named in a method column"
+            "precision, certified), named in a method column; the paper's system only "
+            "(pendulum, D = 1/2, square modulation)"
         ),
     )
-    p.add_argument("--format", default="csv", choices=("csv", "json"), help="output format")
+    p.add_argument(
+        "--format", default="csv", choices=("csv", "json"), help="output format (default csv)"
+    )
     p.add_argument(
         "--output",
         metavar="FILE",
         default=None,
         help="write to FILE (atomically) instead of standard output",
     )
-    p.add_argument("--jobs", metavar="J", default="1", help="worker processes (default 1)")
+    p.add_argument("--jobs", metavar="J", default="1", help="worker processes, 1 to 64 (default 1)")
     add_quiet(p)
     p.set_defaults(func=run)
 

@@ -35,7 +35,12 @@ def export(target, *, presets=None) -> Path:
     if not parent.is_dir() or not os.access(parent, os.W_OK):
         raise InputError(f"--export {target}: cannot write in {parent}")
     chosen = api.PRESETS if presets is None else [p for p in api.PRESETS if p["id"] in presets]
-    tmp = Path(tempfile.mkdtemp(prefix=".paramres-export-", dir=parent))
+    try:  # tried for real: os.access says yes to root even where nothing can be made (/proc)
+        tmp = Path(tempfile.mkdtemp(prefix=".paramres-export-", dir=parent))
+    except OSError as exc:
+        raise InputError(
+            f"--export {target}: cannot write in {parent}: {exc.strerror or exc}"
+        ) from None
     try:
         (tmp / "static").mkdir()
         (tmp / "data").mkdir()
