@@ -35,6 +35,7 @@ __all__ = [
     "as_modulation",
     "DIGITS_RANGE",
     "BOUNDARY_DIGITS_RANGE",
+    "EXISTENCE_DIGITS_RANGE",
     "MAX_ORDER",
 ]
 
@@ -43,6 +44,9 @@ DIGITS_RANGE = (5, 10000)
 #: digits of a certified boundary (:func:`verify.solve.boundary`; the solver's time grows about
 #: as ``D^1.6``: 100000 digits take seconds)
 BOUNDARY_DIGITS_RANGE = (5, 100000)
+#: digits of a proven threshold (:func:`verify.existence.existence`): its depth ranges are split
+#: down to the resolution, and next to ``m = 1`` far below it a range's parameters are no doubles
+EXISTENCE_DIGITS_RANGE = (5, 3000)
 #: the largest resonance order accepted
 MAX_ORDER = 10000
 #: the smallest depth accepted (text: ``1e-1000``)

@@ -47,6 +47,7 @@ def refused(capsys, argv, *words):
         ),
         (["boundary", "--order", "9" * 5000, "--m", "0.3"], ("order", "1 to")),
         (["boundary", "--order", "1", "--m", "0.3", "--digits", "9" * 5000], ("digits",)),
+        (["existence", "--order", "1", "--Q", "3", "--digits", "5000"], ("5000", "5 to 3000")),
         (
             ["boundary", "--order", "3", "--m", "0.3", "--system", "torsion", "--tol", "1e-8"],
             ("tolerance", "--digits for torsion"),

@@ -40,7 +40,15 @@ from analytic.system import PAPER, System
 
 from .certify import CertificationError, bits_for_digits, certified_root, prove_sign, to_mpf
 from .derived import backend, regime_roots
-from .inputs import InputError, as_damping, as_digits, as_order, as_quality, as_system
+from .inputs import (
+    EXISTENCE_DIGITS_RANGE,
+    InputError,
+    as_damping,
+    as_digits,
+    as_order,
+    as_quality,
+    as_system,
+)
 from .params import NEAR_CRITICAL, exact_fraction, form_for, normal_params, trace_params
 
 __all__ = [
@@ -930,7 +938,7 @@ def existence(
     if QQ is None:
         raise InputError("existence needs friction: give a quality factor Q > 0")
     model = as_damping(damping)
-    d = as_digits(digits)
+    d = as_digits(digits, EXISTENCE_DIGITS_RANGE)
     Qx = exact_fraction(QQ)
     cap = BUDGET_PER_BIT * bits_for_digits(d + 3) if budget is None else int(budget)
     segs, _count = _segments(n, Qx, model, d, cap, sysv)

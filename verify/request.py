@@ -62,7 +62,7 @@ def make_request(order, m, Q, damping, digits, method, tol, system, duty) -> tup
         if method not in ("certified", "auto"):
             raise InputError(f"tol chooses the method itself; it cannot go with {method!r}")
         if tol is None:
-            raise InputError("method 'auto' needs a tolerance tol")
+            raise InputError("method 'auto' needs a tolerance (--tol)")
         tt, method = as_tolerance(tol), "auto"
     QF = None if QQ is None else exact_fraction(QQ)
     if sysv is PAPER or sysv.is_paper:

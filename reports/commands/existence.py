@@ -37,7 +37,7 @@ def register(subparsers) -> None:
     add_order(p)
     add_friction(p, required=True)
     p.add_argument(
-        "--digits", default="15", metavar="D", help="digits of each end, 5 to 10000 (default 15)"
+        "--digits", default="15", metavar="D", help="digits of each end, 5 to 3000 (default 15)"
     )
     add_system(p)
     add_json(p)
