@@ -840,9 +840,10 @@ def _lean_normal(req: Request, bits: int) -> Boundary | None:
                 N1 = N
             else:
                 N2 = N
-        # the shape: unimodality on [a, b] at 64 bits (_unimodal_shape's test, on args(64))
+        # the shape: unimodality on [a, b] at 64 bits (_unimodal_shape's test, on args(64));
+        # its first piece, the whole bracket, written out (nearly always a cap at once)
         ctx.prec = 64
-        if not _unimodal(
+        if not (A < N1 and N1 < N2 and N2 < B and Bend(A.union(B), *low) > _ZERO) and not _unimodal(
             A,
             B,
             N1,

@@ -29,6 +29,8 @@ from fractions import Fraction
 from functools import cache, lru_cache
 from math import gcd
 
+from flint import arb, fmpq
+
 from analytic.system import System
 
 from .derived import Backend, _printer
@@ -219,6 +221,8 @@ def _atoms(system: System, damping: str, m, Q, B: Backend, om=None) -> tuple:
     (factored again after ``m = 1 - om``), so that ``1 - m`` enters to its own accuracy."""
     mq, Qq = _integers(m, 0), _integers(Q, 1)
     if mq is not None and Qq is not None:
+        if B.name == "arb":  # the same balls as _arb_q's, cheaper
+            return tuple(map(arb, _lowest_fmpq(system, damping, *mq, *Qq)))
         rat = B.namespace["_q"]
         return tuple(rat(num, den) for num, den in _lowest_atoms(system, damping, *mq, *Qq))
     lift = lambda x: B.num(x) if isinstance(x, Fraction | int) else x  # noqa: E731
@@ -261,6 +265,16 @@ def _lowest_atoms(system: System, damping: str, p: int, q: int, P: int, R: int) 
             g = -g
         out.append((num // g, den // g))
     return tuple(out)
+
+
+@lru_cache(maxsize=256)
+def _lowest_fmpq(system: System, damping: str, p: int, q: int, P: int, R: int) -> tuple:
+    """:func:`_lowest_atoms` for the ``arb`` back end: python-flint ``fmpq`` (``arb`` of one
+    rounds once, as ``arb(p) / q``), the integers as they are (``arb`` of one is exact)."""
+    return tuple(
+        num if den == 1 else fmpq(num, den)
+        for num, den in _lowest_atoms(system, damping, p, q, P, R)
+    )
 
 
 def _integers(x, default: int) -> tuple[int, int] | None:
