@@ -49,6 +49,20 @@ def refused(capsys, argv, *words):
         (["boundary", "--order", "1", "--m", "0.3", "--digits", "9" * 5000], ("digits",)),
         (["existence", "--order", "1", "--Q", "3", "--digits", "5000"], ("5000", "5 to 3000")),
         (
+            [
+                "atlas",
+                "--orders",
+                "1",
+                "--m",
+                "0.1:0.2:0.1",
+                "--workers",
+                "1000",
+                "--output",
+                "a.nc",
+            ],
+            ("1000", "1 to 64"),
+        ),
+        (
             ["boundary", "--order", "3", "--m", "0.3", "--system", "torsion", "--tol", "1e-8"],
             ("tolerance", "--digits for torsion"),
         ),

@@ -28,6 +28,7 @@ __all__ = [
     "ordered",
     "CONNECT_TIMEOUT",
     "STARTUP_SECONDS",
+    "MAX_WORKERS",
     "default_workers",
 ]
 
@@ -36,6 +37,9 @@ CONNECT_TIMEOUT = 5
 #: a local cluster takes seconds to start (worker processes import the engine): work estimated
 #: below this many CPU seconds runs in this process instead, unless workers are asked for
 STARTUP_SECONDS = 5.0
+#: the most local worker processes (as ``--jobs`` of ``table`` and ``report``): each is a Python
+#: process holding the engine, and a thousand on a small machine only contend and leak
+MAX_WORKERS = 64
 
 
 def default_workers() -> int:
@@ -88,8 +92,8 @@ def cluster(
             client.close()
         return
     n = default_workers() if workers is None else int(workers)
-    if not 1 <= n <= 1024:
-        raise InputError(f"workers {workers} is outside the allowed range 1 to 1024")
+    if not 1 <= n <= MAX_WORKERS:
+        raise InputError(f"workers {workers} is outside the allowed range 1 to {MAX_WORKERS}")
     quiet = logging.getLogger("distributed")
     level = quiet.level
     quiet.setLevel(logging.ERROR)

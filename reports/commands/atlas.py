@@ -85,7 +85,10 @@ def register(subparsers) -> None:
         help="address of a running dask.distributed scheduler (default: a local cluster)",
     )
     p.add_argument(
-        "--workers", default=None, metavar="N", help="local worker processes (default: one/core)"
+        "--workers",
+        default=None,
+        metavar="N",
+        help="local worker processes, 1 to 64 (default: one per core)",
     )
     p.add_argument(
         "--chunk", default=None, metavar="C", help="depths per certified-edge task (default 16)"
@@ -109,8 +112,9 @@ def _int(text, name, low, high):
 
 def run(args) -> int:
     from verify.atlas import EDGE_CHUNK, atlas, check_size, request, store_kind
+    from verify.engine import MAX_WORKERS
 
-    workers = _int(args.workers, "workers", 1, 1024)
+    workers = _int(args.workers, "workers", 1, MAX_WORKERS)
     chunk = _int(args.chunk, "chunk", 1, 100_000) or EDGE_CHUNK
     if args.scheduler is not None and workers is not None:
         raise InputError("--scheduler and --workers exclude each other (the cluster has its own)")
