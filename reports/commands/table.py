@@ -316,6 +316,8 @@ def run(args) -> int:
         "digits": digits if digits is not None else (None if tol is not None else GRID_DIGITS),
         "method": "auto" if tol is not None else ("certified" if certified else "grid"),
         "columns": header,
+        # what a missing number means (an empty CSV field, null in JSON)
+        "empty": "no interval of that order at that depth",
     }
     inputs: dict = {}
     if kind != "square":
