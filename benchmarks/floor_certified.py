@@ -138,37 +138,26 @@ def scenes(quick: bool) -> list[dict]:
                 "note": f"ours at {d2} digits against ours at {d1} (target: time ~ D^1.7)",
             }
         )
-    # friction: the Q = 7 boundary against the frictionless one (the floor here is ours at Q=None)
-    for d in (15, 50):
+    # friction: the Q = 7 boundary against the frictionless one (the floor here is ours at Q=None),
+    # at m = 0.3 and at a deep modulation (the bracket wide, the shape in several pieces); and
+    # with no interval (closed by friction: the proof that D < 0 on the bracket) -- the paper's
+    # pendulum at Q = 3, and the custom system at Q = 30
+    for label, kw, m, Q, d in (
+        ("", {}, "3/10", 7, 15),
+        ("", {}, "3/10", 7, 50),
+        (", m = 0.9", {}, "9/10", 7, 15),
+        (", no interval", {}, "3/10", 3, 15),
+        (" custom, no interval", OTHERS[-1][1], None, 30, 15),
+    ):
         out.append(
             {
-                "name": f"friction Q=7 / none, {d} digits",
+                "name": f"friction Q={Q} / none{label}, {d} digits",
                 "target": 2.0,
-                "ours": lambda d=d: paramres.boundary(ORDER, "3/10", Q=7, digits=d),
-                "floor": lambda d=d: paramres.boundary(ORDER, "3/10", digits=d),
+                "ours": lambda kw=kw, m=m, Q=Q, d=d: paramres.boundary(
+                    ORDER, m, Q=Q, digits=d, **kw
+                ),
+                "floor": lambda kw=kw, m=m, d=d: paramres.boundary(ORDER, m, digits=d, **kw),
                 "note": "the friction boundary against the frictionless one",
-            }
-        )
-    # a deep modulation: the bracket is wide and the shape takes several pieces
-    out.append(
-        {
-            "name": "friction Q=7 / none, m = 0.9, 15 digits",
-            "target": 2.0,
-            "ours": lambda: paramres.boundary(ORDER, "9/10", Q=7, digits=15),
-            "floor": lambda: paramres.boundary(ORDER, "9/10", digits=15),
-            "note": "the friction boundary against the frictionless one at a deep modulation",
-        }
-    )
-    # no interval (closed by friction): the proof that D < 0 on the bracket against the
-    # frictionless edges -- the paper's pendulum at Q = 3, and the custom system at Q = 30
-    for label, kw, m, Q in (("", {}, "3/10", 3), (" custom", OTHERS[-1][1], None, 30)):
-        out.append(
-            {
-                "name": f"friction Q={Q} / none{label}, no interval, 15 digits",
-                "target": 2.0,
-                "ours": lambda kw=kw, m=m, Q=Q: paramres.boundary(ORDER, m, Q=Q, digits=15, **kw),
-                "floor": lambda kw=kw, m=m: paramres.boundary(ORDER, m, digits=15, **kw),
-                "note": "a friction boundary with no interval against the frictionless one",
             }
         )
     # the other members of the family: the same work with their own parameters, against the

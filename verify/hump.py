@@ -126,7 +126,9 @@ def _unimodal_shape(h: _Hump, lo_root, hi_root, budget: int = 16) -> bool:
         ctx.prec = old
 
 
-def _unimodal(a: arb, b: arb, lo: arb, hi: arb, bend, d2D, dD, D, budget: int = 16) -> bool:
+def _unimodal(
+    a: arb, b: arb, lo: arb, hi: arb, bend, d2D, dD, D, budget: int = 16, args: tuple = ()
+) -> bool:
     """The shape from unimodality, at the working precision: the two root balls ``lo``, ``hi``
     disjoint and inside ``(a, b)`` (exact ends), and ``[a, b]`` cut (bisection, at most
     ``budget`` sub-balls; often the whole bracket at once) into pieces each ``cap`` (``D'' <
@@ -135,8 +137,8 @@ def _unimodal(a: arb, b: arb, lo: arb, hi: arb, bend, d2D, dD, D, budget: int = 
     midpoint with the ``D''`` of the first test -- or ``neg`` (``D < 0``; tested only left of
     ``lo`` or right of ``hi``, where the ``neg`` pieces must lie), where the ``neg`` pieces are at
     the two ends only (the others make one interval, the run) and no ``up`` piece lies right of
-    a ``down`` one.  A piece that holds both
-    root balls holds a zero of ``D'`` (Rolle) and is not tested for ``up`` or ``down``.
+    a ``down`` one.  A piece that holds both root balls holds a zero of ``D'`` (Rolle) and is not
+    tested for ``up`` or ``down``.  The functions are called as ``f(X, *args)``.
 
     On the run, ``D' > 0`` up to the last ``up`` piece (a run of ``cap`` pieces before an ``up``
     one has ``D'`` decreasing to a positive value), ``D' < 0`` from the first ``down`` piece on, and
@@ -154,24 +156,24 @@ def _unimodal(a: arb, b: arb, lo: arb, hi: arb, bend, d2D, dD, D, budget: int = 
             return False
         X = u.union(v)  # u, v exact: a ball holding [u, v]
         if bend is not None:
-            d2 = bend(X)
+            d2 = bend(X, *args)
             if d2 > 0:
                 labels.append("cap")
                 continue
             d2 = -2 * d2  # D'' on X (bend is -D''/2, in a tighter form than d2D's)
         else:
-            d2 = d2D(X)
+            d2 = d2D(X, *args)
             if d2 < 0:
                 labels.append("cap")
                 continue
         mid = X.mid()
         if not (u < lo and hi < v):
             # D' on X by the mean-value form around the midpoint (D'' on X is d2)
-            d1 = dD(mid) + d2 * (X - mid)
+            d1 = dD(mid, *args) + d2 * (X - mid)
             if d1 < 0 or d1 > 0:
                 labels.append("down" if d1 < 0 else "up")
                 continue
-        if (v < lo or hi < u) and D(X) < 0:  # (elsewhere a neg piece fails the shape)
+        if (v < lo or hi < u) and D(X, *args) < 0:  # (elsewhere a neg piece fails the shape)
             labels.append("neg")
             continue
         stack.append((mid, v))
@@ -840,19 +842,9 @@ def _lean_normal(req: Request, bits: int) -> Boundary | None:
                 N1 = N
             else:
                 N2 = N
-        # the shape: unimodality on [a, b] at 64 bits (_unimodal_shape's test, on args(64));
-        # its first piece, the whole bracket, written out (nearly always a cap at once)
+        # the shape: unimodality on [a, b] at 64 bits (_unimodal_shape's test, on args(64))
         ctx.prec = 64
-        if not (A < N1 and N1 < N2 and N2 < B and Bend(A.union(B), *low) > _ZERO) and not _unimodal(
-            A,
-            B,
-            N1,
-            N2,
-            lambda t: Bend(t, *low),
-            lambda t: D2(t, *low),
-            lambda t: D1(t, *low),
-            lambda t: D0(t, *low),
-        ):
+        if not _unimodal(A, B, N1, N2, Bend, D2, D1, D0, args=low):
             return None
         # edges_result at the roots' precision: the parameters as they are at the proof's
         # precision, else rounded from there (AtPrecision with rounded=True)
