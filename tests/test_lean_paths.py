@@ -259,3 +259,84 @@ def test_concave_bound_decides_only_where_there_is_no_interval(Q, exists):
         ctx.prec = old
     assert got is (not exists)
     assert boundary(n, "3/10", Q=Q, digits=15).exists is exists
+
+
+@pytest.mark.parametrize("m, Q", [("9/10", "7"), ("19/20", "30"), ("4/5", "7")])
+def test_wide_bracket_starts_from_pieces(monkeypatch, m, Q):
+    """At a deep modulation the bracket is wide and ``D`` convex at its ends: the float stage says
+    so (:func:`verify.float_stage.wide_float_edges`), the short path's unimodality test starts
+    from three pieces, proves the shape there, and with fewer evaluations than bisection from the
+    whole bracket on the same balls."""
+    calls = []
+    real = hump._unimodal
+
+    def spy(*a, **kw):
+        calls.append((a, kw))
+        return real(*a, **kw)
+
+    monkeypatch.setattr(hump, "_unimodal", spy)
+    b = boundary(3, m, Q=Q, digits=15)
+    assert b.exists and b.certified and b.regime == hump._FRICTION_REGIME
+    assert len(calls) == 1
+    a, kw = calls[0]
+    assert kw["pieces"] == 3
+
+    def counted(pieces):
+        n = [0]
+
+        def count(f):
+            def g(*x):
+                n[0] += 1
+                return f(*x)
+
+            return g
+
+        A, B, lo, hi, bend, d2D, dD, D = a
+        ok = real(
+            A,
+            B,
+            lo,
+            hi,
+            count(bend),
+            count(d2D),
+            count(dD),
+            count(D),
+            args=kw["args"],
+            pieces=pieces,
+        )
+        return ok, n[0]
+
+    from flint import ctx
+
+    old = ctx.prec
+    ctx.prec = 64
+    try:
+        (ok3, n3), (ok1, n1) = counted(3), counted(1)
+    finally:
+        ctx.prec = old
+    assert ok3 and ok1
+    assert n3 < n1
+
+
+@pytest.mark.parametrize("m", ["3/5", "4/5", "9/10", "19/20", "99/100", "999/1000"])
+@pytest.mark.parametrize("Q", ["7", "30", "1000"])
+def test_wide_float_edges_are_the_float_stages(m, Q):
+    """The edges of the float stage started at the bracket's ends (a wide bracket) are those of
+    :func:`verify.float_stage.float_stage` (started around the maximiser), to what doubles can
+    tell near ``m = 1``: a relative ``1e-13`` (against the edges Newton's method gives at 300 bits,
+    both are off by up to ``7e-14`` at ``m = 0.999``, from the rounding of ``D`` in doubles)."""
+    from fractions import Fraction
+
+    from verify.float_stage import WIDE, float_stage, wide_float_edges
+    from verify.params import normal_values
+
+    for n in (1, 2, 3, 4):
+        r, r2, u, beta, _, g, _, _, _ = normal_values(Fraction(m), Fraction(Q), "exact", hump._MATH)
+        a, b, _, dtop, lo, hi, convex = wide_float_edges(n, r, r2, u, beta, g)
+        a0, b0, _, dtop0, lo0, hi0 = float_stage(n, r, r2, u, beta, g)
+        assert (a, b) == (a0, b0)
+        if convex:
+            assert b - a > WIDE
+        if dtop0 > 0 and dtop > 0:
+            assert abs(lo - lo0) <= 1e-13 * abs(lo0) + 1e-300
+            assert abs(hi - hi0) <= 1e-13 * abs(hi0) + 1e-300

@@ -26,6 +26,7 @@ __all__ = [
     "float_edges",
     "normal_float_stage",
     "normal_float_edges",
+    "wide_float_edges",
     "bisect_newton",
 ]
 
@@ -222,9 +223,29 @@ def float_edges(n: int, r: float, r2: float, u: float, beta: float, g: float) ->
     """As :func:`float_stage`, cheaper where the interval is not tiny: ``top`` is then the
     middle of the bracket ``[a, b]`` where ``D > 0`` there (``dtop = D(top)``), not the maximiser,
     and each edge is found by Halley's method started at a root of the parabola through that
-    point with the slope and curvature there.  Elsewhere (``D <= 0`` at the middle, or ``D'' >= 0``
-    there) it is :func:`float_stage`.  What the certified solver needs of ``top`` is a point
-    between the edges where ``D > 0``."""
+    point with the slope and curvature there -- or, on a wide bracket (:data:`WIDE`), at the
+    bracket's end where Newton's step from there is short (:func:`wide_float_edges`).  Elsewhere
+    (``D <= 0`` at the middle, or ``D'' >= 0`` there) it is :func:`float_stage`.  What the
+    certified solver needs of ``top`` is a point between the edges where ``D > 0``."""
+    return wide_float_edges(n, r, r2, u, beta, g)[:6]
+
+
+#: a bracket wider than this (in ``theta``) is wide: there ``D`` is far from a parabola (near
+#: ``m = 1`` it rises steeply from each end, convex there, to a broad cap), and the float stage
+#: evaluates ``D`` at the two ends
+WIDE = 1.0
+
+
+def wide_float_edges(n: int, r: float, r2: float, u: float, beta: float, g: float) -> tuple:
+    """:func:`float_edges` and a seventh field, ``convex``: ``True`` where the bracket is wide
+    (:data:`WIDE`) and ``D'' >= 0`` at one of its ends in floats -- there no test of concavity
+    can succeed on the whole bracket or on a piece holding an end (what
+    :func:`verify.hump._unimodal` needs to know to start from smaller pieces).
+
+    On a wide bracket, ``D`` and its derivatives at the two ends start the edges: an edge whose
+    Newton step from the end (``-D/D'`` with ``D < 0 < D'`` at ``a``, ``D'`` of the other sign at
+    ``b``) is under an eighth of the half-bracket is started there, where ``D`` is nearly linear
+    (a deep modulation puts each edge close to an end); the other at the parabola's root."""
     edge, d012, _ = _forms(n % 2 == 1)
     t1 = float_edge(edge, n, 1, r, beta)
     t2 = float_edge(edge, n, -1, r, beta)
@@ -233,7 +254,7 @@ def float_edges(n: int, r: float, r2: float, u: float, beta: float, g: float) ->
     mid = 0.5 * (a + b)
     dm, d1, d2 = d012(mid, *args)
     if not (dm > 0 and d2 < 0 and a < mid < b):
-        return float_stage(n, r, r2, u, beta, g)
+        return (*float_stage(n, r, r2, u, beta, g), False)
     # the parabola dm + d1 t + d2 t^2/2: one root either side of t = 0 (dm > 0 > d2)
     disc = math.sqrt(d1 * d1 - 2.0 * d2 * dm)
     q = -0.5 * (d1 + math.copysign(disc, d1))  # the roots q/(d2/2) and dm/q, without cancellation
@@ -243,12 +264,30 @@ def float_edges(n: int, r: float, r2: float, u: float, beta: float, g: float) ->
             r0, r1 = r1, r0
     else:
         r0, r1 = -math.inf, math.inf
-    x0 = mid + r0
-    if not a < x0 < mid:
-        x0 = 0.5 * (a + mid)
-    lo = _halley_edge(d012, a, mid, x0, True, d012(x0, *args), args)
-    x0 = mid + r1
-    if not mid < x0 < b:
-        x0 = 0.5 * (mid + b)
-    hi = _halley_edge(d012, mid, b, x0, False, d012(x0, *args), args)
-    return a, b, mid, dm, lo, hi
+    convex = False
+    at_a = at_b = None
+    if b - a > WIDE:
+        at_a, at_b = d012(a, *args), d012(b, *args)
+        convex = not (at_a[2] < 0 and at_b[2] < 0)  # (NaN: convex, the safe side)
+        reach = 0.125 * (mid - a)
+        fa, da = at_a[0], at_a[1]
+        if not (fa < 0 < da and -fa < reach * da):
+            at_a = None
+        fb, db = at_b[0], at_b[1]
+        if not (fb < 0 < -db and -fb < -reach * db):
+            at_b = None
+    if at_a is not None:
+        lo = _halley_edge(d012, a, mid, a, True, at_a, args)
+    else:
+        x0 = mid + r0
+        if not a < x0 < mid:
+            x0 = 0.5 * (a + mid)
+        lo = _halley_edge(d012, a, mid, x0, True, d012(x0, *args), args)
+    if at_b is not None:
+        hi = _halley_edge(d012, mid, b, b, False, at_b, args)
+    else:
+        x0 = mid + r1
+        if not mid < x0 < b:
+            x0 = 0.5 * (mid + b)
+        hi = _halley_edge(d012, mid, b, x0, False, d012(x0, *args), args)
+    return a, b, mid, dm, lo, hi, convex

@@ -57,7 +57,7 @@ from .derived import (
     trace_window,
 )
 from .enclosure import AtPrecision, edges_result, no_interval, sgn_of, theta_floor
-from .float_stage import float_edges, normal_float_edges, normal_float_stage
+from .float_stage import normal_float_edges, normal_float_stage, wide_float_edges
 from .params import NEAR_ONE, NormalParams, normal_params, normal_values, trace_params
 from .request import Request
 from .result import Boundary, from_balls
@@ -127,11 +127,24 @@ def _unimodal_shape(h: _Hump, lo_root, hi_root, budget: int = 16) -> bool:
 
 
 def _unimodal(
-    a: arb, b: arb, lo: arb, hi: arb, bend, d2D, dD, D, budget: int = 16, args: tuple = ()
+    a: arb,
+    b: arb,
+    lo: arb,
+    hi: arb,
+    bend,
+    d2D,
+    dD,
+    D,
+    budget: int = 16,
+    args: tuple = (),
+    pieces: int = 1,
 ) -> bool:
     """The shape from unimodality, at the working precision: the two root balls ``lo``, ``hi``
-    disjoint and inside ``(a, b)`` (exact ends), and ``[a, b]`` cut (bisection, at most
-    ``budget`` sub-balls; often the whole bracket at once) into pieces each ``cap`` (``D'' <
+    disjoint and inside ``(a, b)`` (exact ends), and ``[a, b]`` cut (first into ``pieces`` equal
+    parts at exact floats -- where the float stage sees ``D`` convex at an end of a wide bracket,
+    :func:`verify.float_stage.wide_float_edges`, the tests of the whole and of its halves would
+    fail -- then by bisection, at most ``budget`` sub-balls in all; often the whole bracket at
+    once) into pieces each ``cap`` (``D'' <
     0``: ``-D''/2 > 0`` by ``bend`` where there is one, else ``D'' < 0`` by ``d2D``), ``up``
     (``D' > 0``), ``down`` (``D' < 0``) -- ``D'`` by the mean-value form around the piece's
     midpoint with the ``D''`` of the first test -- or ``neg`` (``D < 0``; tested only left of
@@ -148,7 +161,15 @@ def _unimodal(
     :func:`_prove_shape`, and existence with it.  ``False`` where this is not proven."""
     if not (a < lo and lo < hi and hi < b):
         return False
-    stack, count, labels = [(a, b)], 0, []
+    if pieces > 1:  # left to right on the stack: the leftmost piece last
+        fa, fb = float(a), float(b)  # (exact: the ends are floats)
+        ends = [b, *(arb(fa + (fb - fa) * (pieces - i) / pieces) for i in range(1, pieces)), a]
+        if not all(ends[i + 1] < ends[i] for i in range(pieces)):
+            return False  # pragma: no cover - guard (a bracket of a few floats)
+        stack = [(ends[i + 1], ends[i]) for i in range(pieces)]
+    else:
+        stack = [(a, b)]
+    count, labels = 0, []
     while stack:  # left to right: the left half is pushed last
         u, v = stack.pop()
         count += 1
@@ -734,7 +755,9 @@ def _lean_normal(req: Request, bits: int) -> Boundary | None:
         if float(bm) < NEAR_ONE:
             return None
         beta_f = float(beta)
-        fa, fb, tp, dtop, lo, hi = float_edges(n, float(r), float(r2), float(u), beta_f, float(g))
+        fa, fb, tp, dtop, lo, hi, convex = wide_float_edges(
+            n, float(r), float(r2), float(u), beta_f, float(g)
+        )
         # the bracket (hump_normal's, its max and min written out: the same floats where none
         # is NaN; with a NaN the bracket's test fails there, and here)
         if not (fa == fa and fb == fb):
@@ -844,7 +867,7 @@ def _lean_normal(req: Request, bits: int) -> Boundary | None:
                 N2 = N
         # the shape: unimodality on [a, b] at 64 bits (_unimodal_shape's test, on args(64))
         ctx.prec = 64
-        if not _unimodal(A, B, N1, N2, Bend, D2, D1, D0, args=low):
+        if not _unimodal(A, B, N1, N2, Bend, D2, D1, D0, args=low, pieces=3 if convex else 1):
             return None
         # edges_result at the roots' precision: the parameters as they are at the proof's
         # precision, else rounded from there (AtPrecision with rounded=True)
