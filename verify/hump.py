@@ -161,12 +161,17 @@ def _unimodal(
     :func:`_prove_shape`, and existence with it.  ``False`` where this is not proven."""
     if not (a < lo and lo < hi and hi < b):
         return False
-    if pieces > 1:  # left to right on the stack: the leftmost piece last
+    if pieces > 1:  # the cuts at floats strictly inside (a, b), as the stack takes them
         fa, fb = float(a), float(b)  # (exact: the ends are floats)
-        ends = [b, *(arb(fa + (fb - fa) * (pieces - i) / pieces) for i in range(1, pieces)), a]
-        if not all(ends[i + 1] < ends[i] for i in range(pieces)):
-            return False  # pragma: no cover - guard (a bracket of a few floats)
-        stack = [(ends[i + 1], ends[i]) for i in range(pieces)]
+        cuts = [fb - (fb - fa) * i / pieces for i in range(1, pieces)]
+        stack, v = [], b
+        for c in cuts:  # (descending: the leftmost piece is pushed last)
+            if not fa < c < float(v):
+                return False  # pragma: no cover - guard (a bracket of a few floats)
+            u = arb(c)
+            stack.append((u, v))
+            v = u
+        stack.append((a, v))
     else:
         stack = [(a, b)]
     count, labels = 0, []
