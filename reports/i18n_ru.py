@@ -325,11 +325,15 @@ PHRASES: dict[str, str] = {
         r"трения:"
     ),
     r"Above the threshold the edges are series in $m$ at fixed "
-    r"$s = \sqrt{1 - (m_{\min,0}/m)^{2p}}$, with $m_{\min,0}$ the leading threshold; "
+    r"$s = \sqrt{1 - (m_{\min,0}/m)^{2}}$ (odd orders) or "
+    r"$s = \sqrt{1 - (m_{\min,0}/m)^{4}}$ (even orders), with $m_{\min,0}$ the "
+    r"leading threshold; "
     r"the paper's eqs. (40) and (45) are the first terms. Both damping models, in "
     r"units of $T_0$:": (
         r"Выше порога границы --- ряды по $m$ при фиксированном "
-        r"$s = \sqrt{1 - (m_{\min,0}/m)^{2p}}$, где $m_{\min,0}$ --- главный член порога; ур. (40) "
+        r"$s = \sqrt{1 - (m_{\min,0}/m)^{2}}$ (нечётные порядки) или "
+        r"$s = \sqrt{1 - (m_{\min,0}/m)^{4}}$ (чётные), где $m_{\min,0}$ --- главный член "
+        r"порога; ур. (40) "
         r"и (45) статьи --- первые члены. Обе модели трения, в единицах $T_0$:"
     ),
     # closings

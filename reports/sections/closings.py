@@ -8,6 +8,7 @@ from fractions import Fraction
 import mpmath
 import sympy as sp
 
+from ..i18n import say
 from ..latex import Latex, inline, math, paragraph, prose, raw, table
 from . import Context, Part
 from ._render import check, note
@@ -80,6 +81,19 @@ def build(ctx: Context) -> Part:
             sp.false,
         ):
             shown = inline(math(expr, cfg))
+        if shown is not None and {"j", "k"} <= {str(x) for x in expr.free_symbols}:
+            # the triple (a, b, n) at the zeros of f numbered by the integers j and k
+            zeros = (
+                r"x = \pi/2 + j\pi$, $y = \pi/2 + k\pi"
+                if step.claim.startswith("odd")
+                else r"x = j\pi$, $y = k\pi"
+            )
+            shown = Latex(
+                say(r"$(a, b, n) = {}$ at ", r"$(a, b, n) = {}$ при ").format(shown.raw.strip("$"))
+                + "$"
+                + zeros
+                + say(r"$, $j$ and $k$ integers", r"$, $j$ и $k$ целые")
+            )
         items.append(
             paragraph(
                 raw(f"\\item[{k}.]"),
