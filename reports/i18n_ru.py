@@ -341,9 +341,8 @@ PHRASES: dict[str, str] = {
     "them to": "Статья показывает смыкания третьего, четвёртого и пятого интервалов на рис. 2 и "
     "связывает их с",
     "(its Section 5); the theorem says these are instances of one rule and that there are no "
-    "others. The derivation, each step checked by the engine:": (
-        "(разд. 5); теорема утверждает, что это частные случаи одного правила и других нет. "
-        "Вывод, каждый шаг которого проверен программой:"
+    "others.": (
+        "(разд. 5); теорема утверждает, что это частные случаи одного правила и других нет."
     ),
     r"Table~\ref{tab:closings} lists every closing of the orders $1,\dots,12$. The period is "
     r"printed with 40 correctly rounded significant digits from an interval enclosure; the last "

@@ -452,6 +452,7 @@ DEFINED_SYMBOLS = (
     ("Q_min", r"Q_\{\\min\}", r"\$Q_\{\\min\}\$ (the|---)"),
     ("T_0", r"T_0|T_\{0\}", r"\$T_0\$ (that of|--- период)"),
     ("omega_1, omega_2", r"\\omega_\{?[12]\}?", r"\(\$\\omega_1\$, \$\\omega_2\$ (the|---)"),
+    ("the edge factors F_+, F_-", r"F_\{?[+-]|F_\\pm", r"\$F_\\pm\$ (its|---)"),
 )
 
 

@@ -68,8 +68,19 @@ def build(ctx: Context) -> Part:
             "them to",
             inline(raw(r"T_1:T_2 = 2:1,\ 3:1,\ 3:2")),
             "(its Section 5); the theorem says these are instances of one rule and that there are "
-            "no "
-            "others. The derivation, each step checked by the engine:",
+            "no others.",
+            raw(
+                say(
+                    r"Below $x$, $y$, $r$ are those of the normal form "
+                    r"(Section~\ref{sec:normal-form}), $F_\pm$ its two edge factors, and $f$ is "
+                    r"$\cos$ for odd orders and $\sin$ for even ones. The derivation, each step "
+                    r"checked by the engine:",
+                    r"Ниже $x$, $y$, $r$ --- величины из нормальной формы "
+                    r"(раздел~\ref{sec:normal-form}), $F_\pm$ --- два её множителя для границ, "
+                    r"а $f$ --- это $\cos$ для нечётных порядков и $\sin$ для чётных. Вывод, "
+                    r"каждый шаг которого проверен программой:",
+                )
+            ),
         ),
     ]
     items = []
