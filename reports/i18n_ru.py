@@ -325,11 +325,15 @@ PHRASES: dict[str, str] = {
         r"трения:"
     ),
     r"Above the threshold the edges are series in $m$ at fixed "
-    r"$s = \sqrt{1 - (m_{\min,0}/m)^{2p}}$, with $m_{\min,0}$ the leading threshold; "
+    r"$s = \sqrt{1 - (m_{\min,0}/m)^{2}}$ (odd orders) or "
+    r"$s = \sqrt{1 - (m_{\min,0}/m)^{4}}$ (even orders), with $m_{\min,0}$ the "
+    r"leading threshold; "
     r"the paper's eqs. (40) and (45) are the first terms. Both damping models, in "
     r"units of $T_0$:": (
         r"Выше порога границы --- ряды по $m$ при фиксированном "
-        r"$s = \sqrt{1 - (m_{\min,0}/m)^{2p}}$, где $m_{\min,0}$ --- главный член порога; ур. (40) "
+        r"$s = \sqrt{1 - (m_{\min,0}/m)^{2}}$ (нечётные порядки) или "
+        r"$s = \sqrt{1 - (m_{\min,0}/m)^{4}}$ (чётные), где $m_{\min,0}$ --- главный член "
+        r"порога; ур. (40) "
         r"и (45) статьи --- первые члены. Обе модели трения, в единицах $T_0$:"
     ),
     # closings
@@ -337,9 +341,8 @@ PHRASES: dict[str, str] = {
     "them to": "Статья показывает смыкания третьего, четвёртого и пятого интервалов на рис. 2 и "
     "связывает их с",
     "(its Section 5); the theorem says these are instances of one rule and that there are no "
-    "others. The derivation, each step checked by the engine:": (
-        "(разд. 5); теорема утверждает, что это частные случаи одного правила и других нет. "
-        "Вывод, каждый шаг которого проверен программой:"
+    "others.": (
+        "(разд. 5); теорема утверждает, что это частные случаи одного правила и других нет."
     ),
     r"Table~\ref{tab:closings} lists every closing of the orders $1,\dots,12$. The period is "
     r"printed with 40 correctly rounded significant digits from an interval enclosure; the last "

@@ -427,3 +427,48 @@ def test_the_settled_test_ignores_only_the_last_page_record(tmp_path):
     assert _auxiliary(tmp_path, "doc") == first
     aux.write_bytes(b"\\relax\n\\newlabel{a}{{1}{3}}\n\\gdef \\@abspage@last{51}\n")
     assert _auxiliary(tmp_path, "doc") != first
+
+
+#: symbols that used to appear before (or without) their definition: (what, the symbol as it is
+#: set, its definition in English or Russian)
+DEFINED_SYMBOLS = (
+    ("the phases a_i", r"(?<![\\A-Za-z])a_\{?[i12]\}?", r"a_i = \\omega_i T/2"),
+    ("W_1, W_2", r"W_\{?[i12]\}?", r"\$W_i\$ (is|---)"),
+    ("the matrix E", r"\$S\\,E\$|E_\{12\}", r"\$E\$ (is the|---)"),
+    ("the lengths l_a, l_b", r"l_\{?[ab]\}?", r"\$l_a\$ (and|и) \$l_b\$ (the|---)"),
+    ("the half-period map G", r"G_\{11\}|\$G\$", r"(map|полпериода) \$G\$"),
+    ("the reflection P", r"P G\^\{-1\}", r"P = \\operatorname\{diag\}"),
+    ("Delta T", r"\\Delta T(?![a-z])", r"\\Delta T = T - nT_\{av\}/2"),
+    ("theta", r"\\theta(?![a-z])", r"\\theta = \\omega_\{av\}\\Delta T/2"),
+    ("T_av", r"T_\{av\}", r"T_\{av\} = 2\\pi/\\omega_\{av\}"),
+    ("tau", r"\\tau(?![a-z])", r"\\tau = T/T_0"),
+    ("q", r"(?<![\\A-Za-z])q(?![A-Za-z{])", r"\$q = \\omega_1\(1\+m\)\^2"),
+    ("p", r"(?<![\\A-Za-z\[])p(?![A-Za-z{\]])", r"\$p = e\^\{-\\gamma T\}"),
+    ("C_i, S_i", r"[CS]_\{?[i12]\}?", r"C_i = \\cos\(\\omega_i T/2\)"),
+    ("N", r"(?<![\\A-Za-z])N(?= [=<])", r"\$N\$ (is the normal form|--- нормальная форма)"),
+    ("J_0", r"J_0", r"\$J_0\$ (its|---)"),
+    ("Omega_1", r"\\Omega_", r"\\Omega_\{1\} = \\sqrt"),
+    ("Lambda_1", r"\\Lambda_", r"\\Lambda_\{1\} = \\sqrt"),
+    ("Q_min", r"Q_\{\\min\}", r"\$Q_\{\\min\}\$ (the|---)"),
+    ("T_0", r"T_0|T_\{0\}", r"\$T_0\$ (that of|--- период)"),
+    ("omega_1, omega_2", r"\\omega_\{?[12]\}?", r"\(\$\\omega_1\$, \$\\omega_2\$ (the|---)"),
+    ("the edge factors F_+, F_-", r"F_\{?[+-]|F_\\pm", r"\$F_\\pm\$ (its|---)"),
+)
+
+
+@pytest.mark.parametrize("lang", ["en", "ru"])
+def test_symbols_are_defined_where_they_are_first_used(reports, lang):
+    """Each symbol of :data:`DEFINED_SYMBOLS` is defined before its first use in the report or
+    in the sentence of its first use (a teacher reads the report from the front)."""
+    body = _tex(reports, lang).split(r"\begin{document}", 1)[1]
+    for what, symbol, definition in DEFINED_SYMBOLS:
+        first = re.search(symbol, body)
+        assert first is not None, what
+        said = re.search(definition, body)
+        assert said is not None, f"{what} is never defined"
+        end = re.search(r"[.:](\s|\}|$)|\n\n", body[first.end() :])
+        sentence_end = first.end() + (end.start() if end else len(body))
+        assert said.start() <= sentence_end, (
+            f"{what} is used before it is defined: "
+            f"...{body[max(0, first.start() - 120) : first.end() + 60]}..."
+        )

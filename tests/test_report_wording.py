@@ -5,6 +5,11 @@ the references."""
 
 from __future__ import annotations
 
+import re
+import shutil
+import subprocess
+
+import pytest
 import sympy as sp
 
 from reports import latex as L
@@ -82,3 +87,102 @@ def test_the_printed_command_names_no_directory_of_the_machine():
     assert line("report") == "paramres report --out report"
     assert line("out dir/", lang="ru") == "paramres report --out 'out dir' --lang ru"
     assert line(".") == "paramres report --out ."
+
+
+#: the smallest share of the table's type a formula in the errata table may be set at
+ERRATA_MIN_SCALE = 0.9
+
+
+def _errata_table_widths(tmp_path, lang: str) -> tuple[str, list[tuple[float, float]], str]:
+    """The errata table of the report in ``lang`` typeset alone with the report's preamble: its
+    source, the natural width of every formula in it against the width it is given (points,
+    measured by TeX), and the LaTeX log."""
+    from reports.i18n import language
+    from reports.latex import Latex, document
+    from reports.report import LANGUAGE_PACKAGES
+    from reports.sections import Context
+    from reports.sections.catalogue import rows
+    from reports.sections.summary import errata_table
+
+    with language(lang):
+        differs = [r for r in rows(Context(log=lambda m: None)) if r.status != "agrees"]
+        table = errata_table({"differs": differs}).raw
+    measure = (
+        r"\newsavebox\measurebox\let\fitcellset\fitcell"
+        r"\renewcommand{\fitcell}[1]{\sbox\measurebox{$\displaystyle #1$}"
+        r"\typeout{FORMULA \the\wd\measurebox\space\the\linewidth}\fitcellset{#1}}"
+    )
+    tex = document(
+        [Latex(r"\section{S}\label{sec:catalogue}"), Latex(table)],
+        title="errata",
+        packages=LANGUAGE_PACKAGES.get(lang, ()),
+        preamble=[measure],
+        contents=(),
+    ).raw
+    (tmp_path / "errata.tex").write_text(tex, encoding="utf-8")
+    subprocess.run(
+        ["pdflatex", "-interaction=nonstopmode", "-halt-on-error", "errata.tex"],
+        cwd=tmp_path,
+        capture_output=True,
+        check=True,
+    )
+    log = (tmp_path / "errata.log").read_text(encoding="latin-1")
+    widths = [
+        (float(w), float(lw)) for w, lw in re.findall(r"^FORMULA ([\d.]+)pt ([\d.]+)pt$", log, re.M)
+    ]
+    return table, widths, log
+
+
+@pytest.mark.skipif(shutil.which("pdflatex") is None, reason="pdflatex not installed")
+@pytest.mark.parametrize("lang", ["en", "ru"])
+def test_the_errata_table_sets_its_formulas_in_readable_type(tmp_path, lang):
+    """Every formula of the errata table fits its column at 90 % of the table's type or more (it
+    used to be scaled to a third of the page, down to 5 or 6 pt), the table shrinks nothing
+    otherwise and sticks out nowhere."""
+    from reports.build import supports
+
+    if not supports(lang):
+        pytest.skip(f"the installed TeX cannot typeset {lang}")
+    table, widths, log = _errata_table_widths(tmp_path, lang)
+    for shrink in (r"\scalebox", r"\resizebox", r"\tiny", r"\scriptsize", r"\footnotesize"):
+        assert shrink not in table, shrink
+    assert len(widths) >= 10
+    scales = [min(1.0, lw / w) for w, lw in widths if w > 0]
+    assert min(scales) >= ERRATA_MIN_SCALE, sorted(scales)[:5]
+    assert "Overfull" not in log
+
+
+def _math_symbols(src: str) -> set[str]:
+    """The letters (Greek or Latin, with their subscripts) in the mathematics of ``src``, without
+    the operators' names, the differential ``d``, Euler's ``e`` and words set as text."""
+    src = re.sub(r"\\(text|operatorname|mathrm)\{[^{}]*\}", " ", src)
+    src = re.sub(r"\\(frac|left|right|sqrt|sin|cos|tan|min|quad|qquad|dots|cdot|mp|pm)\b", " ", src)
+    src = src.replace(r"\fitcell", " ")
+    found = set()
+    for mt in re.finditer(
+        r"(\\[A-Za-z]+|(?<![\\A-Za-z])[A-Za-z](?![A-Za-z]))(_\{[^{}]*\}|_[A-Za-z0-9])?", src
+    ):
+        name = mt.group(1) + re.sub(r"[{}]", "", mt.group(2) or "")
+        if name not in ("d", "e") and not name.startswith(("\\begin", "\\end", "\\emph")):
+            found.add(name)
+    return found
+
+
+def test_every_symbol_of_the_errata_table_is_said_before_it():
+    """The summary comes before the model section: the symbols of its errata table are said in
+    the paragraph before the table (they used to appear there undefined)."""
+    from reports.sections import Context
+    from reports.sections.catalogue import rows
+    from reports.sections.summary import _lines, notation_paragraph
+
+    differs = [r for r in rows(Context(log=lambda m: None)) if r.status != "agrees"]
+    used = set()
+    for r in differs:
+        for side in (r.printed, r.derived or ""):
+            for line in _lines(side):
+                used |= _math_symbols(line)
+    said = _math_symbols(" ".join(re.findall(r"\$([^$]*)\$", notation_paragraph().raw)))
+    said |= {x[:-1] + k for x in said if x.endswith("_i") for k in "12"}  # C_i: C_1 and C_2
+    said |= {"T", "m", "n", "T_-", "T_+"}  # said in the introduction
+    assert {"q", "p", r"\Delta", r"\omega_av", "T_av", "N", r"\theta"} <= used
+    assert used <= said, sorted(used - said)

@@ -40,10 +40,13 @@ class Config:
         r"\ifdim\wd\prfitbox>\dimexpr\linewidth-4em\relax"
         r"\resizebox{\dimexpr\linewidth-4em\relax}{!}{\usebox\prfitbox}%",
         r"\else\usebox\prfitbox\fi}",
-        # \fitcell{...}: the same for a formula in a table cell, scaled to the column if needed
+        # \fitcell{...}: a formula in a table cell, scaled to the column if it is a little too
+        # wide, but never below 90 % of the table's type (a wider one sticks out, and the build
+        # counts it as an overfull line): the columns are made wide enough for their formulas
         r"\newcommand{\fitcell}[1]{\sbox\prfitbox{$\displaystyle #1$}%",
-        r"\ifdim\wd\prfitbox>\linewidth\resizebox{\linewidth}{!}{\usebox\prfitbox}%",
-        r"\else\usebox\prfitbox\fi}",
+        r"\ifdim\wd\prfitbox>1.1111\linewidth\scalebox{0.9}{\usebox\prfitbox}%",
+        r"\else\ifdim\wd\prfitbox>\linewidth\resizebox{\linewidth}{!}{\usebox\prfitbox}%",
+        r"\else\usebox\prfitbox\fi\fi}",
         r"\numberwithin{equation}{section}",
         r"\setlength{\LTcapwidth}{\textwidth}",
         r"\allowdisplaybreaks",

@@ -139,7 +139,17 @@ def build(ctx: Context) -> Part:
         "abbreviations are expanded), otherwise at random points with 40 digits. An entry whose "
         "printed and derived forms are simply the same equation, decided symbolically, says "
         "nothing more; every other entry says how it was decided. Where they differ, the entry "
-        "shows the smallest sub-expressions in which they part and the correct form."
+        "shows the smallest sub-expressions in which they part and the correct form.",
+        raw(
+            say(
+                r"In the entries on friction $m_{\min}$ is the threshold depth at a given quality "
+                r"factor and $Q_{\min}$ the threshold quality factor at a given depth (below "
+                r"either the interval does not exist).",
+                r"В пунктах о трении $m_{\min}$ --- пороговая глубина модуляции при данной "
+                r"добротности, а $Q_{\min}$ --- пороговая добротность при данной глубине (ниже "
+                r"любого из них интервала нет).",
+            )
+        ),
     )
     entries = [_entry(r, ctx) for r in rs]
     blocks = [intro, summary, *entries]

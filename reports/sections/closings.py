@@ -8,6 +8,7 @@ from fractions import Fraction
 import mpmath
 import sympy as sp
 
+from ..i18n import say
 from ..latex import Latex, inline, math, paragraph, prose, raw, table
 from . import Context, Part
 from ._render import check, note
@@ -67,8 +68,19 @@ def build(ctx: Context) -> Part:
             "them to",
             inline(raw(r"T_1:T_2 = 2:1,\ 3:1,\ 3:2")),
             "(its Section 5); the theorem says these are instances of one rule and that there are "
-            "no "
-            "others. The derivation, each step checked by the engine:",
+            "no others.",
+            raw(
+                say(
+                    r"Below $x$, $y$, $r$ are those of the normal form "
+                    r"(Section~\ref{sec:normal-form}), $F_\pm$ its two edge factors, and $f$ is "
+                    r"$\cos$ for odd orders and $\sin$ for even ones. The derivation, each step "
+                    r"checked by the engine:",
+                    r"Ниже $x$, $y$, $r$ --- величины из нормальной формы "
+                    r"(раздел~\ref{sec:normal-form}), $F_\pm$ --- два её множителя для границ, "
+                    r"а $f$ --- это $\cos$ для нечётных порядков и $\sin$ для чётных. Вывод, "
+                    r"каждый шаг которого проверен программой:",
+                )
+            ),
         ),
     ]
     items = []
@@ -80,6 +92,19 @@ def build(ctx: Context) -> Part:
             sp.false,
         ):
             shown = inline(math(expr, cfg))
+        if shown is not None and {"j", "k"} <= {str(x) for x in expr.free_symbols}:
+            # the triple (a, b, n) at the zeros of f numbered by the integers j and k
+            zeros = (
+                r"x = \pi/2 + j\pi$, $y = \pi/2 + k\pi"
+                if step.claim.startswith("odd")
+                else r"x = j\pi$, $y = k\pi"
+            )
+            shown = Latex(
+                say(r"$(a, b, n) = {}$ at ", r"$(a, b, n) = {}$ при ").format(shown.raw.strip("$"))
+                + "$"
+                + zeros
+                + say(r"$, $j$ and $k$ integers", r"$, $j$ и $k$ целые")
+            )
         items.append(
             paragraph(
                 raw(f"\\item[{k}.]"),

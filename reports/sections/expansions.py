@@ -238,7 +238,9 @@ def _near(ctx: Context, by_label: dict) -> list[Latex]:
         paragraph(
             mixed(
                 r"Above the threshold the edges are series in $m$ at fixed "
-                r"$s = \sqrt{1 - (m_{\min,0}/m)^{2p}}$, with $m_{\min,0}$ the leading threshold; "
+                r"$s = \sqrt{1 - (m_{\min,0}/m)^{2}}$ (odd orders) or "
+                r"$s = \sqrt{1 - (m_{\min,0}/m)^{4}}$ (even orders), with $m_{\min,0}$ the "
+                r"leading threshold; "
                 r"the paper's eqs. (40) and (45) are the first terms. Both damping models, in "
                 r"units of $T_0$:"
             )

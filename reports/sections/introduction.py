@@ -39,7 +39,9 @@ def build(ctx: Context) -> Part:
         t(
             r"Between the jumps the pendulum oscillates freely; at each jump the angle is "
             r"continuous and the angular momentum is conserved. Near $T = nT_{av}/2$ "
-            r"($n = 1, 2, 3, \dots$) lies the $n$-th \emph{interval of parametric instability}, "
+            r"($n = 1, 2, 3, \dots$; $T_{av} = 2\pi/\omega_{av}$ is the period of the mean "
+            r"$\omega_{av}$ of the natural frequencies $\omega_1$, $\omega_2$ at the two "
+            r"lengths) lies the $n$-th \emph{interval of parametric instability}, "
             r"a range $T_-(m) < T < T_+(m)$ of modulation periods in which the lower equilibrium "
             r"is unstable. On its edges the motion is a stationary oscillation. The paper "
             r"stitches free-oscillation segments across the jumps, asks when the resulting "
@@ -49,7 +51,9 @@ def build(ctx: Context) -> Part:
             r"Section~6 and appendix, eqs.~28--45), illustrated by its Figs.~2 and~8 and by "
             r"the author's simulation program~\cite{butikov-applet}.",
             r"Между скачками маятник совершает свободные колебания; при скачке угол непрерывен, "
-            r"а момент импульса сохраняется. Вблизи $T = nT_{av}/2$ ($n = 1, 2, 3, \dots$) "
+            r"а момент импульса сохраняется. Вблизи $T = nT_{av}/2$ ($n = 1, 2, 3, \dots$; "
+            r"$T_{av} = 2\pi/\omega_{av}$ --- период средней $\omega_{av}$ собственных частот "
+            r"$\omega_1$, $\omega_2$ при двух длинах) "
             r"лежит $n$-й \emph{интервал параметрической неустойчивости} $T_-(m) < T < T_+(m)$, "
             r"в котором нижнее положение равновесия неустойчиво; на его границах происходят "
             r"стационарные колебания. Статья сшивает отрезки свободных колебаний через скачки, "

@@ -9,6 +9,7 @@ from analytic.model import (
     Regime,
     S,
     Segment,
+    damped_frequency_relations,
     derived_quantities,
     inertia,
     jump_ratio,
@@ -52,8 +53,16 @@ def _halves(ctx: Context) -> Latex:
         ["half", "", "length", raw(r"$J/J_0$"), raw(r"frequency ($T_0=1$)"), "natural period"],
         rows,
         columns="llcccc",
-        caption=raw(
-            r"The two halves of a modulation period (time in units of $T_0$, so $\omega_0 = 2\pi$)."
+        caption=Latex(
+            raw(
+                r"The two halves of a modulation period (time in units of $T_0$, so "
+                r"$\omega_0 = 2\pi$)."
+            ).raw
+            + say(
+                r" $J$ is the moment of inertia of the pendulum, $J_0$ its value at the length "
+                r"$l_0$.",
+                r" $J$ --- момент инерции маятника, $J_0$ --- его значение при длине $l_0$.",
+            )
         ),
         label="tab:halves",
     )
@@ -81,6 +90,7 @@ def _segments(ctx: Context) -> list[Latex]:
     out.append(
         equation(math(sp.Eq(generic.subs(plain), 0), ctx.config, order="lex"), config=ctx.config)
     )
+    damped = damped_frequency_relations()
     rows = []
     for damping, regime, note in (
         (Damping.NONE, Regime.UNDER, "no friction"),
@@ -113,15 +123,25 @@ def _segments(ctx: Context) -> list[Latex]:
             ],
             rows,
             columns="lll",
-            caption=raw(
-                "Free-oscillation segments of each damping model, and what is left when the "
-                "segment "
-                "is put into the equation of motion (computed by the engine). The paper's segment "
-                "misses the equation by $\\gamma^2\\varphi$: its frequency is the undamped one "
-                "and its "
-                "derivative is taken as if $e^{-\\gamma t}$ were constant. The critically damped "
-                "segment solves the equation exactly at $\\gamma = \\omega_1$, where its residual "
-                "vanishes."
+            caption=Latex(
+                raw(
+                    "Free-oscillation segments of each damping model, and what is left when the "
+                    "segment "
+                    "is put into the equation of motion (computed by the engine). The paper's "
+                    "segment "
+                    "misses the equation by $\\gamma^2\\varphi$: its frequency is the undamped one "
+                    "and its "
+                    "derivative is taken as if $e^{-\\gamma t}$ were constant. The critically "
+                    "damped "
+                    "segment solves the equation exactly at $\\gamma = \\omega_1$, where its "
+                    "residual "
+                    "vanishes."
+                ).raw
+                + say(" In the exact model ", " В точной модели ")
+                + inline(math(sp.Eq(S.Omega1, damped[S.Omega1]), ctx.config, order="rev-lex")).raw
+                + say(" (under-damped) and ", " (слабое затухание) и ")
+                + inline(math(sp.Eq(S.Lambda1, damped[S.Lambda1]), ctx.config, order="lex")).raw
+                + say(" (over-damped).", " (сильное затухание).")
             ),
             label="tab:segments",
             size="small",
@@ -165,7 +185,13 @@ def _abbreviations(ctx: Context) -> Latex:
         ["symbol", "definition", raw(r"in units $T_0 = 1$, $\gamma = \pi/Q$"), ""],
         rows,
         columns="clll",
-        caption="The paper's abbreviations as the engine defines them.",
+        caption=Latex(
+            raw("The paper's abbreviations as the engine defines them.").raw
+            + say(
+                r" In the third column $\tau = T/T_0$ is the modulation period in units of $T_0$.",
+                r" В третьем столбце $\tau = T/T_0$ --- период модуляции в единицах $T_0$.",
+            )
+        ),
         label="tab:abbreviations",
     )
 
@@ -206,14 +232,24 @@ def build(ctx: Context) -> Part:
             inline(raw("n")),
             "lies near",
             inline(raw(r"T = nT_{av}/2")),
+            raw(
+                say(
+                    r"($T_{av}$ is the mean natural period of the two halves, "
+                    r"Table~\ref{tab:abbreviations}); $\Delta T = T - nT_{av}/2$ is the detuning "
+                    r"from it",
+                    r"($T_{av}$ --- средний собственный период двух половин, "
+                    r"таблица~\ref{tab:abbreviations}); $\Delta T = T - nT_{av}/2$ --- расстройка "
+                    r"относительно него",
+                )
+            ),
             "; on the edges of its interval the motion is anti-periodic over",
             inline(raw("T")),
             "(Floquet multiplier",
-            inline(raw("-1")),
+            inline(raw(r"\sigma = -1")),
             ") for odd",
             inline(raw("n")),
             "and periodic (",
-            inline(raw("+1")),
+            inline(raw(r"\sigma = +1")),
             ") for even",
             inline(raw("n")),
             ". The monodromy matrix is taken from",

@@ -159,9 +159,15 @@ def _normal_form(ctx: Context) -> list[Latex]:
             "so that",
             inline(raw(r"\det(M-\sigma I) = 1 + p^2 - \sigma\operatorname{tr} M")),
             ". Its trace has one form for all models, with the phases",
-            inline(raw(r"a_i")),
+            inline(raw(r"a_i = \omega_i T/2")),
             "of the two halves over",
             inline(raw("T/2")),
+            raw(
+                say(
+                    r"($a_i = \Omega_i T/2$ in the exact model)",
+                    r"($a_i = \Omega_i T/2$ в точной модели)",
+                )
+            ),
             "and one coupling constant",
             inline(raw("K")),
             ":",

@@ -35,10 +35,11 @@ LABEL = "sec:summary"
 #: orders whose closings are listed in the summary (the paper's Fig. 2 shows orders 1 to 6)
 LISTED_ORDERS = 6
 #: the width (in characters, see :func:`reports.latex.visible_width`) of a formula line in the
-#: errata table before it is broken
-CELL_WIDTH = 28
-#: the most lines one formula may take in the errata table
-CELL_LINES = 2
+#: errata table before it is broken: the widest line the formula column holds at the table's type
+CELL_WIDTH = 50
+#: the most lines one formula may take in the errata table (a longer one, a series, is left to the
+#: full entry)
+CELL_LINES = 1
 #: closings are counted up to this order (as in the closings section)
 MAX_ORDER = 12
 
@@ -91,10 +92,11 @@ def _items(src: str) -> list[str]:
     return [notation(x.strip()) for x in re.split(r",\\quad\s*", src) if x.strip()]
 
 
-def _cell(src: str) -> Latex:
-    """Formulas in a table cell: one per line, each scaled down to the column if too wide; a
-    formula that would take more than :data:`CELL_LINES` lines is left to the full entry."""
-    lines = []
+def _lines(src: str) -> list[str]:
+    """The formulas of one side of an erratum, one per line (a long one broken before ``+`` and
+    ``=``); a formula that would take more than :data:`CELL_LINES` lines is left to the full
+    entry (``\\dots``)."""
+    lines: list[str] = []
     for x in _items(src):
         broken = break_source(x, CELL_WIDTH)
         if len(broken) > CELL_LINES:
@@ -102,11 +104,29 @@ def _cell(src: str) -> Latex:
                 lines.append(r"\dots")
             continue
         lines.extend(r"\fitcell{" + line.raw + "}" for line in broken)
+    return lines
+
+
+def _forms(printed: str, derived: str | None) -> Latex:
+    """The printed and the derived forms of one erratum, one above the other, each labelled, so
+    that every formula has the width of the whole column (side by side they would have to be
+    set in small type)."""
+    blocks = [(say("printed", "в статье"), _lines(printed))]
+    if derived:
+        blocks.append((say("derived", "выведено"), _lines(derived)))
+    rows = []
+    for label, lines in blocks:
+        for k, line in enumerate(lines):
+            rows.append((r"\emph{" + label + "}" if k == 0 else "") + " & " + line)
+            rows.append(r" \\[3pt] " if k < len(lines) - 1 else r" \\[6pt] ")
     return raw(
-        r"\begin{minipage}[t]{\linewidth}\raggedright "
-        + r"\\[2pt] ".join(lines)
-        + r"\end{minipage}"
+        rf"\begin{{tabular}}[t]{{@{{}}p{{{FORM_LABEL}\linewidth}}@{{}}"
+        rf"p{{{1 - FORM_LABEL:.2f}\linewidth}}@{{}}}}" + "".join(rows) + r"\end{tabular}"
     )
+
+
+#: the share of the forms column taken by the labels ``printed`` and ``derived``
+FORM_LABEL = 0.17
 
 
 def errata_table(f: dict) -> Latex:
@@ -116,20 +136,18 @@ def errata_table(f: dict) -> Latex:
             [
                 raw(r"\hyperref[cat:" + anchor(r.equation) + "]{" + eq_text(r.equation).raw + "}"),
                 prose(r.title or ""),
-                _cell(r.printed),
-                _cell(r.derived) if r.derived else raw(""),
+                _forms(r.printed, r.derived),
             ]
         )
     return table(
         [
             say("eq.", "ур."),
             say("result", "результат"),
-            say("printed", "в статье"),
-            say("derived (correct)", "выведено (верно)"),
+            say("printed and derived (correct) forms", "в статье и выведено (верно)"),
         ],
         rows,
-        columns=r">{\raggedright}p{0.08\linewidth}>{\raggedright}p{0.16\linewidth}"
-        r"p{0.32\linewidth}p{0.32\linewidth}",
+        columns=r"@{}>{\raggedright}p{0.08\linewidth}>{\raggedright}p{0.17\linewidth}"
+        r"p{\dimexpr0.75\linewidth-4\tabcolsep\relax}@{}",
         caption=raw(
             say(
                 "Errata: the paper's results whose printed form differs from the derivation, "
@@ -144,6 +162,40 @@ def errata_table(f: dict) -> Latex:
         label="tab:errata",
         long=True,
         size="small",
+    )
+
+
+def notation_paragraph() -> Latex:
+    """The symbols of the table and the findings below it, said before they are used (Section 3
+    gives their definitions as the engine states them)."""
+    return t(
+        r"The symbols are the paper's (Section~\ref{sec:model} defines them as the engine does): "
+        r"$\omega_1$, $\omega_2$ and $T_1$, $T_2$ are the natural frequencies and periods of the "
+        r"two halves of a period (bob down, length $l_0(1+m)$; bob up, $l_0(1-m)$), $T_0$ that of "
+        r"the unmodulated pendulum; $\omega_{av} = (\omega_1 + \omega_2)/2$, "
+        r"$\Delta\omega = \omega_2 - \omega_1$, $T_{av} = 2\pi/\omega_{av}$, and "
+        r"$\Delta T = T - nT_{av}/2$ is the detuning from the resonance of order $n$; "
+        r"$q = \omega_1(1+m)^2/(\omega_2(1-m)^2)$ is the coupling of the jumps, "
+        r"$p = e^{-\gamma T}$ the decay per period ($\gamma = \omega_0/(2Q)$), "
+        r"$C_i = \cos(\omega_i T/2)$ and $S_i = \sin(\omega_i T/2)$; $A$, $B$, $A_1$, $A_2$ "
+        r"are amplitudes of the free oscillation in the halves; $N$ is the normal form of the "
+        r"Floquet condition (the rest state is unstable where $N < 0$, "
+        r"Section~\ref{sec:normal-form}) and $\theta = \omega_{av}\Delta T/2$; "
+        r"$m_{\min}$ is the threshold depth with friction, $M$ the monodromy matrix over one "
+        r"period and $I$ the identity matrix.",
+        r"Обозначения --- те же, что в статье (раздел~\ref{sec:model} определяет их так же, как "
+        r"программа): $\omega_1$, $\omega_2$ и $T_1$, $T_2$ --- собственные частоты и периоды "
+        r"двух половин периода (груз опущен, длина $l_0(1+m)$; груз поднят, $l_0(1-m)$), "
+        r"$T_0$ --- период маятника без модуляции; "
+        r"$\omega_{av} = (\omega_1 + \omega_2)/2$, $\Delta\omega = \omega_2 - \omega_1$, "
+        r"$T_{av} = 2\pi/\omega_{av}$, а $\Delta T = T - nT_{av}/2$ --- расстройка относительно "
+        r"резонанса порядка $n$; $q = \omega_1(1+m)^2/(\omega_2(1-m)^2)$ --- связь при скачках, "
+        r"$p = e^{-\gamma T}$ --- затухание за период ($\gamma = \omega_0/(2Q)$), "
+        r"$C_i = \cos(\omega_i T/2)$ и $S_i = \sin(\omega_i T/2)$; $A$, $B$, $A_1$, $A_2$ --- "
+        r"амплитуды свободных колебаний на половинах периода; $N$ --- нормальная форма условия "
+        r"Флоке (положение покоя неустойчиво там, где $N < 0$, раздел~\ref{sec:normal-form}), "
+        r"$\theta = \omega_{av}\Delta T/2$; $m_{\min}$ --- пороговая глубина модуляции при "
+        r"трении, $M$ --- матрица монодромии за период, $I$ --- единичная матрица.",
     )
 
 
@@ -239,6 +291,7 @@ def build(ctx: Context) -> Part:
             ),
         )
     )
+    out.append(notation_paragraph())
     out.append(errata_table(f))
     out.append(theorem(cl, ctx))
     pairs = {}

@@ -148,8 +148,11 @@ def build(ctx: Context) -> Part:
                     r"goes through one validated Taylor integrator in ball arithmetic with a "
                     r"proven remainder. Time reversal maps the ramp up onto the ramp down, so "
                     r"each phase stays symmetric about its midpoint and each edge is still a zero "
-                    r"of one entry of the half-period map. The first Magnus term of a ramp "
-                    r"differs from the jump's by $S\,E$ with ",
+                    r"of one entry of the half-period map $G$, from the midpoint of phase 1 to "
+                    r"that of phase 2 (the other half is its time reverse: $M = P G^{-1} P G$ "
+                    r"with $P = \operatorname{diag}(1, -1)$). The first Magnus term of a ramp "
+                    r"differs from the jump's by $S\,E$, where $E$ is the $2\times 2$ matrix "
+                    r"whose only non-zero entry is ",
                     r"В статье длина меняется скачком. При \emph{линейном переходе} каждое "
                     r"переключение --- линейное изменение длины за время $S$ (в единицах "
                     r"$T_0$) с центром в момент переключения; при \emph{синусоидальной} "
@@ -162,15 +165,20 @@ def build(ctx: Context) -> Part:
                     r"шаровой арифметике с доказанной оценкой остатка. Обращение времени "
                     r"переводит подъём груза в спуск, поэтому каждая фаза остаётся симметричной "
                     r"относительно середины и каждая граница --- по-прежнему нуль одного "
-                    r"элемента отображения за полпериода. Первый член Магнуса для перехода "
-                    r"отличается от скачка на $S\,E$, где ",
+                    r"элемента отображения за полпериода $G$ от середины фазы 1 до середины "
+                    r"фазы 2 (вторая половина --- его обращение во времени: $M = P G^{-1} P G$, "
+                    r"$P = \operatorname{diag}(1, -1)$). Первый член Магнуса для перехода "
+                    r"отличается от скачка на $S\,E$, где $E$ --- матрица $2\times 2$ "
+                    r"с единственным ненулевым элементом ",
                 )
             ),
             m_(sp.Eq(sp.Symbol("E_{12}"), E12)),
             raw(
                 say(
-                    r", so every edge moves linearly in $S$ (Fig.~\ref{fig:switching}).",
-                    r", поэтому каждая граница смещается линейно по $S$ "
+                    r" ($l_a$ and $l_b$ the lengths before and after the switch), so every edge "
+                    r"moves linearly in $S$ (Fig.~\ref{fig:switching}).",
+                    r" ($l_a$ и $l_b$ --- длины до и после переключения), поэтому каждая "
+                    r"граница смещается линейно по $S$ "
                     r"(рис.~\ref{fig:switching}).",
                 )
             ),
@@ -396,7 +404,8 @@ def _closings_text(widths, rc, m_) -> list:
                     r"solutions even and odd about $t = T/4$ obey the same recurrence for "
                     r"$k \ge 3/2$, whose decaying solutions form a line (Perron's theorem: the "
                     r"characteristic roots $(-1 \pm \sqrt{1 - m^2})/m$ have different moduli), "
-                    r"while their rows $k = 1/2$ differ by $\tfrac{3m}{4}\,a_{1/2} \ne 0$; "
+                    r"while their rows $k = 1/2$ differ by $\tfrac{3m}{4}\,a_{1/2} \ne 0$ "
+                    r"($a_k$ the coefficient of $e^{ik\theta}$); "
                     r"so both are never periodic at once and $M \ne -I$. "
                     r"Table~\ref{tab:sine-widths} shows the certified widths: the odd ones "
                     r"are proven positive, the even edges are enclosed together, as the theorem "
@@ -415,7 +424,8 @@ def _closings_text(widths, rc, m_) -> list:
                     r"соотношению при $k \ge 3/2$, убывающие решения которого образуют прямую "
                     r"(теорема Перрона: характеристические корни $(-1 \pm \sqrt{1 - m^2})/m$ "
                     r"различны по модулю), а их строки $k = 1/2$ отличаются на "
-                    r"$\tfrac{3m}{4}\,a_{1/2} \ne 0$; поэтому оба решения никогда не "
+                    r"$\tfrac{3m}{4}\,a_{1/2} \ne 0$ ($a_k$ --- коэффициент при $e^{ik\theta}$); "
+                    r"поэтому оба решения никогда не "
                     r"периодичны одновременно и $M \ne -I$. Таблица~\ref{tab:sine-widths} даёт "
                     r"гарантированные ширины: нечётные доказанно положительны, границы чётных "
                     r"заключены в одну оболочку.",
