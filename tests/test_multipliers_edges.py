@@ -237,3 +237,16 @@ def test_beyond_the_largest_precision_a_note_says_so():
     assert "the 5 asked for" in note and "ln|mu|max 0" in note and "bits" in note
     text = str(res)
     assert "growth per period ln|mu|max = 0\n" in text and f"note: {note}" in text
+
+
+def test_tiny_friction_stable_growth_to_every_digit():
+    """Q = 1e30 at a stable point: ``ln|mu|max = -pi T/Q`` is about -2.2e-30 (before: printed as
+    ``-2.e-30``, one digit, no note); now 30 digits, within the bound of the reference."""
+    T = "0.7"
+    doc = multipliers(T, M, Q="1e30", digits=DIGITS).as_json()
+    ref = _reference(T, "1e30")
+    _check(doc, ref)
+    assert significant_digits(doc["growth_rate"]) == DIGITS
+    with mpmath.workdps(300):
+        exact = -mpmath.pi * mpmath.mpf("0.7") / 10**30
+    assert _within(doc["growth_rate"], exact, doc["growth_rate_error_bound"])
