@@ -315,8 +315,8 @@ def multipliers(
     growth_exact = exact is not None and QQ is None
     if growth_exact:
         notes.append(
-            "ln|mu|max = 0 exactly (printed as 0, error bound 0): the multipliers are a proven "
-            "complex pair on the unit circle, |mu1| = |mu2| = sqrt(det M) = 1 without friction"
+            "ln|mu|max = 0 exactly: the multipliers are a proven complex pair on the unit "
+            "circle (|mu1| = |mu2| = sqrt(det M) = 1 without friction)"
         )
     with ctx.workprec(bits), mpmath.workdps(d + 10):
         pairs = [(to_mpf(z.real), to_mpf(z.imag)) for z in (mu1, mu2)]
