@@ -6,20 +6,27 @@ and switches in ball arithmetic, nothing from :mod:`analytic`'s determinants).  
     mu = (tr M +- sqrt((M11 - M22)^2 + 4 M12 M21)) / 2,     mu1 mu2 = det M = exp(-2 gamma T)
 
 are enclosed in balls (complex balls where the discriminant may be negative); the working precision
-is doubled until every ball is as narrow as the digits asked for, or the discriminant's ball holds
-zero (a double multiplier, e.g. at a closing, where the square root halves the digits: the result
-then says so and prints only the digits its balls prove).  Reported: both multipliers, the largest
-modulus ``|mu|max`` and the growth rate per period ``ln |mu|max`` (positive inside an interval of
-instability).
+is doubled until every ball is as narrow as the digits asked for, *relative* to the number (the
+growth rate ``ln |mu|max`` tends to 0 at an edge: next to one it needs far more bits than the
+multipliers themselves), or the discriminant's ball holds zero (a double multiplier, e.g. at a
+closing, where the square root halves the digits).  Where a proven complex pair is found,
+``|mu1| = |mu2| = sqrt(det M) = exp(-gamma T)`` exactly (Liouville: the trace of every phase's
+matrix is ``-2 gamma``, every jump has determinant 1 over a period), so ``ln |mu|max = -gamma T =
+-pi T/Q`` -- exactly 0 without friction -- is printed to every digit asked for.  A number that
+still has fewer digits than asked (a double multiplier, or a point so close to an edge that the
+largest working precision tried cannot separate ``|mu|max`` from 1) prints only the digits its
+ball proves, and a note says how many and why (``growth_rate_digits`` in the JSON).  Reported: both
+multipliers, the largest modulus ``|mu|max`` and the growth rate per period ``ln |mu|max``
+(positive inside an interval of instability).
 """
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from fractions import Fraction
 
 import mpmath
-from flint import acb, arb, ctx
+from flint import acb, arb, ctx, fmpq
 
 from analytic.system import System
 
@@ -52,7 +59,8 @@ class Multipliers:
     modulus first; ``radii`` their proven radii (per pair, a bound on both parts); ``modulus`` and
     ``growth`` are ``|mu|max`` and ``ln |mu|max`` with radii ``modulus_radius``,
     ``growth_radius``.  ``real`` says whether both are proven real, ``double`` whether the two
-    could not be separated (a double multiplier).
+    could not be separated (a double multiplier); ``growth_exact`` whether ``growth`` is the exact
+    value (``0``: a proven complex pair on the unit circle, no friction).
     """
 
     T: Fraction
@@ -70,6 +78,7 @@ class Multipliers:
     real: bool
     double: bool
     notes: tuple = field(default=())
+    growth_exact: bool = False
 
     @property
     def unstable(self) -> bool | None:
@@ -89,6 +98,12 @@ class Multipliers:
 
     def _num(self, x, rad) -> str:
         return proven_text(x, rad, self.digits)
+
+    @property
+    def growth_digits(self) -> int:
+        """The significant digits printed for ``ln |mu|max``, every one certified (``0`` where
+        it prints as ``0``; see :attr:`growth_exact`)."""
+        return significant_digits(self._num(self.growth, self.growth_radius))
 
     def _mu_text(self, i: int) -> str:
         re_, im_ = self.mu[i]
@@ -147,6 +162,8 @@ class Multipliers:
             "max_modulus_error_bound": self._bound([(mod_t, self.modulus)], self.modulus_radius),
             "growth_rate": gr_t,
             "growth_rate_error_bound": self._bound([(gr_t, self.growth)], self.growth_radius),
+            "growth_rate_digits": significant_digits(gr_t),
+            "growth_rate_exact": self.growth_exact,
             "unstable": self.unstable,
             "certified": True,
             "notes": list(self.notes),
@@ -259,19 +276,33 @@ def multipliers(
     goal = arb(10) ** (-(d + 1))
     bits = bits_for_digits(d + 4)
     cap = max(bits * _MAX_BITS_PER_DIGIT, 4096)
+    # a discriminant whose ball holds zero: a double multiplier (a closing; no precision separates
+    # it) or a point within a hair of an edge (more precision does).  The closed-form period map
+    # is cheap at any precision: up to the cap; an integrated one stops at four times the start
+    double_cap = cap if _monodromy is None else 4 * bits
     while True:
         with ctx.workprec(bits):
             M = monodromy()
             mu1, mu2, kind = _eigen(M)
-            mods = [abs(mu1), abs(mu2)]
-            big = mods[0] if mods[0] >= mods[1] else mods[1]
-            if not (mods[0] >= mods[1] or mods[0] < mods[1]):  # overlapping: the union
-                big = arb.union(mods[0], mods[1]) if hasattr(arb, "union") else mods[0]
-            growth = big.log() if big > 0 else None
-            narrow = all(
-                _rel_ok(x, goal) for x in (mu1.real, mu1.imag, mu2.real, mu2.imag, big)
-            ) and (growth is not None and _abs_ok(growth, goal * (abs(growth) + 1)))
-            if narrow or bits >= cap or kind == "zero" and bits >= 4 * bits_for_digits(d + 4):
+            exact = None
+            if kind == "negative":  # a proven complex pair: |mu|^2 = det M = exp(-2 gamma T)
+                exact = _on_circle(M, mu1, TT, QQ)
+            if exact is not None:
+                big, growth = exact
+            else:
+                mods = [abs(mu1), abs(mu2)]
+                big = mods[0] if mods[0] >= mods[1] else mods[1]
+                if not (mods[0] >= mods[1] or mods[0] < mods[1]):  # overlapping: the union
+                    big = arb.union(mods[0], mods[1]) if hasattr(arb, "union") else mods[0]
+                growth = big.log() if big > 0 else None
+            narrow = (
+                _pair_ok(mu1, goal)
+                and _pair_ok(mu2, goal)
+                and _rel_ok(big, goal)
+                and growth is not None
+                and (growth.is_zero() or _rel_ok(growth, goal))
+            )
+            if narrow or bits >= cap or kind == "zero" and bits >= double_cap:
                 break
             bits *= 2
     if growth is None:  # pragma: no cover - |mu|max = sqrt(det M) > 0 always
@@ -281,13 +312,19 @@ def multipliers(
             "the two multipliers may coincide here (a double multiplier, e.g. on a closing): "
             "their enclosures overlap and only the digits their balls prove are printed"
         )
+    growth_exact = exact is not None and QQ is None
+    if growth_exact:
+        notes.append(
+            "ln|mu|max = 0 exactly: the multipliers are a proven complex pair on the unit "
+            "circle (|mu1| = |mu2| = sqrt(det M) = 1 without friction)"
+        )
     with ctx.workprec(bits), mpmath.workdps(d + 10):
         pairs = [(to_mpf(z.real), to_mpf(z.imag)) for z in (mu1, mu2)]
         radii = [upper_mpf(arb(max(z.real.rad(), z.imag.rad()))) for z in (mu1, mu2)]
         real = kind == "positive"
         if real:
             pairs = [(re_, mpmath.mpf(0)) for re_, _ in pairs]
-        return Multipliers(
+        result = Multipliers(
             T=TT,
             m=mm,
             Q=QQ,
@@ -303,12 +340,87 @@ def multipliers(
             real=real,
             double=kind == "zero",
             notes=tuple(notes),
+            growth_exact=growth_exact,
         )
+    # every ball narrow enough: each number prints with every digit asked for, except a part whose
+    # ball holds zero (a multiplier's real part at tr M = 0, or an imaginary part at a closing)
+    held = any(x.contains(0) and not x.is_zero() for x in (mu1.real, mu1.imag, mu2.real, mu2.imag))
+    short = _short(result) if not narrow or held else []
+    if short:
+        if kind == "zero":
+            why = (
+                f"the two multipliers are not separated at {bits} bits of working precision "
+                "(a double multiplier, or one within the error bound)"
+            )
+        elif bits >= cap:
+            why = (
+                f"the balls are still too wide at {bits} bits of working precision, the most "
+                f"tried for {d} digits (|mu|max is that close to 1)"
+            )
+        else:
+            why = "a part whose ball holds 0 is printed as 0, within its error bound"
+        notes.append(
+            f"fewer digits than the {d} asked for are certified here: "
+            + ", ".join(f"{name} {n}" for name, n in short)
+            + f"; {why}. Every digit printed is proven"
+        )
+        result = replace(result, notes=tuple(notes))
+    return result
+
+
+def _on_circle(M, mu1, T: Fraction, Q: Fraction | None):
+    """``(|mu|max, ln |mu|max)`` of a proven complex pair: ``exp(-gamma T)`` and ``-gamma T =
+    -pi T/Q`` (``1`` and exactly ``0`` without friction), as balls at the working precision;
+    ``None`` should the balls of ``sqrt(det M)`` or ``|mu1|`` not hold them (they always do:
+    ``det M = exp(-2 gamma T)``, Liouville)."""
+    if Q is None:
+        big, growth = arb(1), arb(0)
+    else:
+        x = T / Q
+        growth = -arb.pi() * arb(fmpq(x.numerator, x.denominator))
+        big = growth.exp()
+    a, b, c, d = M
+    if not (abs(mu1).overlaps(big) and (a * d - b * c).overlaps(big * big)):
+        return None  # pragma: no cover - a theorem; kept as a guard
+    return big, growth
+
+
+def _short(res: Multipliers) -> list:
+    """``(name, digits)`` of every printed number with fewer significant digits than asked for
+    (exact zeros aside: the imaginary parts of real multipliers, ``ln|mu|max = 0`` exactly)."""
+    out = []
+    for i, ((re_, im_), rad) in enumerate(zip(res.mu, res.radii, strict=True)):
+        parts = [("", re_)] if res.real else [(" (real part)", re_), (" (imaginary part)", im_)]
+        for what, x in parts:
+            n = significant_digits(res._num(x, rad))
+            if n < res.digits:
+                out.append((f"mu{i + 1}{what}", n))
+    n = significant_digits(res._num(res.modulus, res.modulus_radius))
+    if n < res.digits:
+        out.append(("|mu|max", n))
+    if not res.growth_exact and res.growth_digits < res.digits:
+        out.append(("ln|mu|max", res.growth_digits))
+    return out
+
+
+def significant_digits(text: str) -> int:
+    """The significant digits of a printed decimal (``"0.00120"``: 3, ``"0"``: 0)."""
+    mant = text.lstrip("+-").split("e")[0].replace(".", "").lstrip("0")
+    return len(mant)
+
+
+def _pair_ok(z: acb, goal: arb) -> bool:
+    """Both parts of ``z`` printed to the digits asked for with the pair's one radius (a part
+    whose ball holds zero: to ``goal**2``)."""
+    rad = max(z.real.rad(), z.imag.rad())
+    for x in (z.real, z.imag):
+        if x.is_zero():  # exactly 0 (the imaginary part of a real multiplier)
+            continue
+        if not (rad <= goal * abs(x).upper() or (x.contains(0) and rad <= goal * goal)):
+            return False
+    return True
 
 
 def _rel_ok(x: arb, goal: arb) -> bool:
-    return bool(x.rad() <= goal * abs(x).upper()) or bool(x.rad() <= goal * goal)
-
-
-def _abs_ok(x: arb, bound: arb) -> bool:
-    return bool(x.rad() <= bound)
+    """``x`` to the digits asked for, relative to itself (never where its ball holds zero)."""
+    return bool(x.rad() <= goal * abs(x).upper())
