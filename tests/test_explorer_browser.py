@@ -363,3 +363,260 @@ def test_the_static_export_draws_and_moves(browser, tmp_path):
         page.close()
         httpd.shutdown()
         httpd.server_close()
+
+
+# ---------------------------------------------------------------- what a failed request leaves
+#: the result cells of the readout: none may show a number left over from an earlier input
+RESULTS = ["mu1", "mu2", "mu-max", "growth", "mu-bound", "edge-lower", "edge-upper", "edge-bound"]
+
+
+@pytest.fixture
+def fresh(browser, server):
+    """A page of its own (a test of this group changes the controls or intercepts requests)."""
+    page = browser.new_page(viewport={"width": 1400, "height": 1000})
+    page.set_default_timeout(WAIT)
+    page.goto(server.url)
+    page.wait_for_function("() => window.paramresApp && window.paramresApp.chart && "
+                           "window.paramresApp.chart.lower")  # fmt: skip
+    page.evaluate("() => window.paramresApp.examine('1.45', '0.3')")
+    page.wait_for_function("() => window.paramresApp.run !== null")
+    yield page
+    page.unroute_all(behavior="ignoreErrors")
+    page.close()
+
+
+#: the results of each panel (not its controls, legend or status line)
+SHOWN = {
+    "chart-panel": "[data-testid=chart]",
+    "readout": "table.values, .verdict",
+    "motion": "[data-testid=pendulum], [data-testid=plot-phi], [data-testid=plot-phase]",
+}
+
+
+#: how a panel looks: its state, its note (if shown) and the largest opacity of its results (as
+#: drawn: the product of the opacities of the element and its parents)
+LOOK = """([tid, results]) => {
+            const p = document.querySelector(`[data-testid=${tid}]`);
+            const note = p.querySelector('.stale-note');
+            const look = note && getComputedStyle(note);
+            const shown = note && look.visibility === 'visible' && Number(look.opacity) > 0.9 &&
+                note.textContent.trim();
+            const faded = [...p.querySelectorAll(results)].map((el) => {
+                let o = 1;
+                for (let e = el; e; e = e.parentElement) o *= Number(getComputedStyle(e).opacity);
+                return o;
+            });
+            return {state: p.dataset.state || '', note: shown || '', opacity: Math.max(...faded)};
+        }"""
+
+
+def panel(page, testid: str, settle: str | None = None) -> dict:
+    """How the panel ``testid`` looks; with ``settle``, once it has taken that state and its
+    fading has ended: greyed and labelled ('pending', 'failed'), or plain ('')."""
+    if settle is not None:
+        page.wait_for_function(
+            f"""([tid, results, want]) => {{
+                const look = ({LOOK})([tid, results]);
+                if (look.state !== want) return false;
+                return want ? look.note && look.opacity <= 0.5 : !look.note && look.opacity === 1;
+            }}""",
+            arg=[testid, SHOWN[testid], settle],
+        )
+    return page.evaluate(LOOK, [testid, SHOWN[testid]])
+
+
+def readout_numbers(page) -> list[str]:
+    return [
+        page.inner_text(f"[data-testid={tid}]").strip()
+        for tid in RESULTS
+        if any(c.isdigit() for c in page.inner_text(f"[data-testid={tid}]"))
+    ]
+
+
+def change(page, testid: str, value: str) -> None:
+    page.fill(f"[data-testid={testid}]", value)
+    page.dispatch_event(f"[data-testid={testid}]", "change")
+
+
+def settled(page, *testids: str) -> None:
+    """Wait until the status lines of these panels show an answer or an error (not computing)."""
+    page.wait_for_function(
+        """(ids) => ids.every((id) => {
+            const s = document.querySelector(`[data-testid=${id}]`);
+            return s.classList.contains('error') || (s.textContent && !s.textContent.includes('…'));
+        })""",
+        arg=list(testids),
+    )
+
+
+def test_a_refused_point_leaves_no_old_numbers_on_the_page(fresh):
+    """Digits 500 (over the cap): /api/point answers 400.  The numbers of the point before must
+    not stay beside the error as if they answered the new input."""
+    assert readout_numbers(fresh)  # the answer for digits = 30
+    change(fresh, "digits", "500")
+    fresh.wait_for_function(
+        "() => document.querySelector('[data-testid=point-status]').classList.contains('error')"
+    )
+    assert "digits" in fresh.inner_text("[data-testid=point-status]")
+    assert readout_numbers(fresh) == [], "the readout still shows the previous answer"
+    look = panel(fresh, "readout", settle="failed")
+    assert look["state"] == "failed" and look["note"], look
+    # the chart does not depend on the digits: it is the current one
+    assert panel(fresh, "chart-panel")["state"] == ""
+    # a valid input brings the numbers back and the note goes
+    change(fresh, "digits", "30")
+    fresh.wait_for_function(
+        "() => document.querySelector('[data-testid=point-status]').textContent.includes('ms')"
+    )
+    assert len(readout_numbers(fresh)) == len(RESULTS)
+    look = panel(fresh, "readout", settle="")
+    assert look == {"state": "", "note": "", "opacity": 1}, look
+
+
+def test_a_bad_duty_marks_every_panel(fresh):
+    """Duty 'abc': the chart, the point and the run all get 400; the old chart is greyed and
+    labelled, the old numbers and the old motion are cleared."""
+    change(fresh, "duty", "abc")
+    fresh.wait_for_function(
+        "() => ['chart-status', 'point-status', 'motion-status'].every((id) => "
+        "document.querySelector(`[data-testid=${id}]`).classList.contains('error'))"
+    )
+    chart = panel(fresh, "chart-panel", settle="failed")
+    assert chart["state"] == "failed" and chart["note"] and chart["opacity"] <= 0.5, chart
+    assert readout_numbers(fresh) == []
+    assert panel(fresh, "readout")["state"] == "failed"
+    motion = panel(fresh, "motion", settle="failed")
+    assert motion["state"] == "failed" and motion["note"], motion
+    assert fresh.evaluate("() => window.paramresApp.run") is None
+    change(fresh, "duty", "1/2")
+    settled(fresh, "chart-status", "point-status", "motion-status")
+    fresh.wait_for_function("() => window.paramresApp.run !== null")
+    for tid in ("chart-panel", "readout", "motion"):
+        assert panel(fresh, tid, settle="") == {"state": "", "note": "", "opacity": 1}, tid
+    assert len(readout_numbers(fresh)) == len(RESULTS)
+
+
+def test_a_pending_request_greys_and_labels_the_old_results(fresh):
+    """While the answer for a new click is on its way, the answer for the old click is greyed
+    and labelled; when the answer comes it is shown as it is."""
+    held = []
+    fresh.route("**/api/point?*", lambda route: held.append(route))
+    fresh.route("**/api/simulate?*", lambda route: held.append(route))
+    click_at(fresh, 2.5, 0.2)
+    fresh.wait_for_function("() => document.querySelector('[data-testid=point]').dataset.t !== "
+                            "'1.45'")  # fmt: skip
+    for tid in ("readout", "motion"):
+        look = panel(fresh, tid, settle="pending")  # the fading starts after a short delay
+        assert look["state"] == "pending" and look["note"] and look["opacity"] <= 0.5, (tid, look)
+    assert len(held) == 2
+    # the status line under the motion does not describe the old run as if it were the new one
+    assert "measured" not in fresh.inner_text("[data-testid=motion-status]")
+    for route in held:
+        route.continue_()
+    fresh.unroute_all(behavior="ignoreErrors")
+    fresh.wait_for_function(
+        "() => document.querySelector('[data-testid=point-status]').textContent.includes('ms')"
+    )
+    for tid in ("readout", "motion"):
+        assert panel(fresh, tid, settle="") == {"state": "", "note": "", "opacity": 1}, tid
+    assert fresh.inner_text("[data-testid=order]").strip() == "5"
+
+
+@pytest.mark.parametrize("how", ["timeout", "network"])
+def test_a_chart_that_does_not_come_is_marked(fresh, how):
+    """The server's time cap (503) or no answer at all: the chart drawn before is greyed and
+    labelled, not left as if it were the new one."""
+
+    def refuse(route):
+        if how == "network":
+            return route.abort()
+        body = json.dumps({"error": "the computation took longer than 30 s; try fewer orders"})
+        route.fulfill(status=503, content_type="application/json", body=body)
+
+    fresh.route("**/api/chart?*", refuse)
+    change(fresh, "Q", "7")
+    fresh.wait_for_function(
+        "() => document.querySelector('[data-testid=chart-status]').classList.contains('error')"
+    )
+    chart = panel(fresh, "chart-panel", settle="failed")
+    assert chart["state"] == "failed" and chart["note"] and chart["opacity"] <= 0.5, chart
+    fresh.unroute_all(behavior="ignoreErrors")
+    change(fresh, "Q", "8")
+    fresh.wait_for_function("() => window.paramresApp.chart.Q === 8 && "
+                            "window.paramresApp.chart.lower")  # fmt: skip
+    settled(fresh, "chart-status")
+    assert panel(fresh, "chart-panel", settle="") == {"state": "", "note": "", "opacity": 1}
+
+
+# ---------------------------------------------------------------- the chart's lettering
+#: records every text drawn on the chart canvas: its box and its font size in CSS pixels
+RECORD_TEXT = """
+(() => {
+  const fill = CanvasRenderingContext2D.prototype.fillText;
+  window.chartTexts = [];
+  CanvasRenderingContext2D.prototype.fillText = function (text, x, y, ...rest) {
+    const c = this.canvas;
+    if (c.id === 'chart' && c.clientWidth) {
+      const k = c.clientWidth / c.width;  // canvas pixels -> CSS pixels
+      const M = this.getTransform();
+      const m = this.measureText(text);
+      const corners = [[x - m.actualBoundingBoxLeft, y - m.actualBoundingBoxAscent],
+        [x + m.actualBoundingBoxRight, y - m.actualBoundingBoxAscent],
+        [x - m.actualBoundingBoxLeft, y + m.actualBoundingBoxDescent],
+        [x + m.actualBoundingBoxRight, y + m.actualBoundingBoxDescent]]
+        .map(([a, b]) => M.transformPoint(new DOMPoint(a, b)));
+      const xs = corners.map((p) => p.x * k), ys = corners.map((p) => p.y * k);
+      const px = Number((/([0-9.]+)px/.exec(this.font) || [0, 0])[1]);
+      window.chartTexts.push({
+        text: String(text), draw: Number(c.dataset.draws || 0),
+        size: px * Math.hypot(M.a, M.b) * k,
+        box: [Math.min(...xs), Math.min(...ys), Math.max(...xs), Math.max(...ys)],
+        width: c.clientWidth, height: c.clientHeight,
+      });
+    }
+    return fill.call(this, text, x, y, ...rest);
+  };
+})();
+"""
+
+
+@pytest.mark.parametrize(
+    "viewport, scale",
+    [({"width": 1400, "height": 1000}, 1), ({"width": 390, "height": 844}, 3)],
+    ids=["desktop", "phone"],
+)
+def test_the_chart_lettering_is_readable_and_does_not_overlap(browser, server, viewport, scale):
+    """Every label of the chart (ticks, axis names, orders) at least 11 CSS pixels high as a
+    font, inside the canvas, and no two overlapping: on a desktop and on a phone (390 x 844 CSS
+    pixels, 3 device pixels each), where the chart is drawn narrower than its 760 pixels."""
+    context = browser.new_context(viewport=viewport, device_scale_factor=scale)
+    page = context.new_page()
+    try:
+        page.add_init_script(RECORD_TEXT)
+        page.set_default_timeout(WAIT)
+        page.goto(server.url)
+        page.wait_for_function("() => window.paramresApp && window.paramresApp.chart && "
+                               "window.paramresApp.chart.lower")  # fmt: skip
+        page.wait_for_timeout(300)
+        texts = page.evaluate("() => window.chartTexts")
+        last = max(t["draw"] for t in texts)
+        texts = [t for t in texts if t["draw"] == last]
+        labels = {t["text"] for t in texts}
+        assert {"0.5", "3.0", "0.1", "0.9", "T / T₀", "1", "6"} <= labels, labels
+        small = [(t["text"], round(t["size"], 1)) for t in texts if t["size"] < 11]
+        assert not small, f"labels smaller than 11 CSS px: {small}"
+        for t in texts:
+            x0, y0, x1, y1 = t["box"]
+            assert x0 >= -0.5 and y0 >= -0.5, t
+            assert x1 <= t["width"] + 0.5 and y1 <= t["height"] + 0.5, t
+        for i, a in enumerate(texts):
+            for b in texts[i + 1 :]:
+                apart = (
+                    a["box"][2] <= b["box"][0] + 0.5
+                    or b["box"][2] <= a["box"][0] + 0.5
+                    or a["box"][3] <= b["box"][1] + 0.5
+                    or b["box"][3] <= a["box"][1] + 0.5
+                )
+                assert apart, (a, b)
+    finally:
+        context.close()

@@ -54,6 +54,9 @@
     ramp_note: ['Ramps: the chart and the motion are the square wave\'s; a click gives the certified values with ramps.',
       'Переходы: диаграмма и движение — для меандра; щелчок даёт доказанные значения с переходами.'],
     periods: ['periods', 'периодов'],
+    pending_note: ['computing… shown: the answer for the previous input', 'вычисляю… показан ответ для прежних данных'],
+    failed_note: ['the request failed: no values for the current input', 'запрос не выполнен: значений для текущих данных нет'],
+    chart_failed: ['not for the current input: the request failed', 'не для текущих данных: запрос не выполнен'],
     phase_plot: ["phase trajectory: φ' against φ", "фазовая траектория: φ' от φ"],
     nonlinear_run: ['nonlinear pendulum (sin φ, DOP853)', 'нелинейный маятник (sin φ, DOP853)'],
     linear_run: ['linear model', 'линейная модель'], peak: ['peak', 'максимум'],
@@ -70,8 +73,9 @@
     document.querySelectorAll('.lang button').forEach((b) => b.classList.toggle('on', b.dataset.lang === lang));
     fillPresets();
     updateNote();
+    ['chart-panel', 'readout', 'motion'].forEach((id) => setState(id, $(id).dataset.state || ''));
     if (lastPoint) showPoint(lastPoint);
-    if (run) motionStatus();
+    if (run && $('motion').dataset.state !== 'pending') motionStatus();
   }
 
   // ---------------------------------------------------------------- state and controls
@@ -103,6 +107,38 @@
     const el = $(id);
     el.textContent = text;
     el.classList.toggle('error', !!bad);
+  }
+  // whether a panel's results answer the current input: '' (they do, or there are none),
+  // 'pending' (a new answer is on its way: the old one is greyed and labelled) or 'failed' (the
+  // request failed: the old chart is greyed and labelled, old numbers and motion are cleared)
+  function setState(id, state) {
+    const el = $(id);
+    el.dataset.state = state;
+    const note = state === 'pending' ? say('pending_note')
+      : state === 'failed' ? say(id === 'chart-panel' ? 'chart_failed' : 'failed_note') : '';
+    el.querySelector('.stale-note').textContent = note;
+  }
+  // the results shown are no longer for the input: each panel that shows some waits for its answer
+  function outdated() {
+    if (chart) setState('chart-panel', 'pending');
+    if (lastPoint) setState('readout', 'pending');
+    if (run) setState('motion', 'pending');
+  }
+  // a canvas drawn in CSS pixels: its backing store is its CSS size times devicePixelRatio (crisp,
+  // and its lettering as large in CSS pixels as the font says, whatever the width of the screen)
+  function fitCanvas(canvas) {
+    const W = canvas.clientWidth, H = canvas.clientHeight;
+    if (!W || !H) {  // not laid out (hidden): drawn in its own pixels
+      const g = canvas.getContext('2d');
+      g.setTransform(1, 0, 0, 1, 0, 0);
+      return { g, W: canvas.width, H: canvas.height };
+    }
+    const dpr = window.devicePixelRatio || 1;
+    const bw = Math.round(W * dpr), bh = Math.round(H * dpr);
+    if (canvas.width !== bw || canvas.height !== bh) { canvas.width = bw; canvas.height = bh; }
+    const g = canvas.getContext('2d');
+    g.setTransform(bw / W, 0, 0, bh / H, 0, 0);
+    return { g, W, H };
   }
   function updateNote() {
     let note = STATIC ? say('static_note') : '';
@@ -136,23 +172,25 @@
   }
   function drawColorbar() {
     // the bar runs over x = 1 - exp(-v / VSCALE); a grey stub on the left is v <= 0
-    const c = $('colorbar'), g = c.getContext('2d'), stub = 20, bar = 12;
-    const at = (v) => stub + (1 - Math.exp(-v / VSCALE)) * (c.width - stub - 8);
-    for (let i = 0; i < c.width - 8; i++) {
-      const v = i < stub ? -0.3 * (1 - i / stub) : -VSCALE * Math.log(1 - (i - stub) / (c.width - stub - 8));
+    const c = $('colorbar'), { g, W } = fitCanvas(c), stub = 20, bar = 12;
+    const at = (v) => stub + (1 - Math.exp(-v / VSCALE)) * (W - stub - 8);
+    for (let i = 0; i < W - 8; i++) {
+      const v = i < stub ? -0.3 * (1 - i / stub) : -VSCALE * Math.log(1 - (i - stub) / (W - stub - 8));
       const [r, gg, b] = colour(v);
       g.fillStyle = `rgb(${r},${gg},${b})`;
       g.fillRect(i, 0, 1, bar);
     }
-    g.fillStyle = '#374151'; g.font = '10px system-ui, sans-serif'; g.textAlign = 'center';
+    g.fillStyle = '#374151'; g.font = '11px system-ui, sans-serif'; g.textAlign = 'center';
     for (const v of [0, 0.25, 0.5, 1, 2]) {
       const x = at(v);
       g.fillRect(x, bar, 1, 3);
-      g.fillText(String(v), Math.min(x, c.width - 8), bar + 13);
+      g.fillText(String(v), Math.min(x, W - 8), bar + 14);
     }
   }
-  function xy(canvas) {
-    const w = canvas.width - plot.left - plot.right, h = canvas.height - plot.top - plot.bottom;
+  // the chart's size in CSS pixels (what it is drawn in), set by each drawing
+  const size = { W: 760, H: 520 };
+  function xy() {
+    const w = size.W - plot.left - plot.right, h = size.H - plot.top - plot.bottom;
     return {
       w, h,
       x: (T) => plot.left + (T - view.tmin) / (view.tmax - view.tmin) * w,
@@ -162,9 +200,12 @@
     };
   }
   function drawChart() {
-    const canvas = $('chart'), g = canvas.getContext('2d'), P = xy(canvas);
+    const canvas = $('chart'), fit = fitCanvas(canvas);
+    const g = fit.g;
+    size.W = fit.W; size.H = fit.H;
+    const P = xy();
     g.fillStyle = '#fff';
-    g.fillRect(0, 0, canvas.width, canvas.height);
+    g.fillRect(0, 0, size.W, size.H);
     if (chart && chart.growth) {
       const nt = chart.T.length, nm = chart.m.length;
       const img = new ImageData(nt, nm);
@@ -183,7 +224,7 @@
       g.drawImage(off, P.x(chart.T[0]), P.y(chart.m[nm - 1]), P.x(chart.T[nt - 1]) - P.x(chart.T[0]), P.y(chart.m[0]) - P.y(chart.m[nm - 1]));
     }
     if (chart && chart.lower) drawEdges(g, P);
-    drawAxes(g, P, canvas);
+    drawAxes(g, P);
     if (point) {
       const px = P.x(point.T), py = P.y(point.m);
       g.strokeStyle = '#111827'; g.lineWidth = 2;
@@ -231,7 +272,7 @@
       g.fillText(String(n), X, Y);
     });
   }
-  function drawAxes(g, P, canvas) {
+  function drawAxes(g, P) {
     g.strokeStyle = '#374151'; g.lineWidth = 1;
     g.strokeRect(plot.left, plot.top, P.w, P.h);
     g.fillStyle = '#374151';
@@ -242,7 +283,7 @@
       g.beginPath(); g.moveTo(X, plot.top + P.h); g.lineTo(X, plot.top + P.h + 5); g.stroke();
       g.fillText(T.toFixed(1), X, plot.top + P.h + 18);
     }
-    g.fillText('T / T₀', plot.left + P.w / 2, canvas.height - 8);
+    g.fillText('T / T₀', plot.left + P.w / 2, size.H - 8);
     g.textAlign = 'right';
     for (let m = 0.1; m <= view.mmax + 1e-9; m += 0.1) {
       const Y = P.y(m);
@@ -264,17 +305,20 @@
     const params = { ...o, max_order: $('max-order').value, nt: 240, nm: 160 };
     chartParams = params;
     status('chart-status', say('computing'));
+    if (chart) setState('chart-panel', 'pending');
     try {
       if (STATIC) {
         const id = $('preset').value || presets[0].id;
         chart = await getJSON('data/' + encodeURIComponent(id) + '.json');
         if (token !== chartToken) return;
+        setState('chart-panel', '');
         drawChart();
       } else {
         // the colour map first (fast), then the edges over it
         const growth = await getJSON('api/chart?' + query({ ...params, parts: 'growth' }));
         if (token !== chartToken) return;
         chart = growth;
+        setState('chart-panel', '');  // what is drawn now is the current input's
         drawChart();
         const edges = await getJSON('api/chart?' + query({ ...params, parts: 'edges' }));
         if (token !== chartToken) return;
@@ -283,7 +327,11 @@
       }
       status('chart-status', say('drawn') + ' · ' + (chart.system || '') + (chart.Q ? ', Q = ' + chart.Q + ' (' + chart.damping + ')' : ''));
     } catch (e) {
-      if (token === chartToken) status('chart-status', e.message, true);
+      if (token !== chartToken) return;
+      status('chart-status', e.message, true);
+      // a chart still drawn is the previous input's (a failed colour map); the edges of the current
+      // one may fail alone, and then what is drawn is the current input's
+      if ($('chart-panel').dataset.state === 'pending') setState('chart-panel', 'failed');
     }
   }
 
@@ -300,6 +348,7 @@
     $('point').dataset.t = T;
     $('point').dataset.m = m;
     status('point-status', say('computing'));
+    setState('readout', lastPoint ? 'pending' : '');
     const o = options();
     const q = { ...o, T, m };
     if ($('modulation').value === 'ramp') { q.modulation = 'ramp'; q.switch_time = $('switch-time').value.trim(); }
@@ -310,10 +359,14 @@
     try {
       const doc = await getJSON('api/point?' + query({ ...q, digits: $('digits').value.trim() }));
       if (token !== pointToken) return;
+      setState('readout', '');
       showPoint(doc);
       status('point-status', `${Math.round(performance.now() - started)} ms · ` + (doc.multipliers.certified ? 'ball arithmetic (python-flint)' : ''));
     } catch (e) {
-      if (token === pointToken) status('point-status', e.message, true);
+      if (token === pointToken) {
+        status('point-status', e.message, true);
+        clearPoint();
+      }
     }
     await sim;
   }
@@ -323,6 +376,15 @@
     return Number(s);
   }
   let lastPoint = null;
+  // the request for the point failed: no number of an earlier point stays
+  function clearPoint() {
+    lastPoint = null;
+    ['mu1', 'mu2', 'mu-max', 'growth', 'mu-bound', 'order', 'edge-lower', 'edge-upper', 'edge-bound']
+      .forEach((id) => { $(id).textContent = '—'; });
+    $('verdict').className = 'verdict';
+    $('verdict').textContent = '';
+    setState('readout', 'failed');
+  }
   function showPoint(doc) {
     lastPoint = doc;
     const mu = doc.multipliers, b = doc.boundary;
@@ -360,14 +422,28 @@
     const periods = v !== null && Math.abs(v) > 0.05 ? Math.max(3, Math.min(12, Math.ceil(2.5 / Math.abs(v)))) : 8;
     const params = { ...q, periods, samples: 48, amplitude: $('amplitude').value.trim() || '0.1' };
     if ($('nonlinear').checked) { params.nonlinear = 1; params.periods = 24; }
+    setState('motion', run ? 'pending' : '');
+    status('motion-status', say('computing'));
     try {
       const doc = await getJSON('api/simulate?' + query(params));
       await genReady;
       if (token !== runToken) return;
       startRun(doc);
     } catch (e) {
-      if (token === runToken) status('motion-status', e.message, true);
+      if (token === runToken) {
+        status('motion-status', e.message, true);
+        stopRun();
+      }
     }
+  }
+  // the request for the run failed: the motion of an earlier input stops and goes
+  function stopRun() {
+    run = null;
+    ['pendulum', 'plot-phi', 'plot-dphi', 'plot-phase'].forEach((id) => {
+      const c = $(id);
+      c.getContext('2d').clearRect(0, 0, c.width, c.height);
+    });
+    setState('motion', 'failed');
   }
   function growthAt(T, m) {
     if (!chart || !chart.growth) return null;
@@ -413,6 +489,7 @@
     });
     const tEnd = doc.segments[doc.segments.length - 1].t.slice(-1)[0];
     run = { doc, phases: phases(doc), amax: amax || 1, vmax: vmax || 1, tEnd, t0: performance.now() };
+    setState('motion', '');
     motionStatus();
   }
   function motionStatus() {
@@ -424,7 +501,7 @@
       + (doc.nonlinear ? '' : ` · ${say('scaled')}${(0.8 / run.amax).toPrecision(2)}`));
   }
   function drawTrace(canvas, which, t) {
-    const g = canvas.getContext('2d'), W = canvas.width, H = canvas.height;
+    const { g, W, H } = fitCanvas(canvas);
     g.clearRect(0, 0, W, H);
     const pad = 6, label = which === 'phi' ? 'φ(t)' : "φ'(t)";
     const lim = which === 'phi' ? run.amax : run.vmax;
@@ -452,7 +529,7 @@
     g.fillText(label, 2, 14);
   }
   function drawPhase(canvas, t) {
-    const g = canvas.getContext('2d'), W = canvas.width, H = canvas.height;
+    const { g, W, H } = fitCanvas(canvas);
     g.clearRect(0, 0, W, H);
     const X = (v) => W / 2 + (v / run.amax) * (W / 2 - 10);
     const Y = (v) => H / 2 - (v / run.vmax) * (H / 2 - 10);
@@ -472,7 +549,7 @@
     g.fillText(say('phase_plot'), 6, 14);
   }
   function drawPendulum(canvas, t) {
-    const g = canvas.getContext('2d'), W = canvas.width, H = canvas.height;
+    const { g, W, H } = fitCanvas(canvas);
     g.clearRect(0, 0, W, H);
     const st = stateAt(t);
     if (!st) return;
@@ -563,6 +640,7 @@
     $('mu-max').textContent = doc.growth_per_period.toPrecision(12);
     $('growth').textContent = Math.log(doc.growth_per_period).toPrecision(12);
     $('mu-bound').textContent = say('static_note');
+    setState('readout', '');
     status('point-status', '');
   }
 
@@ -592,28 +670,30 @@
     $('max-order').value = c.max_order || 6;
     $('max-order-out').textContent = $('max-order').value;
     updateNote();
+    outdated();
     await loadChart();
     await examine(p.point.T, p.point.m);
   }
   function onClick(ev) {
     const canvas = $('chart'), rect = canvas.getBoundingClientRect();
-    const px = (ev.clientX - rect.left) * canvas.width / rect.width;
-    const py = (ev.clientY - rect.top) * canvas.height / rect.height;
-    const P = xy(canvas), T = P.T(px), m = P.m(py);
+    const px = (ev.clientX - rect.left) * size.W / rect.width;
+    const py = (ev.clientY - rect.top) * size.H / rect.height;
+    const P = xy(), T = P.T(px), m = P.m(py);
     if (T < view.tmin || T > view.tmax || m < view.mmin || m > view.mmax) return;
     examine(decimal(T, 4), decimal(m, 4));
   }
   function onHover(ev) {
     const canvas = $('chart'), rect = canvas.getBoundingClientRect();
-    const P = xy(canvas);
-    const T = P.T((ev.clientX - rect.left) * canvas.width / rect.width);
-    const m = P.m((ev.clientY - rect.top) * canvas.height / rect.height);
+    const P = xy();
+    const T = P.T((ev.clientX - rect.left) * size.W / rect.width);
+    const m = P.m((ev.clientY - rect.top) * size.H / rect.height);
     $('hover').textContent = (T >= view.tmin && T <= view.tmax && m >= view.mmin && m <= view.mmax) ? `T/T0 = ${T.toFixed(4)}, m = ${m.toFixed(4)}` : '';
   }
   let timer = null;
   function changed() {
     updateNote();
     $('max-order-out').textContent = $('max-order').value;
+    outdated();
     clearTimeout(timer);
     timer = setTimeout(async () => {
       await loadChart();
@@ -629,6 +709,15 @@
     $('preset').addEventListener('change', () => applyPreset($('preset').value));
     $('chart').addEventListener('click', onClick);
     $('chart').addEventListener('mousemove', onHover);
+    // drawn in CSS pixels: a new size is a new drawing
+    let resized = false;
+    const again = new ResizeObserver(() => {
+      if (resized) return;
+      resized = true;
+      requestAnimationFrame(() => { resized = false; drawChart(); drawColorbar(); });
+    });
+    again.observe($('chart'));
+    again.observe($('colorbar'));
     if (STATIC) controls.forEach((id) => { if (id !== 'amplitude') $(id).disabled = true; });
     try {
       presets = (await getJSON(STATIC ? 'data/presets.json' : 'api/presets')).presets;
@@ -640,7 +729,11 @@
     await loadChart();
     requestAnimationFrame(animate);
   }
-  const pixelOf = (T, m) => { const P = xy($('chart')); return [P.x(T), P.y(m)]; };
+  // where (T, m) is drawn, in the pixels of the chart's canvas (its width and height attributes)
+  const pixelOf = (T, m) => {
+    const P = xy(), c = $('chart');
+    return [P.x(T) * c.width / size.W, P.y(m) * c.height / size.H];
+  };
   window.paramresApp = { stateAt, examine, loadChart, pixelOf, get run() { return run; }, get chart() { return chart; }, clientRun };
   init();
 })();
