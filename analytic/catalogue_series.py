@@ -547,6 +547,7 @@ def _sec6_n3() -> Row:
     d = scaled_edges(3, 3, "paper")
     derived = (
         sp.Eq(m_min, th.m_min, evaluate=False),
+        _s_definition(3),
         sp.Eq(T_lo / Tav, _plus_order(d["lower"]["Tav"], sp.Order(m**4)), evaluate=False),
     )
     how = (
@@ -570,6 +571,14 @@ def _sec6_n3() -> Row:
         how,
         "Third interval with friction",
     )
+
+
+def _s_definition(n: int) -> sp.Eq:
+    """``s = sqrt(1 - (m_min/m)^(2p))``, the variable of the near-threshold series of order ``n``
+    (``p`` of :func:`scaling_power`), stated among the derived forms before the first that uses
+    it."""
+    p2 = 2 * scaling_power(n)
+    return sp.Eq(s_, sp.sqrt(1 - m_min**p2 / m**p2), evaluate=False)
 
 
 def _near_compare(n: int, printed_Tav: sp.Expr, order: int):
@@ -629,6 +638,7 @@ def _eq40() -> Row:
     derived = (
         *_signed_pair(MP * 3 * sp.sqrt(m**2 - m_min**2) / (2 * pi), 1, (S.DT / Tav, S.DT / Tav)),
         *_signed_pair(correct, Tav),
+        _s_definition(1),
         sp.Eq(T_lo / Tav, _plus_order(d["lower"]["Tav"], sp.Order(m**4)), evaluate=False),
     )
     if ok:
@@ -680,6 +690,7 @@ def _eq45() -> Row:
         *_signed_pair(printed_Tav, Tav),
     )
     derived = (
+        _s_definition(2),
         sp.Eq(T_lo / Tav, _plus_order(d["lower"]["Tav"], sp.Order(m**5)), evaluate=False),
         sp.Eq(T_hi / Tav, _plus_order(d["upper"]["Tav"], sp.Order(m**5)), evaluate=False),
     )

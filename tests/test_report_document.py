@@ -472,3 +472,59 @@ def test_symbols_are_defined_where_they_are_first_used(reports, lang):
             f"{what} is used before it is defined: "
             f"...{body[max(0, first.start() - 120) : first.end() + 60]}..."
         )
+
+
+@pytest.mark.parametrize("lang", ["en", "ru"])
+def test_no_overfull_lines(reports, lang):
+    """No line sticks out into the margin, in either language (the Russian words are longer:
+    the damping labels of the certified table, the method names of the speed table)."""
+    if not HAVE[lang]:
+        pytest.skip(f"no TeX for {lang}")
+    log = _pdf(reports, lang).with_suffix(".log").read_text(encoding="utf-8", errors="replace")
+    overfull = re.findall(r"^Overfull \\hbox \(([\d.]+pt) too wide\) (.*)$", log, re.M)
+    assert overfull == [], f"LaTeX reported lines sticking out into the margin: {overfull}"
+
+
+#: (what, a use of a symbol with a second meaning): the sine's paragraphs name their own symbols
+#: (V, psi, eta, delta, nu, kappa) where the engine's are the paper's q, the angle theta =
+#: omega_av Delta T/2, the damping coefficient c, the integers j, k of the closings proof
+SECOND_MEANINGS = (
+    ("q as the Hill coefficient", r"q\(t\)|\$q\$ (is the constant|равно постоянной)"),
+    ("theta = 2 pi t/T", r"\\theta = 2\\pi t/T|u\{\\left\(\\theta"),
+    ("c = (T/T_0)^2", r"(?<![\\A-Za-z])c = \(T/T_0\)\^2|eigenvalues \$c\$|значениями \$c\$"),
+    ("d = c - k^2", r"(?<![\\A-Za-z])d = c - k"),
+    ("k as a Fourier index", r"e\^\{ik|\(k - 1\\right\)|\$k \\ge 3/2\$"),
+    ("a_k as a Fourier coefficient", r"a_\{1/2\}|\$a_k\$"),
+    ("u_+ beside u", r"u_\{?[+-]"),
+)
+
+
+@pytest.mark.parametrize("lang", ["en", "ru"])
+def test_no_symbol_has_two_meanings(reports, lang):
+    body = _tex(reports, lang).split(r"\begin{document}", 1)[1]
+    for what, pattern in SECOND_MEANINGS:
+        hit = re.search(pattern, body)
+        assert hit is None, f"{what}: ...{body[max(0, hit.start() - 80) : hit.end() + 40]}..."
+    for definition in (r"\psi = 2\pi t/T", r"\eta = (T/T_0)^2", r"\delta = \eta - \nu^{2}"):
+        assert definition in body, definition
+
+
+@pytest.mark.parametrize("lang", ["en", "ru"])
+def test_catalogue_entries_define_s_before_their_series(reports, lang):
+    """A catalogue entry whose derived series are in ``s`` states ``s`` before the first of them
+    (the verdict, which restates it, comes after the formulas)."""
+    body = _tex(reports, lang).split(r"\begin{document}", 1)[1]
+    entries = re.findall(r"\\paragraph\{.*?(?=\\paragraph\{|\\section\{|$)", body, re.S)
+    with_s = 0
+    for entry in entries:
+        displays = re.findall(
+            r"\\\[(.*?)\\\]|\\begin\{multline\*\}(.*?)\\end\{multline\*\}", entry, re.S
+        )
+        for k, (one, many) in enumerate(displays):
+            formula = one or many
+            if re.search(r"(?<![\\A-Za-z])s(?![A-Za-z])", formula):
+                with_s += 1
+                earlier = [a or b for a, b in displays[: k + 1]]
+                assert any(x.strip().startswith(r"s = \sqrt") for x in earlier), entry[:200]
+                break
+    assert with_s >= 3  # sec. 6 n = 3, (40), (45)

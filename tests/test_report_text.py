@@ -197,3 +197,17 @@ def test_front_labels_touch_no_marker(lang):
                         assert not box.overlaps(m.get_window_extent(renderer)), t.get_text()
                 checked += 1
     assert checked >= 4
+
+
+def test_errata_cells_leave_a_definition_to_the_entry_with_the_series_it_serves():
+    """An erratum's cell elides a series too long for it (``\\dots``); the definition of the
+    series' variable goes with it, a definition that a shown formula uses stays."""
+    from reports.sections.summary import _lines
+
+    series = " + ".join(rf"\frac{{{k} s^{{{k}}}}}{{{k + 1} \pi}} m^{{{k}}}" for k in range(1, 40))
+    src = rf"T = 1,\quad s = \sqrt{{1 - m^{{2}}}},\quad T_{{-}} = {series}"
+    lines = _lines(src)
+    assert lines == [r"\fitcell{T = 1}", r"\dots"], lines
+    lines = _lines(r"s = \sqrt{1 - m^{2}},\quad T = 1 + s m")
+    assert lines == [r"\fitcell{s = \sqrt{1 - m^{2}}}", r"\fitcell{T = 1 + s m}"], lines
+    assert _lines(r"m = \frac{3}{5}") == [r"\fitcell{m = \frac{3}{5}}"]

@@ -303,6 +303,19 @@ def test_catalogue_rows_friction(label, status):
         assert "factor 3" in row.how
 
 
+@pytest.mark.parametrize("label,power", [("§6-n3", 2), ("40", 2), ("45", 4)])
+def test_catalogue_rows_define_s_before_the_series_use_it(label, power):
+    """The near-threshold series are in ``s``: the derived forms state ``s`` before the first
+    one that uses it (a reader meets the derived forms before the verdict)."""
+    import re
+
+    items = [x.strip() for x in re.split(r",\\quad\s*", ROWS[label]().derived)]
+    uses = [i for i, x in enumerate(items) if re.search(r"(?<![\\a-zA-Z])s(?![a-zA-Z])", x)]
+    assert uses, items
+    first = items[uses[0]]
+    assert first == (rf"s = \sqrt{{1 - \frac{{m_{{\min}}^{{{power}}}}}{{m^{{{power}}}}}}}"), first
+
+
 def test_bad_input():
     with pytest.raises(InputError):
         threshold_series(0)

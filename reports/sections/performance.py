@@ -203,6 +203,7 @@ def _speed(ctx: Context) -> tuple[list[Latex], list[tuple[str, bytes]]]:
                 label="tab:speed",
                 long=True,
                 size="footnotesize",
+                colsep="4pt",  # the Russian method names are the longest
             )
         )
     return blocks, figs

@@ -96,15 +96,27 @@ def _lines(src: str) -> list[str]:
     """The formulas of one side of an erratum, one per line (a long one broken before ``+`` and
     ``=``); a formula that would take more than :data:`CELL_LINES` lines is left to the full
     entry (``\\dots``)."""
+    items = _items(src)
+    shown = [len(break_source(x, CELL_WIDTH)) <= CELL_LINES for x in items]
+    # a definition (``s = ...``) of a symbol that only the elided formulas use is left to the
+    # full entry with them
+    for k, x in enumerate(items):
+        if shown[k] and (mt := _DEFINITION.match(x)):
+            used = re.compile(rf"(?<![\\a-zA-Z]){re.escape(mt.group(1))}(?![a-zA-Z_])")
+            users = [j for j in range(len(items)) if j != k and used.search(items[j])]
+            shown[k] = not users or any(shown[j] for j in users)
     lines: list[str] = []
-    for x in _items(src):
-        broken = break_source(x, CELL_WIDTH)
-        if len(broken) > CELL_LINES:
+    for x, keep in zip(items, shown, strict=True):
+        if not keep:
             if not lines or lines[-1] != r"\dots":
                 lines.append(r"\dots")
             continue
-        lines.extend(r"\fitcell{" + line.raw + "}" for line in broken)
+        lines.extend(r"\fitcell{" + line.raw + "}" for line in break_source(x, CELL_WIDTH))
     return lines
+
+
+#: a formula that defines a one-letter symbol: ``s = \sqrt{...}``
+_DEFINITION = re.compile(r"([a-zA-Z]) = ")
 
 
 def _forms(printed: str, derived: str | None) -> Latex:

@@ -35,6 +35,27 @@ SINE_DIGITS = 11
 CLOSE_ORDERS = (1, 2, 3, 4, 5, 6)
 CLOSE_M = (Fraction(3, 10), Fraction(4, 5))
 RAMP_CLOSING = (3, Fraction(1, 100), "0.6", "0.62", "1e-10")
+#: the names the sine's paragraphs print for the engine's symbols (:mod:`analytic.smooth`), so
+#: that no symbol of the report has two meanings: the engine's ``q`` (Hill coefficient), ``theta``
+#: (2 pi t/T), ``c`` ((T/T0)^2), ``d`` (c - k^2), ``k`` (Fourier index) and ``u_+``/``u_-``
+#: (couplings) are elsewhere the paper's q, the angle theta = omega_av Delta T/2, the damping
+#: coefficient c, the integers of the closings proof
+SINE_NAMES = {
+    "q": "V",
+    "theta": r"\psi",
+    "c": r"\eta",
+    "d": r"\delta",
+    "k": r"\nu",
+    "u_+": r"\kappa_{+}",
+    "u_-": r"\kappa_{-}",
+}
+
+
+def sine_names(expr) -> dict:
+    """``symbol_names`` for sympy's ``latex``: :data:`SINE_NAMES` for the symbols of ``expr``."""
+    return {
+        x: SINE_NAMES[x.name] for x in sp.sympify(expr).atoms(sp.Symbol) if x.name in SINE_NAMES
+    }
 
 
 def _compute():
@@ -127,7 +148,7 @@ def build(ctx: Context) -> Part:
     figs = [("switching-edges.pdf", figures.pdf_bytes(_figure(edges, sine)))]
 
     def m_(x):
-        return inline(math(x, cfg))
+        return inline(math(x, cfg, symbol_names=sine_names(x)))
 
     # the derived forms, stored by reports.sections._switching_forms (checked by its test)
     forms = load()
@@ -207,20 +228,20 @@ def build(ctx: Context) -> Part:
             raw(
                 say(
                     r"\textbf{The sine modulation.} With $u = l\varphi$ the equation becomes "
-                    r"the Hill equation $u'' + 2\gamma u' + q(t)\,u = 0$, without friction ",
+                    r"the Hill equation $u'' + 2\gamma u' + V(t)\,u = 0$, without friction ",
                     r"\textbf{Синусоидальная модуляция.} Подстановка $u = l\varphi$ даёт "
-                    r"уравнение Хилла $u'' + 2\gamma u' + q(t)\,u = 0$, без трения ",
+                    r"уравнение Хилла $u'' + 2\gamma u' + V(t)\,u = 0$, без трения ",
                 )
             ),
             m_(sp.Eq(sp.Symbol("q"), q)),
             raw(
                 say(
-                    r". At $T = T_0$ ($g = (2\pi/T)^2$ in these units) $q$ is the constant $g$ "
+                    r". At $T = T_0$ ($g = (2\pi/T)^2$ in these units) $V$ is the constant $g$ "
                     r"for every depth: all solutions have the period $T_0$, and the second "
                     r"interval has \emph{zero width at every depth} (the certified edges enclose "
                     r"$T = T_0$). Harmonic balance on the first-order Hill equation gives the "
                     r"first interval ",
-                    r". При $T = T_0$ ($g = (2\pi/T)^2$ в этих единицах) $q$ равно постоянной "
+                    r". При $T = T_0$ ($g = (2\pi/T)^2$ в этих единицах) $V$ равно постоянной "
                     r"$g$ при любой глубине: все решения имеют период $T_0$, и второй интервал "
                     r"имеет \emph{нулевую ширину при любой глубине} (гарантированные границы "
                     r"содержат $T = T_0$). Гармонический баланс для уравнения Хилла первого "
@@ -360,18 +381,18 @@ def _closings_text(widths, rc, m_) -> list:
             raw(
                 say(
                     r"\textbf{Do the intervals still close?} For the sine modulation, "
-                    r"multiplying the Hill equation by $l$ and writing $\theta = 2\pi t/T$, "
-                    r"$c = (T/T_0)^2$ gives the Ince equation ",
+                    r"multiplying the Hill equation by $l$ and writing $\psi = 2\pi t/T$, "
+                    r"$\eta = (T/T_0)^2$ gives the Ince equation ",
                     r"\textbf{Закрываются ли интервалы?} Для синусоидальной модуляции "
-                    r"умножение уравнения Хилла на $l$ и замена $\theta = 2\pi t/T$, "
-                    r"$c = (T/T_0)^2$ дают уравнение Айнса ",
+                    r"умножение уравнения Хилла на $l$ и замена $\psi = 2\pi t/T$, "
+                    r"$\eta = (T/T_0)^2$ дают уравнение Айнса ",
                 )
             ),
             m_(sp.Eq(sp.Function("L")(u(sym["theta"])), forms["ince"])),
             raw(
                 say(
-                    r". On $e^{ik\theta}$ it gives $e^{ik\theta}$ times ",
-                    r". На $e^{ik\theta}$ оно даёт $e^{ik\theta}$, умноженное на ",
+                    r". On $e^{i\nu\psi}$ it gives $e^{i\nu\psi}$ times ",
+                    r". На $e^{i\nu\psi}$ оно даёт $e^{i\nu\psi}$, умноженное на ",
                 )
             ),
             m_(
@@ -379,56 +400,56 @@ def _closings_text(widths, rc, m_) -> list:
                 + sp.Symbol("u_+") * sp.Symbol("z")
                 + sp.Symbol("u_-") / sp.Symbol("z")
             ),
-            raw(say(r" ($z = e^{i\theta}$) with ", r" ($z = e^{i\theta}$), где ")),
+            raw(say(r" ($z = e^{i\psi}$) with ", r" ($z = e^{i\psi}$), где ")),
             m_(sp.Eq(sp.Symbol("d"), d)),
             ",",
             m_(sp.Eq(sp.Symbol("u_+"), up)),
             raw(
                 say(
-                    r" $= -u_-$: a Fourier mode is coupled to its neighbours by a factor ",
-                    r" $= -u_-$: гармоника связана с соседними множителем ",
+                    r" $= -\kappa_-$: a Fourier mode is coupled to its neighbours by a factor ",
+                    r" $= -\kappa_-$: гармоника связана с соседними множителем ",
                 )
             ),
             m_(forms["coupling"]),
             raw(
                 say(
-                    r", which vanishes only at $k = "
+                    r", which vanishes only at $\nu = "
                     + ", ".join(str(z) for z in zeros)
                     + r"$ (derived by sympy). \emph{Every interval of even order has zero width "
-                    r"at every depth}: for solutions of period $T$ ($k$ integer) the recurrence "
-                    r"splits at $k = \pm 1$ into the chain $k \ge 2$ and its mirror image "
-                    r"$k \le -2$, which have the same eigenvalues $c$; so two independent "
-                    r"periodic solutions coexist and $M = I$ (order 2: the modes $k = \pm 1$ "
-                    r"alone, $c = 1$, $T = T_0$). \emph{No interval of odd order ever closes}: "
-                    r"for half-integer $k$ no coupling vanishes; the coefficients of the "
+                    r"at every depth}: for solutions of period $T$ ($\nu$ integer) the recurrence "
+                    r"splits at $\nu = \pm 1$ into the chain $\nu \ge 2$ and its mirror image "
+                    r"$\nu \le -2$, which have the same eigenvalues $\eta$; so two independent "
+                    r"periodic solutions coexist and $M = I$ (order 2: the modes $\nu = \pm 1$ "
+                    r"alone, $\eta = 1$, $T = T_0$). \emph{No interval of odd order ever closes}: "
+                    r"for half-integer $\nu$ no coupling vanishes; the coefficients of the "
                     r"solutions even and odd about $t = T/4$ obey the same recurrence for "
-                    r"$k \ge 3/2$, whose decaying solutions form a line (Perron's theorem: the "
+                    r"$\nu \ge 3/2$, whose decaying solutions form a line (Perron's theorem: the "
                     r"characteristic roots $(-1 \pm \sqrt{1 - m^2})/m$ have different moduli), "
-                    r"while their rows $k = 1/2$ differ by $\tfrac{3m}{4}\,a_{1/2} \ne 0$ "
-                    r"($a_k$ the coefficient of $e^{ik\theta}$); "
+                    r"while their rows $\nu = 1/2$ differ by $\tfrac{3m}{4}\,\hat u_{1/2} \ne 0$ "
+                    r"($\hat u_\nu$ the coefficient of $e^{i\nu\psi}$); "
                     r"so both are never periodic at once and $M \ne -I$. "
                     r"Table~\ref{tab:sine-widths} shows the certified widths: the odd ones "
                     r"are proven positive, the even edges are enclosed together, as the theorem "
                     r"requires.",
-                    r", который обращается в нуль только при $k = "
+                    r", который обращается в нуль только при $\nu = "
                     + ", ".join(str(z) for z in zeros)
                     + r"$ (вывод в sympy). \emph{Каждый интервал чётного порядка имеет "
-                    r"нулевую ширину при любой глубине}: для решений периода $T$ ($k$ целое) "
-                    r"рекуррентное соотношение распадается при $k = \pm 1$ на цепочку "
-                    r"$k \ge 2$ и её зеркальное отражение $k \le -2$ с одинаковыми "
-                    r"собственными значениями $c$; поэтому сосуществуют два независимых "
-                    r"периодических решения и $M = I$ (порядок 2: гармоники $k = \pm 1$, "
-                    r"$c = 1$, $T = T_0$). \emph{Ни один интервал нечётного порядка не "
-                    r"закрывается}: при полуцелых $k$ связи не обращаются в нуль; коэффициенты "
+                    r"нулевую ширину при любой глубине}: для решений периода $T$ ($\nu$ целое) "
+                    r"рекуррентное соотношение распадается при $\nu = \pm 1$ на цепочку "
+                    r"$\nu \ge 2$ и её зеркальное отражение $\nu \le -2$ с одинаковыми "
+                    r"собственными значениями $\eta$; поэтому сосуществуют два независимых "
+                    r"периодических решения и $M = I$ (порядок 2: гармоники $\nu = \pm 1$, "
+                    r"$\eta = 1$, $T = T_0$). \emph{Ни один интервал нечётного порядка не "
+                    r"закрывается}: при полуцелых $\nu$ связи не обращаются в нуль; коэффициенты "
                     r"чётного и нечётного относительно $t = T/4$ решений подчиняются одному "
-                    r"соотношению при $k \ge 3/2$, убывающие решения которого образуют прямую "
+                    r"соотношению при $\nu \ge 3/2$, убывающие решения которого образуют прямую "
                     r"(теорема Перрона: характеристические корни $(-1 \pm \sqrt{1 - m^2})/m$ "
-                    r"различны по модулю), а их строки $k = 1/2$ отличаются на "
-                    r"$\tfrac{3m}{4}\,a_{1/2} \ne 0$ ($a_k$ --- коэффициент при $e^{ik\theta}$); "
-                    r"поэтому оба решения никогда не "
-                    r"периодичны одновременно и $M \ne -I$. Таблица~\ref{tab:sine-widths} даёт "
-                    r"гарантированные ширины: нечётные доказанно положительны, границы чётных "
-                    r"заключены в одну оболочку.",
+                    r"различны по модулю), а их строки $\nu = 1/2$ отличаются на "
+                    r"$\tfrac{3m}{4}\,\hat u_{1/2} \ne 0$ "
+                    r"($\hat u_\nu$ --- коэффициент при $e^{i\nu\psi}$); поэтому оба решения "
+                    r"никогда не периодичны одновременно и $M \ne -I$. "
+                    r"Таблица~\ref{tab:sine-widths} даёт гарантированные ширины: нечётные "
+                    r"доказанно положительны, границы чётных заключены в одну оболочку.",
                 )
             ),
         ),
