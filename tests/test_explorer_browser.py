@@ -733,6 +733,7 @@ def test_the_status_lines_follow_the_language(fresh):
     assert "шаровая арифметика" in point and "ball" not in point and " мс" in point, point
     assert "периодов" in motion and "measured" not in motion, motion
     assert fresh.inner_text("[data-testid=point]").startswith("T/T0 = 1.45")
+    assert fresh.get_attribute("[data-testid=Q]", "placeholder") == "нет"
     fresh.click("[data-testid=lang-en]")
     assert "ball arithmetic" in fresh.inner_text("[data-testid=point-status]")
     # a request on its way: 'computing…' in one language, then in the other

@@ -54,6 +54,7 @@
     name_meissner: ['Meissner', 'Мейснер'], name_exact: ['exact', 'точная'], name_paper: ['paper', 'статьи'],
     // the label of the engine's notes (the notes themselves are the engine's, in English)
     note: ['note', 'примечание'],
+    Q_none: ['none', 'нет'], languages: ['language', 'язык'],
     certified: ['certified: |printed − exact| <', 'доказано: |напечатано − точно| <'],
     scaled: ['angle shown scaled ×', 'угол показан в масштабе ×'],
     static_note: ['Static copy: precomputed charts, motion computed in the page (double precision, not certified).',
@@ -77,6 +78,8 @@
   function applyLanguage() {
     document.documentElement.lang = lang;
     document.querySelectorAll('[data-i18n]').forEach((el) => { el.textContent = say(el.dataset.i18n); });
+    $('Q').placeholder = say('Q_none');
+    document.querySelector('.lang').setAttribute('aria-label', say('languages'));
     document.querySelectorAll('.lang button').forEach((b) => b.classList.toggle('on', b.dataset.lang === lang));
     fillPresets();
     updateNote();
