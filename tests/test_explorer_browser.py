@@ -620,3 +620,179 @@ def test_the_chart_lettering_is_readable_and_does_not_overlap(browser, server, v
                 assert apart, (a, b)
     finally:
         context.close()
+
+
+# ---------------------------------------------------------------- the engine's notes, the language
+def point_settled(page, T: str) -> None:
+    """Wait until the readout shows the answer for a point at ``T`` (or an error)."""
+    page.wait_for_function(
+        """(T) => {
+            const w = document.querySelector('[data-testid=point]');
+            const s = document.querySelector('[data-testid=point-status]');
+            return w.dataset.t === T && !s.textContent.includes('…') && s.textContent !== '';
+        }""",
+        arg=T,
+    )
+
+
+def notes_shown(page, testid: str) -> list[str]:
+    """The notes of a result as the page shows them (label and text), none if hidden."""
+    return page.evaluate(
+        """(tid) => {
+            const box = document.querySelector(`[data-testid=${tid}]`);
+            if (box.hidden || !box.offsetHeight) return [];
+            return [...box.querySelectorAll('p')].map((p) => [
+                p.querySelector('.label').textContent, p.querySelector('[lang=en]').textContent]);
+        }""",
+        testid,
+    )
+
+
+def test_the_engine_notes_are_shown_under_the_values_they_explain(fresh, server):
+    """A stable point without friction: the engine says ln|mu|max = 0 exactly; at a closing
+    (Meissner, m = 24/25, T = 5: M = I) the digits are fewer than asked and a note says why; with
+    ramps both the multipliers and the edges carry notes.  Each note is shown under its panel's
+    values, as the engine wrote it, with a label in the page's language; a point without notes
+    leaves none behind."""
+    cases = [
+        ({"system": "pendulum"}, "0.7", "0.3"),
+        ({"system": "meissner"}, "5", "24/25"),
+        ({"system": "pendulum", "modulation": "ramp"}, "1.45", "0.3"),
+    ]
+    for controls, T, m in cases:
+        for tid, value in controls.items():
+            fresh.select_option(f"[data-testid={tid}]", value)
+            fresh.dispatch_event(f"[data-testid={tid}]", "change")
+        fresh.wait_for_timeout(300)
+        settled(fresh, "chart-status")
+        fresh.evaluate("([T, m]) => window.paramresApp.examine(T, m)", [T, m])
+        point_settled(fresh, T)
+        q = f"T={T}&m={m}&system={controls['system']}"
+        if "modulation" in controls:
+            q += "&modulation=ramp&switch_time=0.02"
+        doc = api(server, "/api/point?" + q.replace("/", "%2F"))
+        want_mu, want_edge = doc["multipliers"]["notes"], doc["boundary"]["notes"]
+        assert want_mu, (T, m)  # each case has notes to show
+        assert notes_shown(fresh, "mu-notes") == [["note:", n] for n in want_mu], (T, m)
+        assert notes_shown(fresh, "edge-notes") == [["note:", n] for n in want_edge], (T, m)
+        if T == "5":  # the closing: the note on the digits printed
+            assert any("fewer digits" in n for _, n in notes_shown(fresh, "mu-notes"))
+    assert notes_shown(fresh, "edge-notes")  # the ramp's edges have theirs
+    # in Russian the label is translated, the engine's words are not
+    fresh.click("[data-testid=lang-ru]")
+    shown = notes_shown(fresh, "mu-notes")
+    assert shown and all(label == "примечание:" and "ramp" in text for label, text in shown)
+    fresh.click("[data-testid=lang-en]")
+    # a point without notes clears those of the point before
+    fresh.select_option("[data-testid=modulation]", "square")
+    fresh.dispatch_event("[data-testid=modulation]", "change")
+    fresh.wait_for_timeout(300)
+    settled(fresh, "chart-status")
+    fresh.evaluate("() => window.paramresApp.examine('2.5', '0.2')")
+    point_settled(fresh, "2.5")
+    assert notes_shown(fresh, "mu-notes") == [] and notes_shown(fresh, "edge-notes") == []
+    # a failed request clears them too
+    fresh.evaluate("() => window.paramresApp.examine('0.7', '0.3')")
+    point_settled(fresh, "0.7")
+    assert notes_shown(fresh, "mu-notes")
+    change(fresh, "digits", "500")
+    fresh.wait_for_function(
+        "() => document.querySelector('[data-testid=point-status]').classList.contains('error')"
+    )
+    assert notes_shown(fresh, "mu-notes") == []
+
+
+def test_the_notes_of_a_run_are_shown(fresh):
+    """A run whose answer carries notes shows them under the motion (the label translated)."""
+
+    def with_note(route):
+        response = route.fetch()
+        doc = response.json()
+        doc["notes"] = ["a note on the run"]
+        route.fulfill(response=response, json=doc)
+
+    fresh.route("**/api/simulate?*", with_note)
+    fresh.evaluate("() => window.paramresApp.examine('2.5', '0.2')")
+    fresh.wait_for_function("() => window.paramresApp.run && window.paramresApp.run.doc.notes")
+    assert notes_shown(fresh, "motion-notes") == [["note:", "a note on the run"]]
+    fresh.click("[data-testid=lang-ru]")
+    assert notes_shown(fresh, "motion-notes") == [["примечание:", "a note on the run"]]
+    fresh.click("[data-testid=lang-en]")
+
+
+def test_the_status_lines_follow_the_language(fresh):
+    """The status lines under the chart, the readout and the motion are said again in Russian
+    when the language changes, those of a finished answer and 'computing…' alike."""
+    point_settled(fresh, "1.45")
+    settled(fresh, "chart-status", "motion-status")
+    fresh.click("[data-testid=lang-ru]")
+    chart = fresh.inner_text("[data-testid=chart-status]")
+    point = fresh.inner_text("[data-testid=point-status]")
+    motion = fresh.inner_text("[data-testid=motion-status]")
+    assert chart.startswith("диаграмма построена · маятник"), chart
+    assert "шаровая арифметика" in point and "ball" not in point and " мс" in point, point
+    assert "периодов" in motion and "measured" not in motion, motion
+    assert fresh.inner_text("[data-testid=point]").startswith("T/T0 = 1.45")
+    assert fresh.get_attribute("[data-testid=Q]", "placeholder") == "нет"
+    fresh.click("[data-testid=lang-en]")
+    assert "ball arithmetic" in fresh.inner_text("[data-testid=point-status]")
+    # a request on its way: 'computing…' in one language, then in the other
+    held = []
+    fresh.route("**/api/point?*", lambda route: held.append(route))
+    fresh.evaluate("() => { window.paramresApp.examine('2.5', '0.2'); }")
+    fresh.wait_for_function("() => document.querySelector('[data-testid=point]').dataset.t === "
+                            "'2.5'")  # fmt: skip
+    assert fresh.inner_text("[data-testid=point-status]") == "computing…"
+    fresh.click("[data-testid=lang-ru]")
+    assert fresh.inner_text("[data-testid=point-status]") == "вычисляю…"
+    fresh.click("[data-testid=lang-en]")
+    for route in held:
+        route.continue_()
+
+
+def test_the_first_words_of_the_page_are_the_scripts(browser, server):
+    """Every text the script writes in English (data-i18n) is the text the page has before the
+    script runs: no label changes under the reader's eyes (the legend said 'certified-grade
+    edges' until the script wrote 'edges')."""
+    texts = "() => [...document.querySelectorAll('[data-i18n]')].map((e) => [e.dataset.i18n, " \
+            "e.textContent.trim()])"  # fmt: skip
+    bare = browser.new_context(java_script_enabled=False)
+    live = browser.new_page()
+    try:
+        page = bare.new_page()
+        page.goto(server.url)
+        before = [
+            [el.get_attribute("data-i18n"), el.text_content().strip()]
+            for el in page.query_selector_all("[data-i18n]")
+        ]
+        live.set_default_timeout(WAIT)
+        live.goto(server.url)
+        live.wait_for_function("() => window.paramresApp && window.paramresApp.chart")
+        after = live.evaluate(texts)
+        assert len(before) == len(after) > 20
+        assert [a for a, b in zip(before, after, strict=True) if a != b] == []
+    finally:
+        bare.close()
+        live.close()
+
+
+def test_a_failed_readout_lays_its_note_over_nothing(fresh):
+    """A failed readout (digits over the cap): its note takes a line of its own, above the cleared
+    rows; it covers no row, heading or verdict of the readout."""
+    change(fresh, "digits", "500")
+    fresh.wait_for_function(
+        "() => document.querySelector('[data-testid=point-status]').classList.contains('error')"
+    )
+    panel(fresh, "readout", settle="failed")
+    overlaps = fresh.evaluate(
+        """() => {
+            const r = document.querySelector('[data-testid=readout]');
+            const box = r.querySelector('.stale-note').getBoundingClientRect();
+            return [...r.querySelectorAll('tr, h2, .verdict, .where, .status')].filter((el) => {
+                const b = el.getBoundingClientRect();
+                return b.height && box.left < b.right && b.left < box.right &&
+                    box.top < b.bottom && b.top < box.bottom;
+            }).map((el) => el.textContent.trim());
+        }"""
+    )
+    assert overlaps == []

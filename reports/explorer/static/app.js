@@ -47,6 +47,14 @@
     click: ['Click the chart to examine a point.', 'Щёлкните по диаграмме, чтобы исследовать точку.'],
     computing: ['computing…', 'вычисляю…'],
     drawn: ['chart drawn', 'диаграмма построена'],
+    ball: ['ball arithmetic (python-flint)', 'шаровая арифметика (python-flint)'],
+    ms: ['ms', 'мс'],
+    // the names in the chart's status line (the system and the friction model)
+    name_pendulum: ['pendulum', 'маятник'], name_torsion: ['torsion pendulum', 'крутильный маятник'],
+    name_meissner: ['Meissner', 'Мейснер'], name_exact: ['exact', 'точная'], name_paper: ['paper', 'статьи'],
+    // the label of the engine's notes (the notes themselves are the engine's, in English)
+    note: ['note', 'примечание'],
+    Q_none: ['none', 'нет'], languages: ['language', 'язык'],
     certified: ['certified: |printed − exact| <', 'доказано: |напечатано − точно| <'],
     scaled: ['angle shown scaled ×', 'угол показан в масштабе ×'],
     static_note: ['Static copy: precomputed charts, motion computed in the page (double precision, not certified).',
@@ -70,12 +78,18 @@
   function applyLanguage() {
     document.documentElement.lang = lang;
     document.querySelectorAll('[data-i18n]').forEach((el) => { el.textContent = say(el.dataset.i18n); });
+    $('Q').placeholder = say('Q_none');
+    document.querySelector('.lang').setAttribute('aria-label', say('languages'));
     document.querySelectorAll('.lang button').forEach((b) => b.classList.toggle('on', b.dataset.lang === lang));
     fillPresets();
     updateNote();
     ['chart-panel', 'readout', 'motion'].forEach((id) => setState(id, $(id).dataset.state || ''));
     if (lastPoint) showPoint(lastPoint);
-    if (run && $('motion').dataset.state !== 'pending') motionStatus();
+    if (!point) $('point').textContent = say('click');
+    Object.entries(statusText).forEach(([id, text]) => {
+      if (typeof text === 'function') $(id).textContent = text();
+    });
+    document.querySelectorAll('.notes .label').forEach((el) => { el.textContent = say('note') + ':'; });
   }
 
   // ---------------------------------------------------------------- state and controls
@@ -103,10 +117,29 @@
     if (!r.ok) throw new Error(doc.error || ('HTTP ' + r.status));
     return doc;
   }
+  // a status line: a text (an error message of the server, as it is) or a function that writes it
+  // in the current language (written again when the language changes)
+  const statusText = {};
   function status(id, text, bad) {
     const el = $(id);
-    el.textContent = text;
+    statusText[id] = text;
+    el.textContent = typeof text === 'function' ? text() : text;
     el.classList.toggle('error', !!bad);
+  }
+  // the engine's notes on a result, each under a label in the page's language (hidden if none)
+  function showNotes(id, notes) {
+    const box = $(id);
+    box.replaceChildren();
+    (notes || []).forEach((text) => {
+      const p = document.createElement('p'), label = document.createElement('span'), body = document.createElement('span');
+      label.className = 'label';
+      label.textContent = say('note') + ':';
+      body.lang = 'en';
+      body.textContent = text;
+      p.append(label, body);
+      box.appendChild(p);
+    });
+    box.hidden = !box.childElementCount;
   }
   // whether a panel's results answer the current input: '' (they do, or there are none),
   // 'pending' (a new answer is on its way: the old one is greyed and labelled) or 'failed' (the
@@ -304,7 +337,7 @@
     const o = options();
     const params = { ...o, max_order: $('max-order').value, nt: 240, nm: 160 };
     chartParams = params;
-    status('chart-status', say('computing'));
+    status('chart-status', () => say('computing'));
     if (chart) setState('chart-panel', 'pending');
     try {
       if (STATIC) {
@@ -325,7 +358,10 @@
         chart = { ...growth, orders: edges.orders, lower: edges.lower, upper: edges.upper };
         drawChart();
       }
-      status('chart-status', say('drawn') + ' · ' + (chart.system || '') + (chart.Q ? ', Q = ' + chart.Q + ' (' + chart.damping + ')' : ''));
+      const shown = chart;
+      const named = (x) => (TEXT['name_' + x] ? say('name_' + x) : (x || ''));
+      status('chart-status', () => say('drawn') + ' · ' + named(shown.system)
+        + (shown.Q ? ', Q = ' + shown.Q + ' (' + named(shown.damping) + ')' : ''));
     } catch (e) {
       if (token !== chartToken) return;
       status('chart-status', e.message, true);
@@ -347,7 +383,7 @@
     $('point').textContent = `T/T0 = ${T},  m = ${m}`;
     $('point').dataset.t = T;
     $('point').dataset.m = m;
-    status('point-status', say('computing'));
+    status('point-status', () => say('computing'));
     setState('readout', lastPoint ? 'pending' : '');
     const o = options();
     const q = { ...o, T, m };
@@ -361,7 +397,8 @@
       if (token !== pointToken) return;
       setState('readout', '');
       showPoint(doc);
-      status('point-status', `${Math.round(performance.now() - started)} ms · ` + (doc.multipliers.certified ? 'ball arithmetic (python-flint)' : ''));
+      const took = Math.round(performance.now() - started);
+      status('point-status', () => `${took} ${say('ms')}` + (doc.multipliers.certified ? ' · ' + say('ball') : ''));
     } catch (e) {
       if (token === pointToken) {
         status('point-status', e.message, true);
@@ -381,6 +418,8 @@
     lastPoint = null;
     ['mu1', 'mu2', 'mu-max', 'growth', 'mu-bound', 'order', 'edge-lower', 'edge-upper', 'edge-bound']
       .forEach((id) => { $(id).textContent = '—'; });
+    showNotes('mu-notes', []);
+    showNotes('edge-notes', []);
     $('verdict').className = 'verdict';
     $('verdict').textContent = '';
     setState('readout', 'failed');
@@ -402,6 +441,8 @@
     const v = $('verdict');
     v.className = 'verdict ' + (mu.unstable === true ? 'unstable' : mu.unstable === false ? 'stable' : '');
     v.textContent = mu.unstable === true ? say('unstable') : mu.unstable === false ? say('stable') : say('edge');
+    showNotes('mu-notes', mu.notes);
+    showNotes('edge-notes', b.notes);
     $('order').textContent = String(doc.order);
     if (b.exists) {
       $('edge-lower').textContent = b.lower;
@@ -423,7 +464,7 @@
     const params = { ...q, periods, samples: 48, amplitude: $('amplitude').value.trim() || '0.1' };
     if ($('nonlinear').checked) { params.nonlinear = 1; params.periods = 24; }
     setState('motion', run ? 'pending' : '');
-    status('motion-status', say('computing'));
+    status('motion-status', () => say('computing'));
     try {
       const doc = await getJSON('api/simulate?' + query(params));
       await genReady;
@@ -443,6 +484,7 @@
       const c = $(id);
       c.getContext('2d').clearRect(0, 0, c.width, c.height);
     });
+    showNotes('motion-notes', []);
     setState('motion', 'failed');
   }
   function growthAt(T, m) {
@@ -490,15 +532,17 @@
     const tEnd = doc.segments[doc.segments.length - 1].t.slice(-1)[0];
     run = { doc, phases: phases(doc), amax: amax || 1, vmax: vmax || 1, tEnd, t0: performance.now() };
     setState('motion', '');
-    motionStatus();
+    showNotes('motion-notes', doc.notes);
+    const scale = run.amax;
+    status('motion-status', () => motionStatus(doc, scale));
   }
-  function motionStatus() {
-    const doc = run.doc, grow = doc.growth_per_period;
+  function motionStatus(doc, amax) {
+    const grow = doc.growth_per_period;
     const what = doc.nonlinear
       ? `${say('nonlinear_run')} · ${say('peak')} |φ| = ${doc.peak_amplitude.toPrecision(4)} rad` + (doc.rotates ? ` · ${say('rotates')}` : '')
       : `${say('measured')} |μ| = ${grow === null ? '—' : grow.toPrecision(8)} · ${say('linear_run')}`;
-    status('motion-status', `${doc.periods} ${say('periods')} · ${what}`
-      + (doc.nonlinear ? '' : ` · ${say('scaled')}${(0.8 / run.amax).toPrecision(2)}`));
+    return `${doc.periods} ${say('periods')} · ${what}`
+      + (doc.nonlinear ? '' : ` · ${say('scaled')}${(0.8 / amax).toPrecision(2)}`);
   }
   function drawTrace(canvas, which, t) {
     const { g, W, H } = fitCanvas(canvas);
@@ -640,6 +684,8 @@
     $('mu-max').textContent = doc.growth_per_period.toPrecision(12);
     $('growth').textContent = Math.log(doc.growth_per_period).toPrecision(12);
     $('mu-bound').textContent = say('static_note');
+    showNotes('mu-notes', []);
+    showNotes('edge-notes', []);
     setState('readout', '');
     status('point-status', '');
   }
