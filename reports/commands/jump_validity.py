@@ -32,9 +32,9 @@ def register(subparsers) -> None:
             "shifts at a few S. Pendulum without friction. The time grows in proportion to "
             "the order (the lower edge is followed in S, in steps of a fixed fraction of the "
             "spacing of the orders, up to the longest ramp that fits a phase, which grows with "
-            "the order): seconds for the low orders, under a minute at order 1000 and about "
-            "four minutes at 10000; the elapsed time is shown on stderr (on a terminal; -q "
-            "turns it off)."
+            "the order): seconds for the low orders, about half a minute at order 1000 and "
+            "minutes near 10000; the elapsed time is shown on stderr (on a terminal; -q turns "
+            "it off)."
         ),
         formatter_class=argparse.RawDescriptionHelpFormatter,
     )
