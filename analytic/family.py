@@ -45,6 +45,7 @@ from functools import cache
 
 import sympy as sp
 
+from .factoring import factor
 from .identity import Verdict, prove_zero
 from .model import Damping, Regime, S
 from .normal_form import Link
@@ -176,7 +177,7 @@ class ParameterForms:
 def _factored(expr) -> sp.Expr:
     """A rational function of ``m`` (and ``Q``) with its numerator and denominator factored."""
     num, den = sp.fraction(sp.cancel(sp.together(expr)))
-    return sp.factor(num) / sp.factor(den)
+    return factor(num) / factor(den)
 
 
 @cache

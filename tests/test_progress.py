@@ -77,3 +77,36 @@ def test_a_command_in_a_pipe_prints_exactly_its_result(monkeypatch, capsys):
     monkeypatch.setattr("sys.stderr", term2)
     assert main(["catalogue", "--json", "--quiet"]) == 0
     assert capsys.readouterr().out == piped.out and term2.getvalue() == ""
+
+
+def test_jump_validity_shows_its_elapsed_time_and_takes_quiet(monkeypatch, capsys):
+    """``jump-validity`` runs for minutes at high orders (the edges are followed in ``S`` in
+    steps proportional to the spacing of the orders): a sign of life on a terminal, none with
+    ``--quiet`` or in a pipe, and the same result."""
+    import verify.ramp as ramp_module
+
+    class Answer:
+        def as_json(self):
+            return {"S_within": "0.1"}
+
+        def __str__(self):
+            return "answer"
+
+    def slow(*args, **kwargs):
+        time.sleep(2.5)  # longer than the 2 s after which progress appears
+        return Answer()
+
+    monkeypatch.setattr(ramp_module, "jump_validity", slow)
+    argv = ["jump-validity", "--order", "10000", "--m", "0.3", "--tol", "1e-3", "--json"]
+    assert main(argv) == 0
+    piped = capsys.readouterr()
+    assert piped.err == ""
+    term = Terminal()
+    monkeypatch.setattr("sys.stderr", term)
+    assert main(argv) == 0
+    assert capsys.readouterr().out == piped.out
+    assert "jump-validity: working" in term.getvalue()
+    term2 = Terminal()
+    monkeypatch.setattr("sys.stderr", term2)
+    assert main([*argv, "-q"]) == 0
+    assert capsys.readouterr().out == piped.out and term2.getvalue() == ""

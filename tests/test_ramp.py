@@ -301,6 +301,20 @@ def test_jump_validity_answer():
     assert max(float((abs(a) / v.jump_lower).mid()), float((abs(b) / v.jump_upper).mid())) > 1e-3
 
 
+def test_jump_validity_proves_the_tolerance_asked_exactly():
+    """The bound proven (and given in the JSON) is the tolerance asked, not its 64-bit rounding
+    (``0.05`` rounds up, so "within" would have been proven against a larger tolerance)."""
+    from verify.ramp import jump_validity
+
+    v = jump_validity(2, "0.1", "0.05")
+    assert v.tol == F(1, 20)
+    assert v.as_json()["tolerance"] == "1/20"
+    from verify.params import exact_fraction
+
+    binary = mpmath.mpf("0.001")  # an mpmath number is taken as the value it has
+    assert jump_validity(1, "0.3", binary).tol == exact_fraction(binary)
+
+
 @pytest.mark.parametrize("n, m, tol", [(1, "0.3", "1e-3"), (3, "0.6", "1e-3"), (1, "0.1", "0.1")])
 def test_jump_validity_without_the_longest_ramp_is_the_same(n, m, tol):
     """``fit=False`` computes the longest ramp only where the search comes near it; the answer

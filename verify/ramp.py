@@ -728,12 +728,16 @@ def jump_validity(order, m, tol, *, duty="1/2", digits=15, fit=True) -> Validity
     ``S`` below ``S_bad`` comes back within ``tol`` rests on the shift growing with ``S``
     (observed, not proven).  ``fit=False``: :attr:`Validity.S_fit` is computed only where the
     search comes near the longest ramp (else ``None``); the answer is the same."""
-    from .inputs import as_tolerance
+    from .inputs import as_number, as_tolerance
 
     n = as_order(order)
     D = as_system("pendulum", duty).duty
     mm = exact_fraction(as_depth(m))
-    tt = exact_fraction(as_tolerance(tol))
+    checked = as_tolerance(tol)  # the range check; the bound proven is the exact tolerance asked
+    if isinstance(tol, mpmath.mpf):
+        tt = exact_fraction(checked)
+    else:
+        tt = as_number(tol, name="tolerance", allowed="1e-12 to 0.1")
     if tt < JUMP_TOL_LOW:
         raise InputError(
             f"tolerance {tol} is outside the allowed range 1e-12 to 0.1 of the jump-model "

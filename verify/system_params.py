@@ -116,8 +116,10 @@ def _derive(system: System, damping: str, backends=STORED_BACKENDS) -> dict[str,
         key("atoms | integers"): _source(_pq_symbols(), _integer_pairs(exprs), {}),
     }
     if backends:
+        from analytic.factoring import factor
+
         om = sp.Symbol("om", positive=True)
-        near_one = [sp.factor(sp.expand(e.subs(S.m, 1 - om))) for e in exprs]
+        near_one = [factor(sp.expand(e.subs(S.m, 1 - om))) for e in exprs]
     for b in backends:
         ns = backend(b).namespace
         many = b == "numpy"  # arrays: integer powers as products

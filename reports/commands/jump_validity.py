@@ -1,6 +1,6 @@
 """``paramres jump-validity``: up to which switching time is the instantaneous jump a good model?
 
-    paramres jump-validity --order N --m M --tol TOL [--duty D] [--digits D] [--json]
+    paramres jump-validity --order N --m M --tol TOL [--duty D] [--digits D] [--json] [-q]
 
 Replaces each jump of the pendulum's length by a linear ramp lasting ``S`` (units ``T0``) and
 gives the largest ``S`` for which both certified edges of the ``N``-th interval stay within the
@@ -12,9 +12,9 @@ from __future__ import annotations
 
 import argparse
 
-from reports.output import dump_json
+from reports.output import dump_json, working
 
-from ._arguments import add_depth, add_json, add_order
+from ._arguments import add_depth, add_json, add_order, add_quiet
 
 __all__ = ["register", "run"]
 
@@ -29,7 +29,12 @@ def register(subparsers) -> None:
             "move; this command gives the largest S for which both edges stay within the "
             "relative tolerance TOL of the jump model's edges (proven by certified edges just "
             "below and just above), the derived leading shift dT/dS at S = 0, and the certified "
-            "shifts at a few S. Pendulum without friction."
+            "shifts at a few S. Pendulum without friction. The time grows in proportion to "
+            "the order (the lower edge is followed in S, in steps of a fixed fraction of the "
+            "spacing of the orders, up to the longest ramp that fits a phase, which grows with "
+            "the order): seconds for the low orders, about half a minute at order 1000 and "
+            "minutes near 10000; the elapsed time is shown on stderr (on a terminal; -q turns "
+            "it off)."
         ),
         formatter_class=argparse.RawDescriptionHelpFormatter,
     )
@@ -54,13 +59,15 @@ def register(subparsers) -> None:
         help="digits of the certified edges, 5 to 10000 (default 15)",
     )
     add_json(p)
+    add_quiet(p)
     p.set_defaults(func=run)
 
 
 def run(args) -> int:
     from verify.ramp import jump_validity
 
-    result = jump_validity(args.order, args.m, args.tol, duty=args.duty, digits=args.digits)
+    with working("jump-validity", quiet=args.quiet):
+        result = jump_validity(args.order, args.m, args.tol, duty=args.duty, digits=args.digits)
     if args.json:
         dump_json(result.as_json())
     else:
