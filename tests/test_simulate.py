@@ -412,3 +412,31 @@ def test_a_ramp_run_past_its_budget_is_refused():
             1, "0.99", modulation="ramp", switch_time="0.01", T="20", periods=60, nonlinear=True
         )
     assert "by period 1 of 60" in str(info.value)
+
+
+@pytest.mark.parametrize(
+    "kw, exact",
+    [
+        ({"modulation": "sine", "T": "1.1"}, True),  # stable, no friction: a complex pair
+        ({"modulation": "sine", "edge": "lower"}, False),  # on an edge: not separated
+        ({"modulation": "ramp", "switch_time": "0.1", "edge": "upper"}, True),
+    ],
+)
+def test_a_modulated_run_says_what_its_certified_growth_is(kw, exact):
+    """The certified ``ln|mu|max`` of a run with the ramp or the sine prints ``0`` both where it
+    is exactly 0 (a proven complex pair: the ramp's upper edge, as the double-precision edge
+    falls) and where its ball holds 0 (the sine's lower edge, where the multipliers are not
+    separated): a note says which, in the text and the JSON."""
+    from verify.modulated_run import simulate_modulated
+    from verify.multipliers import significant_digits
+
+    run = simulate_modulated(2, "0.3", periods=2, **kw)
+    assert run.floquet_text == "0"
+    assert len(run.notes) == 1
+    if exact:
+        assert "0 exactly" in run.notes[0]
+    else:
+        shown = significant_digits(run.floquet_text)
+        assert f"prints {shown} of 10 digits" in run.notes[0]
+    assert run.as_json()["notes"] == list(run.notes)
+    assert f"  note: {run.notes[0]}" in str(run).splitlines()

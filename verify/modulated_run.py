@@ -50,6 +50,8 @@ class ModulatedRun:
     floquet_growth: float
     peak_amplitude: float
     floquet_text: str = ""
+    #: what the certified ``ln|mu|max`` is where it is exactly 0 or prints fewer than its 10 digits
+    notes: tuple = ()
 
     @property
     def growth_agreement(self) -> float:
@@ -81,6 +83,7 @@ class ModulatedRun:
             "difference": self._difference(),
             "peak_amplitude": f"{self.peak_amplitude:.6g}",
             "method": "scipy solve_ivp DOP853 (rtol 1e-12), double precision, not certified",
+            "notes": list(self.notes),
         }
 
     def __str__(self) -> str:
@@ -106,6 +109,7 @@ class ModulatedRun:
             f"  difference:                  {self._difference()}",
             f"  peak amplitude over {self.periods} periods: {self.peak_amplitude:.6g} rad",
         ]
+        lines += [f"  note: {note}" for note in self.notes]
         return "\n".join(lines)
 
 
@@ -259,6 +263,7 @@ def simulate_modulated(
         growth = math.log(np.linalg.norm(vel(states[-1])) / np.linalg.norm(vel(states[0]))) / K
     else:
         growth = _strobe_growth([vel(y) for y in states])
+    text = proven_text(mu.growth, mu.growth_radius, _FLOQUET_DIGITS)
     return ModulatedRun(
         order=n,
         m=mm,
@@ -274,5 +279,35 @@ def simulate_modulated(
         growth_per_period=growth,
         floquet_growth=float(mu.growth),
         peak_amplitude=peak[0],
-        floquet_text=proven_text(mu.growth, mu.growth_radius, 10),
+        floquet_text=text,
+        notes=_growth_notes(mu, text, _FLOQUET_DIGITS),
+    )
+
+
+#: the digits of the certified ``ln|mu|max`` a run prints
+_FLOQUET_DIGITS = 10
+
+
+def _growth_notes(mu, text: str, digits: int) -> tuple:
+    """What the printed certified ``ln|mu|max`` (``text``, ``digits`` asked) is, where a bare
+    number would not say it: exactly 0, or fewer digits than asked and why."""
+    from .multipliers import significant_digits
+
+    if mu.growth_exact:
+        return (
+            "ln|mu|max (certified) is 0 exactly: the multipliers are a proven complex pair on the "
+            "unit circle",
+        )
+    shown = significant_digits(text)
+    if shown >= digits:
+        return ()
+    why = (
+        "the two multipliers are not separated at the working precision (a double multiplier, "
+        "as on an edge, or one within the error bound)"
+        if mu.double
+        else "its ball is still too wide at the largest working precision tried"
+    )
+    return (
+        f"ln|mu|max (certified) prints {shown} of {digits} digits: {why}; every digit printed "
+        "is proven",
     )
