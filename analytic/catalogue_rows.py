@@ -166,11 +166,13 @@ def _eq1() -> Row:
 
 @row("2-3")
 def _eq23() -> Row:
-    # a rigid pendulum: bob of mass M at distance l, drag -c v on the bob (v = l phi')
-    Mb, c, gr, l0, l = sp.symbols("M c g l_0 l", positive=True)
+    # a rigid pendulum: a point bob at distance l, drag -c v on the bob (v = l phi'); the moment
+    # of inertia is J0 at l0, so the bob's mass is J0/l0^2 (M is the monodromy matrix elsewhere)
+    J0, c, gr, l0, l = sp.symbols("J_0 c g l_0 l", positive=True)
+    mass = J0 / l0**2
     ph = sp.Function(r"\varphi")(S.t)
-    J = Mb * l**2
-    torque = -Mb * gr * l * sp.sin(ph) - c * l**2 * sp.Derivative(ph, S.t)
+    J = mass * l**2
+    torque = -mass * gr * l * sp.sin(ph) - c * l**2 * sp.Derivative(ph, S.t)
     eom = sp.expand((J * sp.Derivative(ph, S.t, 2) - torque) / J)
     gam = sp.Rational(1, 2) * eom.coeff(sp.Derivative(ph, S.t))
     om2 = eom.coeff(sp.sin(ph))
@@ -197,8 +199,9 @@ def _eq23() -> Row:
         "agrees" if ok else "differs",
         _latex(pr),
         _latex(derived),
-        r"Derived from $J\ddot\varphi = $ torque with $J = Ml^2$, the torque of gravity "
-        r"$-Mgl\sin\varphi$ and of the drag $-cl^2\dot\varphi$ on the bob: $2\gamma = c/M$ does "
+        r"Derived from $J\ddot\varphi = $ torque for a point bob, with $J = J_0 (l/l_0)^2$ (so "
+        r"$J_0/l_0^2$ is the bob's mass), the torque of gravity $-(J_0/l_0^2)\,gl\sin\varphi$ and "
+        r"that of the drag $-cl^2\dot\varphi$ on the bob: $2\gamma = cl_0^2/J_0$ does "
         r"not depend on $l$ (the same in both halves), $\omega_i^2 = g/l_i$ with "
         r"$l_{1,2} = l_0(1 \pm m)$; " + _decided(checks),
         "Equations of motion in each half",
@@ -207,18 +210,17 @@ def _eq23() -> Row:
 
 @row("4")
 def _eq4() -> Row:
-    Mb, l0 = sp.symbols("M l_0", positive=True)
-    J1, J2 = Mb * (l0 * (1 + S.m)) ** 2, Mb * (l0 * (1 - S.m)) ** 2
+    # J = J0 (l/l0)^2: J0 is the moment of inertia at the length l0
+    J0, l0 = sp.symbols("J_0 l_0", positive=True)
+    J1, J2 = J0 * (l0 * (1 + S.m) / l0) ** 2, J0 * (l0 * (1 - S.m) / l0) ** 2
     d = sp.Function(r"\dot{\varphi}")
-    derived = (written(sp.factor(J1 / (Mb * l0**2)) * d(1), sp.factor(J2 / (Mb * l0**2)) * d(2)),)
-    v = prove_zero(
-        sp.expand(J1 / (Mb * l0**2) - inertia(1)) + sp.expand(J2 / (Mb * l0**2) - inertia(2))
-    )
+    derived = (written(sp.factor(J1 / J0) * d(1), sp.factor(J2 / J0) * d(2)),)
+    v = prove_zero(sp.expand(J1 / J0 - inertia(1)) + sp.expand(J2 / J0 - inertia(2)))
     r = _compare_row(
         "4",
         "Angular-momentum jump",
         derived,
-        r"The angular momentum $J\dot\varphi$ with $J = Ml^2$ is conserved.",
+        r"The angular momentum $J\dot\varphi$ with $J = J_0 (l/l_0)^2$ is conserved.",
     )
     return (
         r

@@ -195,8 +195,8 @@ def _eq7() -> Row:
     )
     how = (
         "The exact form $\\omega_{av} = (\\omega_0/2)(1/\\sqrt{1+m} + 1/\\sqrt{1-m})$ follows from "
-        f"the model ({v0.describe()}); its series (and that of $T_{{av}}/T_0 = 1/w$) agree with "
-        "the "
+        f"the model ({v0.describe()}); its series (and that of $T_{{av}}/T_0 = 1/w$, where "
+        "$w = \\omega_{av}/\\omega_0$) agree with the "
         f"printed ones through $m^3$ ({_route(vs1 + vs2)}), the printed order being $m^2$. Next "
         f"terms: $\\omega_{{av}}/\\omega_0$: ${latex(next_term(w, m, 3))}$, $T_{{av}}/T_0$: "
         f"${latex(next_term(invw, m, 3))}$."
@@ -458,6 +458,17 @@ def _limit_at_zero(expr: sp.Expr, var: sp.Symbol) -> sp.Expr:
     return sp.limit(expr, var, 0)  # pragma: no cover - every threshold series is of that form
 
 
+#: what the two damping models' thresholds differ in: the normal-form parameters, each defined
+#: (the verdict is read on its own, away from the section that derives them)
+_MODELS_DIFFER_IN = (
+    "frequencies of the halves: $W_i$ is the undamped $\\omega_i$ in the paper model and the "
+    "damped $\\Omega_i = \\sqrt{\\omega_i^2 - \\gamma^2}$ in the exact model, and the normal-form "
+    "parameters are built from them: $r^2 = (K-2)/(K+2)$ (with $K = q + 1/q$ in the paper model "
+    "and the exact model's own coupling $K$), $\\beta = (W_2 - W_1)/(W_2 + W_1)$ and "
+    "$w = (W_1 + W_2)/(2\\omega_0)$."
+)
+
+
 def _mmin_row(label: str, n: int, printed_Qmin: sp.Expr, printed_mmin: sp.Expr, title: str) -> Row:
     texts, ok_all = [], True
     derived_show = []
@@ -502,8 +513,8 @@ def _mmin_row(label: str, n: int, printed_Qmin: sp.Expr, printed_mmin: sp.Expr, 
         "printed leading term, coefficient by coefficient in $1/Q$. "
         + "; ".join(texts)
         + f". The two damping models part at relative order $m^{{{gap}}} = 1/Q^{{{gap // p_}}}$ "
-        f"in the threshold ($1/Q_{{\\min}} = \\lambda(m)\\, m^{{{p_}}}$; exact: damped "
-        "frequencies $\\sqrt{\\omega_i^2 - \\gamma^2}$ and their $r$, $\\beta$, $w$)."
+        f"in the threshold ($1/Q_{{\\min}} = \\lambda(m)\\, m^{{{p_}}}$). They differ in the "
+        + _MODELS_DIFFER_IN
     )
     return Row(
         label,

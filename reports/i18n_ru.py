@@ -560,7 +560,7 @@ PHRASES: dict[str, str] = {
     "For order": "Для порядка",
     "put": "положим",
     "Write": "Положим",
-    ". In units": ". В единицах",
+    "). In units": "). В единицах",
     "interval closes (Section~\\ref{sec:closings}).": (
         "интервал смыкается (раздел~\\ref{sec:closings})."
     ),
@@ -662,21 +662,23 @@ PHRASES: dict[str, str] = {
         "Предел $m \\to 0$ точного условия настройки (6), $T = nT_{av}/2$ при $T_{av} \\to T_0$; "
         "решено символьно."
     ),
-    "Derived from $J\\ddot\\varphi = $ torque with $J = Ml^2$, the torque of gravity "
-    "$-Mgl\\sin\\varphi$ and of the drag $-cl^2\\dot\\varphi$ on the bob: $2\\gamma = c/M$ does "
+    "Derived from $J\\ddot\\varphi = $ torque for a point bob, with $J = J_0 (l/l_0)^2$ (so "
+    "$J_0/l_0^2$ is the bob's mass), the torque of gravity $-(J_0/l_0^2)\\,gl\\sin\\varphi$ and "
+    "that of the drag $-cl^2\\dot\\varphi$ on the bob: $2\\gamma = cl_0^2/J_0$ does "
     "not depend on $l$ (the same in both halves), $\\omega_i^2 = g/l_i$ with "
     "$l_{1,2} = l_0(1 \\pm m)$; decided symbolically.": (
-        "Выведено из $J\\ddot\\varphi = $ момент сил при $J = Ml^2$, моменте силы тяжести "
-        "$-Mgl\\sin\\varphi$ и силы сопротивления $-cl^2\\dot\\varphi$, действующей на груз: "
-        "$2\\gamma = c/M$ не зависит от $l$ (одинаково в обеих половинах), "
-        "$\\omega_i^2 = g/l_i$ при $l_{1,2} = l_0(1 \\pm m)$; решено символьно."
+        "Выведено из $J\\ddot\\varphi = $ момент сил для точечного груза при "
+        "$J = J_0 (l/l_0)^2$ (так что $J_0/l_0^2$ --- масса груза), моменте силы тяжести "
+        "$-(J_0/l_0^2)\\,gl\\sin\\varphi$ и моменте силы сопротивления $-cl^2\\dot\\varphi$, "
+        "действующей на груз: $2\\gamma = cl_0^2/J_0$ не зависит от $l$ (одинаково в обеих "
+        "половинах), $\\omega_i^2 = g/l_i$ при $l_{1,2} = l_0(1 \\pm m)$; решено символьно."
     ),
     "Printed and derived forms are the same equation; decided symbolically (exact rational "
     "identity after expanding the abbreviations). The angular momentum $J\\dot\\varphi$ with "
-    "$J = Ml^2$ is conserved.": (
+    "$J = J_0 (l/l_0)^2$ is conserved.": (
         "Напечатанная и выведенная формы --- одно и то же уравнение; решено символьно (точное "
         "рациональное тождество после раскрытия сокращений). Момент импульса $J\\dot\\varphi$ "
-        "при $J = Ml^2$ сохраняется."
+        "при $J = J_0 (l/l_0)^2$ сохраняется."
     ),
     "After eq. (39): 'at zero friction $p = 1$, and (39) coincides with (14)'. At $p = 1$ the "
     "(squared) equation (39) is a non-vanishing multiple of (15); the reference should be (15), "
@@ -950,11 +952,13 @@ _CATALOGUE = [
     ),
     (
         "The exact form $\\omega_{av} = (\\omega_0/2)(1/\\sqrt{1+m} + 1/\\sqrt{1-m})$ follows from "
-        "the model (<check>); its series (and that of $T_{av}/T_0 = 1/w$) agree with the printed "
+        "the model (<check>); its series (and that of $T_{av}/T_0 = 1/w$, where "
+        "$w = \\omega_{av}/\\omega_0$) agree with the printed "
         "ones through <o> (symbolically), the printed order being <po>. Next terms: "
         "$\\omega_{av}/\\omega_0$: <a>, $T_{av}/T_0$: <b>.",
         "Точная формула $\\omega_{av} = (\\omega_0/2)(1/\\sqrt{1+m} + 1/\\sqrt{1-m})$ следует из "
-        "модели (<check>); её ряд (и ряд $T_{av}/T_0 = 1/w$) совпадает с напечатанным до <o> "
+        "модели (<check>); её ряд (и ряд $T_{av}/T_0 = 1/w$, где $w = \\omega_{av}/\\omega_0$) "
+        "совпадает с напечатанным до <o> "
         "включительно (символьно), тогда как напечатан порядок <po>. Следующие члены: "
         "$\\omega_{av}/\\omega_0$: <a>, $T_{av}/T_0$: <b>.",
         {"check": _check_ru},
@@ -1052,14 +1056,22 @@ _CATALOGUE = [
         "in the distinguished scaling <p> and compared with the printed leading term, "
         "coefficient by coefficient in $1/Q$. Paper model: leading term <v1>; next term of <x1>: "
         "<a>; exact model: leading term <v2>; next term of <x2>: <b>. The two damping models "
-        "part at relative order <o> in the threshold (<mp>; exact: damped frequencies "
-        "$\\sqrt{\\omega_i^2 - \\gamma^2}$ and their $r$, $\\beta$, $w$).",
+        "part at relative order <o> in the threshold (<mp>). They differ in the frequencies of the "
+        "halves: $W_i$ is the undamped $\\omega_i$ in the paper model and the damped "
+        "$\\Omega_i = \\sqrt{\\omega_i^2 - \\gamma^2}$ in the exact model, and the normal-form "
+        "parameters are built from them: $r^2 = (K-2)/(K+2)$ (with $K = q + 1/q$ in the paper "
+        "model and the exact model's own coupling $K$), $\\beta = (W_2 - W_1)/(W_2 + W_1)$ and "
+        "$w = (W_1 + W_2)/(2\\omega_0)$.",
         "Порог --- касание нормальной формы ($N = 0$, $dN/d\\theta = 0$); он найден в выделенном "
         "масштабе <p> и сравнён с напечатанным главным членом, коэффициент за коэффициентом "
         "по $1/Q$. Модель статьи: главный член <v1>; следующий член <x1>: <a>; точная модель: "
         "главный член <v2>; следующий член <x2>: <b>. Две модели трения дают разные пороги "
-        "начиная с относительного порядка <o> (<mp>; в точной модели --- частоты затухающих "
-        "колебаний $\\sqrt{\\omega_i^2 - \\gamma^2}$ и соответствующие им $r$, $\\beta$, $w$).",
+        "начиная с относительного порядка <o> (<mp>). Они различаются частотами половин периода: "
+        "$W_i$ --- частота без затухания $\\omega_i$ в модели статьи и частота затухающих "
+        "колебаний $\\Omega_i = \\sqrt{\\omega_i^2 - \\gamma^2}$ в точной модели, и из них "
+        "строятся параметры нормальной формы: $r^2 = (K-2)/(K+2)$ (с $K = q + 1/q$ в модели "
+        "статьи и собственной константой связи $K$ точной модели), "
+        "$\\beta = (W_2 - W_1)/(W_2 + W_1)$ и $w = (W_1 + W_2)/(2\\omega_0)$.",
     ),
     (
         "Misprint (a lost factor 3): lower edge: coefficient of <k1> printed <a>, derived <b>; "

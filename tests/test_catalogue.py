@@ -6,6 +6,7 @@ misprint, so an 'agrees' cannot come from a checker that always agrees.
 """
 
 import json
+import re
 
 import pytest
 import sympy as sp
@@ -136,3 +137,50 @@ def test_the_papers_sections_are_named_as_the_papers(rows):
     with language("ru"):
         assert "разд. 3.2 статьи" in tr(r.title)
         assert tr(r.how).startswith("Раздел 3.2 статьи:")
+
+
+def _verdict_math(how: str) -> list[str]:
+    return re.findall(r"\$(.*?)\$", how)
+
+
+#: symbols of the normal form a verdict may use, and how a verdict defines each
+_NORMAL_FORM_SYMBOLS = {
+    "w": (r"(?<![\\A-Za-z])w(?![A-Za-z])", r"(?<![\\A-Za-z])w = "),
+    "r": (r"(?<![\\A-Za-z])r(?![A-Za-z])", r"(?<![\\A-Za-z])r(\^2)? = "),
+    "beta": (r"\\beta(?![A-Za-z])", r"\\beta = "),
+}
+
+
+@pytest.mark.parametrize("lang", ["en", "ru"])
+def test_verdicts_define_the_normal_form_parameters_they_use(rows, lang):
+    """A verdict is read on its own (``paramres catalogue``, or one entry of the report): the
+    normal-form parameters ``r``, ``beta``, ``w`` it names are defined in it, in both languages
+    (eq. (7) named ``T_av/T_0 = 1/w`` and the thresholds (38), (43) 'their r, beta, w' without
+    saying what they are)."""
+    from reports.i18n import language, tr
+
+    used = set()
+    for r in rows.values():
+        with language(lang):
+            how = tr(r.how)
+        math = " ".join(_verdict_math(how))
+        for name, (use, define) in _NORMAL_FORM_SYMBOLS.items():
+            if re.search(use, math):
+                used.add((r.equation, name))
+                assert re.search(define, math), f"({r.equation}) uses {name} undefined: {how}"
+    assert {("7", "w"), ("38", "w"), ("38", "beta"), ("43", "r")} <= used
+    assert r"w = \omega_{av}/\omega_0" in rows["7"].how
+
+
+def test_the_bobs_mass_is_not_the_monodromy_matrix(rows):
+    """``M`` is the monodromy matrix throughout the report; the derivation of eqs. (2)-(4) writes
+    the bob's mass through the moment of inertia ``J_0`` at the length ``l_0`` (as the report's
+    table of the two halves does), not as a second ``M``."""
+    mass = r"(?<![\\A-Za-z])M(?=\s*[gl])|/M(?![A-Za-z])"
+    for r in rows.values():
+        for piece in _verdict_math(r.how):
+            assert not re.search(mass, piece), f"({r.equation}): ${piece}$"
+    for eq in ("2-3", "4"):  # nor in the derived equations (gamma = c/(2M) before)
+        assert not re.search(r"(?<![\\A-Za-z])M(?![A-Za-z])", rows[eq].derived), rows[eq].derived
+        assert r"J = J_0 (l/l_0)^2" in rows[eq].how
+    assert r"2\gamma = cl_0^2/J_0" in rows["2-3"].how

@@ -496,6 +496,10 @@ SECOND_MEANINGS = (
     ("k as a Fourier index", r"e\^\{ik|\(k - 1\\right\)|\$k \\ge 3/2\$"),
     ("a_k as a Fourier coefficient", r"a_\{1/2\}|\$a_k\$"),
     ("u_+ beside u", r"u_\{?[+-]"),
+    # M is the monodromy matrix: the bob's mass is not a second M (eqs. 2-4 write J = J_0 (l/l_0)^2)
+    ("M as the bob's mass", r"J = Ml\^2|(?<![\\A-Za-z])Mgl|c/M(?![A-Za-z])|\{2 M\}|\}\{M\}"),
+    # w is omega_av/omega_0 (sec. 'Parameters of the normal form'), not the mean frequency itself
+    ("w as a frequency", r"(?<![\\A-Za-z])w = D W_1"),
 )
 
 
@@ -505,8 +509,43 @@ def test_no_symbol_has_two_meanings(reports, lang):
     for what, pattern in SECOND_MEANINGS:
         hit = re.search(pattern, body)
         assert hit is None, f"{what}: ...{body[max(0, hit.start() - 80) : hit.end() + 40]}..."
-    for definition in (r"\psi = 2\pi t/T", r"\eta = (T/T_0)^2", r"\delta = \eta - \nu^{2}"):
+    for definition in (
+        r"\psi = 2\pi t/T",
+        r"\eta = (T/T_0)^2",
+        r"\delta = \eta - \nu^{2}",
+        r"J = J_0 (l/l_0)^2",
+        r"w = (D W_1 + (1-D) W_2)/\omega_0",
+    ):
         assert definition in body, definition
+
+
+@pytest.mark.parametrize("lang", ["en", "ru"])
+def test_w_is_defined_where_first_used(reports, lang):
+    """``w`` (``omega_av/omega_0``, the normal-form parameter with ``T/T_0 = x/(pi w)``) is said in
+    words where it first appears, and each catalogue entry that names ``w``, ``r`` or ``beta`` in
+    its verdict defines them there (eq. (7) had ``T_av/T_0 = 1/w`` with no ``w`` in it; (38), (43)
+    'their r, beta, w')."""
+    body = _tex(reports, lang).split(r"\begin{document}", 1)[1]
+    first = re.search(r"\$[^$]*(?<![\\A-Za-z])w(?![A-Za-z])[^$]*\$", body)
+    assert first is not None
+    near = body[first.start() : first.end() + 80]
+    assert r"w = \omega_{av}/\omega_0" in near, near
+    uses = {
+        "w": (r"(?<![\\A-Za-z])w(?![A-Za-z])", r"(?<![\\A-Za-z])w = "),
+        "r": (r"(?<![\\A-Za-z])r(?![A-Za-z])", r"(?<![\\A-Za-z])r(\^2)? = "),
+        "beta": (r"\\beta(?![A-Za-z])", r"\\beta = "),
+    }
+    verdict = r"\\emph\{(?:Verdict|Вывод):\}(.*?)(?=\n\n|\\paragraph|$)"
+    entries = re.findall(r"\\paragraph\{.*?(?=\\paragraph\{|\\section\{|$)", body, re.S)
+    checked = 0
+    for entry in entries:
+        for text in re.findall(verdict, entry, re.S):
+            math = " ".join(re.findall(r"\$(.*?)\$", text))
+            for name, (use, define) in uses.items():
+                if re.search(use, math):
+                    checked += 1
+                    assert re.search(define, math), f"{name} undefined in: {entry[:120]}"
+    assert checked >= 7  # (7): w; (38), (43): r, beta, w
 
 
 @pytest.mark.parametrize("lang", ["en", "ru"])

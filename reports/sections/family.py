@@ -190,12 +190,14 @@ def build(ctx: Context) -> Part:
             raw(
                 say(
                     r"). The normal form of the paper therefore holds for the whole family; only "
-                    r"$r$, $\beta$ and the mean frequency $w = D W_1 + (1-D) W_2$ change, where "
+                    r"$r$, $\beta$ and the mean frequency $w = (D W_1 + (1-D) W_2)/\omega_0$ (in "
+                    r"units of $\omega_0$) change, where "
                     r"$W_i$ is $\omega_i$ (with friction in the exact model $\Omega_i$), with "
                     r"$|r| < 1$ and $|\beta| < 1$ always. Without friction it factors into one "
                     r"equation per edge, each with one simple root per order, for every duty.",
                     r"). Поэтому нормальная форма статьи верна для всего семейства; меняются "
-                    r"лишь $r$, $\beta$ и средняя частота $w = D W_1 + (1-D) W_2$, где $W_i$ --- "
+                    r"лишь $r$, $\beta$ и средняя частота $w = (D W_1 + (1-D) W_2)/\omega_0$ "
+                    r"(в единицах $\omega_0$), где $W_i$ --- "
                     r"это $\omega_i$ (с трением в точной модели $\Omega_i$), причём всегда "
                     r"$|r| < 1$ и $|\beta| < 1$. Без трения она распадается на уравнения для "
                     r"каждой границы, у каждого по одному простому корню для каждого порядка, "

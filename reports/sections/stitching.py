@@ -224,7 +224,9 @@ def _normal_form(ctx: Context) -> list[Latex]:
             inline(raw(r"\gamma T/2 = g x")),
             "and",
             inline(raw(r"T/T_0 = x/(\pi w)")),
-            ". In units",
+            "(so",
+            inline(raw(r"w = \omega_{av}/\omega_0")),
+            "). In units",
             inline(raw(r"T_0 = 1")),
             "the engine defines the parameters as follows (exact model: the same with the damped "
             "frequencies",
