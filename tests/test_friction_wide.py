@@ -84,3 +84,22 @@ def test_over_damped_window_past_double_range_is_refused(capsys):
     assert code == 2 and out == ""
     assert err.startswith("paramres: error: ") and "not decided" in err
     assert "Traceback" not in err
+
+
+def test_paper_model_past_double_range_is_refused(capsys):
+    # the paper's model at m = 1 - 1e-6 and Q near 1e-6: the float stage's values of the normal
+    # form overflow; the engine says it cannot decide instead of failing
+    code, out, err = run_cli(
+        capsys,
+        "boundary",
+        "--order",
+        "1",
+        "--m",
+        "0.999999",
+        "--Q",
+        "1.0669502220605025e-06",
+        "--damping",
+        "paper",
+    )
+    assert code == 2 and out == ""
+    assert err.startswith("paramres: error: ") and "not decided" in err
