@@ -103,3 +103,12 @@ def test_paper_model_past_double_range_is_refused(capsys):
     )
     assert code == 2 and out == ""
     assert err.startswith("paramres: error: ") and "not decided" in err
+
+
+def test_table_past_double_range_is_refused(capsys):
+    # the double grid's trace form at the same point: the certified route is asked, and refuses
+    code, out, err = run_cli(
+        capsys, "table", "--orders", "1", "--m", "0.999:0.999:0.1", "--Q", "0.0010018469107664705"
+    )
+    assert code == 2
+    assert err.startswith("paramres: error: ") and "not decided" in err
