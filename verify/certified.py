@@ -9,6 +9,7 @@ without ``method`` and ``tol``).
 
 from __future__ import annotations
 
+from .certify import CertificationError
 from .hump import normal_damped, trace_damped
 from .methods import register_method
 from .params import form_for
@@ -25,9 +26,18 @@ def certified(req: Request) -> Boundary:
     if req.Q is None:
         return undamped(req)
     kind, regimes = form_for(req.m, req.Q, req.damping, req.system)
-    if kind == "normal":
-        return normal_damped(req)
-    return trace_damped(req, regimes)
+    try:
+        if kind == "normal":
+            return normal_damped(req)
+        return trace_damped(req, regimes)
+    except OverflowError:
+        # the float stage that starts the proof met a value past the double range (the friction
+        # factors grow like exp(pi T/Q): a tiny Q at a deep modulation); nothing was proven
+        raise CertificationError(
+            f"order {req.order}, m = {req.m}, Q = {req.Q} ({req.damping} model): the "
+            "indicator's values reach beyond the range of double precision where the proof "
+            "starts; not decided"
+        ) from None
 
 
 def boundary(

@@ -69,7 +69,7 @@ def trace_window_ends(n: int, regimes, T, *, bits: int = 60):
     capped where ``(2 + |kappa| zeta^2) exp(-(2 - nu1) zeta) < 1/2`` (``D < 0`` beyond).  Both
     halves critically or over-damped: only ``n = 1``, from the zero of ``P = 2 C1 C2 - kappa S1 S2``
     to a point beyond which ``D < 0`` is guaranteed by ``|kappa| zeta^2 exp(-(2 - nu1 - nu2) zeta) <
-    1``.
+    1`` or, both halves over-damped, by ``|kappa|/(4 nu1 nu2) exp(-(2 - nu1 - nu2) zeta) < 1``.
     """
     r1, r2 = regimes
     kappa, nu1, nu2 = float(T.kappa), float(T.nu1), float(T.nu2)
@@ -116,6 +116,11 @@ def trace_window_ends(n: int, regimes, T, *, bits: int = 60):
     zend = max(2 / a, 1.0)
     while abs(kappa) * zend * zend * math.exp(-a * zend) >= 0.5:
         zend *= 1.5
+    if nu1 > 0 and nu2 > 0:
+        # both halves over-damped: S_i <= exp(nu_i zeta)/(2 nu_i) gives D < 0 once
+        # |kappa|/(4 nu1 nu2) exp(-a zeta) < 1, far sooner when the damping is strong (a small),
+        # where the bound above reaches zeta at which cosh(2 zeta) overflows
+        zend = min(zend, max(math.log(abs(kappa) / (2 * nu1 * nu2)) / a, 1.0))
     if P(zend) >= 0:
         return None
     lo, hi = 0.0, zend

@@ -2052,10 +2052,14 @@ def _double_grid(orders, dep: _Depths, cols, Qx, damping):
         T = trace_params(dep.exact(int(cols[j])), Qexact, backend("math"))
         regimes = (_REGIMES[h1[j] + 1], _REGIMES[h2[j] + 1])
         for i, n in enumerate(orders):
-            window = trace_window_ends(n, regimes, T)
-            if window is None:
+            try:
+                window = trace_window_ends(n, regimes, T)
+                if window is None:
+                    continue
+                res = damped_trace(n, regimes, T, window)
+            except OverflowError:  # past the double range: the certified route decides
+                doubt[i, j] = True
                 continue
-            res = damped_trace(n, regimes, T, window)
             scale = 2 * float(Qexact) / math.pi
             out[i, 0, j] = res["lo"] * scale
             out[i, 1, j] = res["hi"] * scale

@@ -1017,7 +1017,13 @@ def hump_trace(
     from .float_roots import damped_trace, trace_window_ends
 
     Tf = trace_params(m, Q, _MATH, system)
-    window = window or trace_window_ends(n, regimes, Tf)
+    try:
+        window = window or trace_window_ends(n, regimes, Tf)
+    except OverflowError:  # D ~ exp(2 zeta) past the double range before the tail bound holds
+        raise CertificationError(
+            f"order {n}, m = {m}, Q = {Q}: the window of the trace form (both halves "
+            "over-damped) reaches beyond the range of double precision; not decided"
+        ) from None
     if window is None:
         why = (
             "both halves are critically or over-damped: only order 1 can exist"
@@ -1198,4 +1204,9 @@ def _prove_window(n, regimes, P, za, zb, m_box=None, m=None, Q=None) -> bool:
         a = 2 - p.nu1 - p.nu2
         z2 = ball(zb)
         tail = abs(p.kappa) * z2 * z2 * (-a * z2).exp()
-        return bool(P1 > 0 and tail < 1 and z2 * a > 2)
+        beyond = bool(tail < 1 and z2 * a > 2)
+        if not beyond and r1 == "over" and r2 == "over":  # S_i <= exp(nu_i zeta)/(2 nu_i)
+            beyond = bool(p.nu1 > 0 and p.nu2 > 0 and a > 0) and bool(
+                abs(p.kappa) / (4 * p.nu1 * p.nu2) * (-a * z2).exp() < 1
+            )
+        return bool(P1 > 0) and beyond

@@ -1,0 +1,114 @@
+"""Certified edges with friction on wide brackets (deep modulation, ``m >= 1/2``), checked against
+the monodromy matrix of :mod:`tests.pendulum_monodromy` (pure mpmath, built from the damped halves
+and the jumps, not from :mod:`verify.hump` or :mod:`analytic`).
+
+On each printed edge ``E`` with its bound ``b`` (``|printed - exact| <= b``) the largest multiplier
+``|mu|max`` crosses 1: ``|mu|max - 1`` is negative at ``E -+ b`` outside the interval and positive
+at ``E +- b`` inside it (and at ``E +- 3b``).  Where the engine finds no interval, ``|mu|max < 1``
+over the order's bracket.  The cases are the hardest met in a check over ``m`` from 1/2 to
+``1 - 1e-6``, orders 1-6 and ``Q`` from just above each threshold to ``1e6``: ``Q`` within
+``1e-4`` of the threshold, both halves over-damped (the trace form, ``m = 0.99``, ``Q ~ 0.01``),
+and the largest ``Q`` at 40 digits.
+"""
+
+from __future__ import annotations
+
+import mpmath
+import pytest
+
+from tests.cli_run import run_cli
+from tests.pendulum_monodromy import damped_monodromy_mp, multipliers_mp
+from verify.solve import boundary
+
+
+def _excess(T, m, Q, damping, dps):
+    """``|mu|max - 1`` of the reference monodromy at ``T`` (all arguments decimal strings)."""
+    with mpmath.workdps(dps):
+        M = damped_monodromy_mp(mpmath.mpf(T), mpmath.mpf(m), mpmath.mpf(Q), damping)
+        return abs(multipliers_mp(M)[0]) - 1
+
+
+# (order, m, Q, damping, digits): Q just above the threshold unless large
+CASES = [
+    (3, "0.5", "7.6", "exact", 15),
+    (4, "0.75", "3.925", "exact", 40),
+    (5, "0.6", "3.557", "paper", 15),
+    (3, "0.9", "0.4451", "exact", 40),
+    (6, "0.9", "1.635", "paper", 15),
+    (5, "0.95", "0.4283", "exact", 15),
+    (1, "0.99", "0.01014", "exact", 15),  # both halves over-damped: the trace form
+    (1, "0.99", "0.02", "exact", 40),
+    (2, "0.99", "1e6", "paper", 40),
+    (6, "0.999", "1e6", "exact", 40),
+]
+
+
+@pytest.mark.parametrize("n, m, Q, damping, digits", CASES)
+def test_edges_against_the_monodromy(n, m, Q, damping, digits):
+    b = boundary(n, m, Q=Q, damping=damping, digits=digits)
+    assert b.exists and b.certified
+    j = b.as_json()
+    dps = digits + 30
+    with mpmath.workdps(dps):
+        lo, hi, err = (mpmath.mpf(j[k]) for k in ("lower", "upper", "error_bound"))
+        assert hi - lo > 8 * err
+        for edge, inward in ((lo, 1), (hi, -1)):
+            for k in (1, 3):
+                assert _excess(edge + inward * k * err, m, Q, damping, dps) > 0
+                assert _excess(edge - inward * k * err, m, Q, damping, dps) < 0
+        assert _excess((lo + hi) / 2, m, Q, damping, dps) > 0
+
+
+def test_no_interval_just_below_a_threshold():
+    # order 3 at m = 0.9, exact model: the threshold is Q = 0.44505...; 0.445 is below it
+    # (its bracket 0.635 < T < 0.945 borders order 2's, whose multiplier is positive: the scan
+    # keeps the negative multipliers of the odd orders)
+    b = boundary(3, "0.9", Q="0.445", damping="exact", digits=15)
+    assert not b.exists
+    worst = -1
+    with mpmath.workdps(30):
+        for k in range(201):
+            T = mpmath.mpf("0.635") + k * mpmath.mpf("0.00155")
+            mu = multipliers_mp(damped_monodromy_mp(T, mpmath.mpf("0.9"), mpmath.mpf("0.445")))[0]
+            if mpmath.re(mu) < 0:
+                worst = max(worst, abs(mu) - 1)
+    assert -0.01 < worst < 0  # close to the threshold, yet below it
+
+
+def test_over_damped_window_past_double_range_is_refused(capsys):
+    # both halves over-damped at m = 0.999: the window's tail bound lies where exp(2 zeta) has no
+    # double; the engine says it cannot decide instead of failing
+    code, out, err = run_cli(
+        capsys, "boundary", "--order", "1", "--m", "0.999", "--Q", "0.0010018469107664705"
+    )
+    assert code == 2 and out == ""
+    assert err.startswith("paramres: error: ") and "not decided" in err
+    assert "Traceback" not in err
+
+
+def test_paper_model_past_double_range_is_refused(capsys):
+    # the paper's model at m = 1 - 1e-6 and Q near 1e-6: the float stage's values of the normal
+    # form overflow; the engine says it cannot decide instead of failing
+    code, out, err = run_cli(
+        capsys,
+        "boundary",
+        "--order",
+        "1",
+        "--m",
+        "0.999999",
+        "--Q",
+        "1.0669502220605025e-06",
+        "--damping",
+        "paper",
+    )
+    assert code == 2 and out == ""
+    assert err.startswith("paramres: error: ") and "not decided" in err
+
+
+def test_table_past_double_range_is_refused(capsys):
+    # the double grid's trace form at the same point: the certified route is asked, and refuses
+    code, out, err = run_cli(
+        capsys, "table", "--orders", "1", "--m", "0.999:0.999:0.1", "--Q", "0.0010018469107664705"
+    )
+    assert code == 2
+    assert err.startswith("paramres: error: ") and "not decided" in err
