@@ -112,3 +112,24 @@ def test_table_past_double_range_is_refused(capsys):
     )
     assert code == 2
     assert err.startswith("paramres: error: ") and "not decided" in err
+
+
+@pytest.mark.parametrize("kappa", ["-1000", "-3", "-0.1", "0.1", "3", "1000"])
+@pytest.mark.parametrize("nu1, nu2", [("0.05", "0.9"), ("0.5", "0.5"), ("0.99", "0.005")])
+def test_the_tail_bound_of_the_overdamped_window_holds(kappa, nu1, nu2):
+    """Beyond the end the window's proof accepts (both halves over-damped, either sign sigma of
+    the multiplier, either sign of kappa), ``D < 0``: checked in mpmath at 40 digits from the
+    bound's own end ``zeta*`` (where ``max(2, 1 + k) exp(-a zeta*) = 1``) to ``zeta* + 40/a``,
+    on ``D = sigma (2 C1 C2 - kappa S1 S2) - 2 cosh(2 zeta)`` with ``C = cosh(nu zeta)``, ``S =
+    sinh(nu zeta)/nu`` (the over-damped half, :func:`verify.derived.half_period_forms`)."""
+    with mpmath.workdps(40):
+        k_, n1, n2 = mpmath.mpf(kappa), mpmath.mpf(nu1), mpmath.mpf(nu2)
+        a = 2 - n1 - n2
+        k = abs(k_) / (2 * n1 * n2)
+        start = mpmath.log(max(2, 1 + k)) / a  # the proof's condition holds just beyond
+        for i in range(1, 401):
+            z = start * (1 + mpmath.mpf(i) / 10**6) + i * (40 / a) / 400
+            C1, C2 = mpmath.cosh(n1 * z), mpmath.cosh(n2 * z)
+            S1, S2 = mpmath.sinh(n1 * z) / n1, mpmath.sinh(n2 * z) / n2
+            for sigma in (1, -1):
+                assert sigma * (2 * C1 * C2 - k_ * S1 * S2) - 2 * mpmath.cosh(2 * z) < 0

@@ -68,8 +68,9 @@ def trace_window_ends(n: int, regimes, T, *, bits: int = 60):
     Half 2 under-damped: ``Phi(zeta) = n pi -+ pi/2`` (``Phi`` increases strictly), the upper end
     capped where ``(2 + |kappa| zeta^2) exp(-(2 - nu1) zeta) < 1/2`` (``D < 0`` beyond).  Both
     halves critically or over-damped: only ``n = 1``, from the zero of ``P = 2 C1 C2 - kappa S1 S2``
-    to a point beyond which ``D < 0`` is guaranteed by ``|kappa| zeta^2 exp(-(2 - nu1 - nu2) zeta) <
-    1`` or, both halves over-damped, by ``|kappa|/(4 nu1 nu2) exp(-(2 - nu1 - nu2) zeta) < 1``.
+    to a point beyond which ``D < 0`` is guaranteed by ``(2 + |kappa| zeta^2) exp(-(2 - nu1 - nu2)
+    zeta) < 1`` (``zeta (2 - nu1 - nu2) > 2``) or, both halves over-damped, by ``max(2, 1 +
+    |kappa|/(2 nu1 nu2)) exp(-(2 - nu1 - nu2) zeta) < 1``.
     """
     r1, r2 = regimes
     kappa, nu1, nu2 = float(T.kappa), float(T.nu1), float(T.nu2)
@@ -117,10 +118,14 @@ def trace_window_ends(n: int, regimes, T, *, bits: int = 60):
     while abs(kappa) * zend * zend * math.exp(-a * zend) >= 0.5:
         zend *= 1.5
     if nu1 > 0 and nu2 > 0:
-        # both halves over-damped: S_i <= exp(nu_i zeta)/(2 nu_i) gives D < 0 once
-        # |kappa|/(4 nu1 nu2) exp(-a zeta) < 1, far sooner when the damping is strong (a small),
-        # where the bound above reaches zeta at which cosh(2 zeta) overflows
-        zend = min(zend, max(math.log(abs(kappa) / (2 * nu1 * nu2)) / a, 1.0))
+        # both halves over-damped: 2 C1 C2 + |kappa| S1 S2 = (1 + k) cosh(s zeta) + (1 - k)
+        # cosh(d zeta) <= max(2, 1 + k) cosh(s zeta) (k = |kappa|/(2 nu1 nu2), s = nu1 + nu2,
+        # d = nu1 - nu2), and 2 cosh(2 zeta) >= exp(a zeta) cosh(s zeta): D < 0 once max(2, 1 + k)
+        # exp(-a zeta) < 1 (:func:`verify.hump._prove_window`), here with a factor 2 to spare --
+        # far sooner when the damping is strong (a small), where the bound above reaches zeta at
+        # which cosh(2 zeta) overflows
+        k = abs(kappa) / (2 * nu1 * nu2)
+        zend = min(zend, max(math.log(2 * max(2.0, 1 + k)) / a, 1.0))
     if P(zend) >= 0:
         return None
     lo, hi = 0.0, zend

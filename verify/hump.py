@@ -1201,12 +1201,19 @@ def _prove_window(n, regimes, P, za, zb, m_box=None, m=None, Q=None) -> bool:
         form = trace_indicator(*regimes).compiled("arb", 0)
         z1 = ball(za)
         P1 = form(z1, 1, p.kappa, p.nu1, p.nu2) + 2 * (2 * z1).cosh()
+        # D < 0 beyond zb: sigma (2 C1 C2 - kappa S1 S2) <= C1 C2 (2 + |kappa| zeta^2) (S_i <=
+        # zeta C_i) with C1 C2 <= cosh(s zeta), s = nu1 + nu2, and 2 cosh(2 zeta) >= exp(a zeta)
+        # cosh(s zeta): D < 0 where (2 + |kappa| zeta^2) exp(-a zeta) < 1, and for every larger
+        # zeta once a zeta > 2 (the bound then decreases)
         a = 2 - p.nu1 - p.nu2
         z2 = ball(zb)
-        tail = abs(p.kappa) * z2 * z2 * (-a * z2).exp()
+        tail = (2 + abs(p.kappa) * z2 * z2) * (-a * z2).exp()
         beyond = bool(tail < 1 and z2 * a > 2)
-        if not beyond and r1 == "over" and r2 == "over":  # S_i <= exp(nu_i zeta)/(2 nu_i)
-            beyond = bool(p.nu1 > 0 and p.nu2 > 0 and a > 0) and bool(
-                abs(p.kappa) / (4 * p.nu1 * p.nu2) * (-a * z2).exp() < 1
-            )
+        if not beyond and r1 == "over" and r2 == "over":
+            # both over-damped: 2 C1 C2 + |kappa| S1 S2 = (1 + k) cosh(s zeta) + (1 - k)
+            # cosh(d zeta) <= max(2, 1 + k) cosh(s zeta), k = |kappa|/(2 nu1 nu2): D < 0 where
+            # max(2, 1 + k) exp(-a zeta) < 1, and beyond (a > 0)
+            k = abs(p.kappa) / (2 * p.nu1 * p.nu2)
+            top = k + 1 if k + 1 > 2 else arb(2) if k + 1 < 2 else (k + 1).union(arb(2))
+            beyond = bool(p.nu1 > 0 and p.nu2 > 0 and a > 0) and bool(top * (-a * z2).exp() < 1)
         return bool(P1 > 0) and beyond
