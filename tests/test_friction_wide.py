@@ -112,6 +112,9 @@ def test_table_past_double_range_is_refused(capsys):
     )
     assert code == 2
     assert err.startswith("paramres: error: ") and "not decided" in err
+    # m = 0.999 lies inside the double grid's range: the refusal does not say it lies outside
+    assert "outside the double grid" not in err
+    assert "the double grid cannot bound its error there" in err
 
 
 @pytest.mark.parametrize("kappa", ["-1000", "-3", "-0.1", "0.1", "3", "1000"])

@@ -1871,7 +1871,9 @@ def boundary_grid(orders, m, *, Q=None, damping="exact", system="pendulum", duty
                 doubt[i, j] = False
         todo = list(zip(*np.nonzero(doubt), strict=True))
     for i, j in todo:
-        out[i, :, j] = _certified_point(orders[i], dep.exact(j), Qx, damping, sysv)
+        out[i, :, j] = _certified_point(
+            orders[i], dep.exact(j), Qx, damping, sysv, outside=not served[j]
+        )
     return out[..., 0] if scalar else out
 
 
@@ -1996,9 +1998,12 @@ def _arb_indicator(odd: int):
 _ARB = backend("arb")
 
 
-def _certified_point(n: int, m: Fraction, Q, damping: str, system=None) -> tuple[float, float]:
+def _certified_point(
+    n: int, m: Fraction, Q, damping: str, system=None, outside: bool = True
+) -> tuple[float, float]:
     """Both edges from the certified route (NaN if the interval does not exist), at enough digits
-    for a double: 20, more where the route asks for more."""
+    for a double: 20, more where the route asks for more; for a depth outside the double grid
+    (``outside``) or one whose error the double grid cannot bound (the refusal says which)."""
     from .certified import boundary
     from .certify import CertificationError
 
@@ -2011,9 +2016,14 @@ def _certified_point(n: int, m: Fraction, Q, damping: str, system=None) -> tuple
             err = exc
             continue
         return (float(b.lower), float(b.upper)) if b.exists else (math.nan, math.nan)
+    where = (
+        "outside the double grid (1 - m >= 2**-53, m >= 2**-1022)"
+        if outside
+        else "the double grid cannot bound its error there"
+    )
     raise InputError(
-        f"depth m = {m} (1 - m = {float(1 - m):.3g}, order {n}): outside the double grid "
-        f"(1 - m >= 2**-53, m >= 2**-1022) and the certified route could not enclose it ({err})"
+        f"depth m = {m} (1 - m = {float(1 - m):.3g}, order {n}): {where}, and the certified "
+        f"route could not enclose it ({err})"
     )
 
 
