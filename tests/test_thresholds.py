@@ -1,6 +1,6 @@
 """Friction: thresholds (tangency) and near-threshold edges in both damping models, checked against
 the printed formulas (38), (40), (43), (45), section 6, and against high-precision numbers from a
-period map built in this file (independent of analytic/)."""
+period map of :mod:`tests.pendulum_monodromy` (pure mpmath, independent of analytic/)."""
 
 from __future__ import annotations
 
@@ -22,6 +22,7 @@ from analytic.thresholds import (
     threshold_series,
     tuning_threshold,
 )
+from tests.pendulum_monodromy import damped_monodromy_mp
 from verify.inputs import InputError
 
 m, Q, pi, n = S.m, S.Q, sp.pi, S.n
@@ -32,30 +33,10 @@ s = sp.Symbol("s", positive=True)
 
 
 def det_condition(T, mm, QQ, sigma, model):
-    """``det(M - sigma I)`` of the period map with friction, built here: ``paper``: exp(-gamma t)
-    times the undamped half-period map (eqs. 28-30); ``exact``: the damped oscillator."""
-    g = mpmath.pi / QQ
-    w1 = 2 * mpmath.pi / mpmath.sqrt(1 + mm)
-    w2 = 2 * mpmath.pi / mpmath.sqrt(1 - mm)
-
-    def U(w, t):
-        if model == "paper":
-            c, sn = mpmath.cos(w * t), mpmath.sin(w * t)
-            return mpmath.exp(-g * t) * mpmath.matrix([[c, sn / w], [-w * sn, c]])
-        W = mpmath.sqrt(w**2 - g**2)
-        c, sn = mpmath.cos(W * t), mpmath.sin(W * t)
-        return mpmath.exp(-g * t) * mpmath.matrix(
-            [[c + g / W * sn, sn / W], [-(W**2 + g**2) / W * sn, c - g / W * sn]]
-        )
-
-    k = ((1 + mm) / (1 - mm)) ** 2
-    M = (
-        mpmath.matrix([[1, 0], [0, 1 / k]])
-        * U(w2, T / 2)
-        * mpmath.matrix([[1, 0], [0, k]])
-        * U(w1, T / 2)
-    )
-    M = M - sigma * mpmath.eye(2)
+    """``det(M - sigma I)`` of the period map with friction: ``paper``: exp(-gamma t) times the
+    undamped half-period map (eqs. 28-30); ``exact``: the damped oscillator (the pure-mpmath
+    reference :func:`tests.pendulum_monodromy.damped_monodromy_mp`)."""
+    M = damped_monodromy_mp(T, mm, QQ, model) - sigma * mpmath.eye(2)
     return M[0, 0] * M[1, 1] - M[0, 1] * M[1, 0]
 
 

@@ -276,18 +276,17 @@ def wide_float_edges(n: int, r: float, r2: float, u: float, beta: float, g: floa
         fb, db = at_b[0], at_b[1]
         if not (fb < 0 < -db and -fb < -reach * db):
             at_b = None
-    if at_a is not None:
-        lo = _halley_edge(d012, a, mid, a, True, at_a, args)
-    else:
-        x0 = mid + r0
-        if not a < x0 < mid:
-            x0 = 0.5 * (a + mid)
-        lo = _halley_edge(d012, a, mid, x0, True, d012(x0, *args), args)
-    if at_b is not None:
-        hi = _halley_edge(d012, mid, b, b, False, at_b, args)
-    else:
-        x0 = mid + r1
-        if not mid < x0 < b:
-            x0 = 0.5 * (mid + b)
-        hi = _halley_edge(d012, mid, b, x0, False, d012(x0, *args), args)
+    lo = _edge_from(d012, args, a, mid, a, at_a, mid + r0, True)
+    hi = _edge_from(d012, args, mid, b, b, at_b, mid + r1, False)
     return a, b, mid, dm, lo, hi, convex
+
+
+def _edge_from(d012, args: tuple, u: float, v: float, end: float, at_end, x0: float, inc: bool):
+    """The edge in ``[u, v]`` by :func:`_halley_edge`: from the bracket's ``end`` where ``D``
+    there (``at_end``) was kept as a start, else from the parabola's root ``x0`` (the middle of
+    ``[u, v]`` where that falls outside)."""
+    if at_end is not None:
+        return _halley_edge(d012, u, v, end, inc, at_end, args)
+    if not u < x0 < v:
+        x0 = 0.5 * (u + v)
+    return _halley_edge(d012, u, v, x0, inc, d012(x0, *args), args)
