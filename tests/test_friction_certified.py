@@ -90,6 +90,67 @@ def test_unimodal_shape_tests_no_slope_on_a_piece_with_both_zeros():
     assert [float(x) for x in calls] == [-1.0, -1.5, 1.0, 1.5]
 
 
+def _counting(f, calls, name):
+    def g(x):
+        calls.append((name, float(x.mid())))
+        return f(x)
+
+    return g
+
+
+def test_unimodal_direct_end_pieces():
+    """``D = cos(x) - 1/2`` on ``[-2.4, 2.4]`` from three pieces, ``D`` convex at both ends: with
+    ``direct=3`` each end piece (``[-2.4, -0.8]`` holding the zero ``-pi/3``, and its mirror) is
+    decided by ``D'`` on the piece itself, one enclosure each (``-sin`` keeps its sign there:
+    ``D'`` of the ball ``[-2.4, -0.8]`` is positive), and the middle piece is a cap: three
+    enclosures in all, against five without (``-D''/2`` and ``D'`` at the midpoint on each end
+    piece)."""
+    one = arb(1)
+
+    def run(direct):
+        calls = []
+        ok = hump._unimodal(
+            arb(-2.4), arb(2.4), _root(-math.pi / 3).ball, _root(math.pi / 3).ball,
+            _counting(lambda x: x.cos() / 2, calls, "bend"), None,
+            _counting(lambda x: -x.sin(), calls, "dD"),
+            _counting(lambda x: x.cos() - one / 2, calls, "D"),
+            pieces=3, direct=direct,
+        )  # fmt: skip
+        return ok, calls
+
+    ok, calls = run(3)
+    assert ok
+    assert [c[0] for c in calls] == ["dD", "bend", "dD"]
+    assert calls[0][1] == pytest.approx(-1.6) and calls[2][1] == pytest.approx(1.6)
+    ok0, calls0 = run(0)
+    assert ok0 and len(calls0) == 5
+    ok1, calls1 = run(1)  # the left end alone
+    assert ok1 and [c[0] for c in calls1] == ["dD", "bend", "bend", "dD"]
+
+
+def test_unimodal_direct_test_that_fails_falls_back():
+    """Where ``D'`` on an end piece does not keep its sign, the piece is tested as any other: the
+    shape is still proven (``D = cos(x) - 1/2`` on ``[-2.4, 2.4]`` cut in three, the end pieces'
+    ``D'`` replaced by a ball holding 0 on whole pieces) -- and a false shape is never accepted
+    (``cos`` on ``[-7, 7]``, direct tests at both ends)."""
+    one = arb(1)
+
+    def loose_dD(x):  # D' on a wide ball: widened to hold 0 (the test cannot decide)
+        d = -x.sin()
+        return d.union(arb(0)) if x.rad() > 0.1 else d
+
+    assert hump._unimodal(
+        arb(-2.4), arb(2.4), _root(-math.pi / 3).ball, _root(math.pi / 3).ball,
+        lambda x: x.cos() / 2, None, loose_dD, lambda x: x.cos() - one / 2,
+        pieces=3, direct=3,
+    )  # fmt: skip
+    assert not hump._unimodal(
+        arb(-7.0), arb(7.0), _root(-math.pi / 2).ball, _root(math.pi / 2).ball,
+        lambda x: x.cos() / 2, None, lambda x: -x.sin(), lambda x: x.cos(),
+        pieces=3, direct=3,
+    )  # fmt: skip
+
+
 def test_unimodal_shape_refuses_bad_roots():
     """The same zero twice, or a zero outside the bracket: not proven."""
     h = _hump_of(lambda x: 1 - x * x, lambda x: -2 * x, lambda x: x * 0 - 2, -2.0, 2.0)

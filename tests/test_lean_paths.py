@@ -280,6 +280,7 @@ def test_wide_bracket_starts_from_pieces(monkeypatch, m, Q):
     assert len(calls) == 1
     a, kw = calls[0]
     assert kw["pieces"] == 3
+    assert kw["direct"] in (1, 2, 3)  # the ends where D is convex: D' tested there first
 
     def counted(pieces):
         n = [0]

@@ -237,10 +237,12 @@ WIDE = 1.0
 
 
 def wide_float_edges(n: int, r: float, r2: float, u: float, beta: float, g: float) -> tuple:
-    """:func:`float_edges` and a seventh field, ``convex``: ``True`` where the bracket is wide
-    (:data:`WIDE`) and ``D'' >= 0`` at one of its ends in floats -- there no test of concavity
-    can succeed on the whole bracket or on a piece holding an end (what
-    :func:`verify.hump._unimodal` needs to know to start from smaller pieces).
+    """:func:`float_edges` and a seventh field, ``convex``: where the bracket is wide
+    (:data:`WIDE`), which of its ends have ``D'' >= 0`` in floats -- ``1`` the left, ``2`` the
+    right, ``3`` both, ``0`` neither (or a narrow bracket).  There no test of concavity can
+    succeed on the whole bracket or on a piece holding such an end (what
+    :func:`verify.hump._unimodal` needs to know to start from smaller pieces, and where to test
+    ``D'`` first).
 
     On a wide bracket, ``D`` and its derivatives at the two ends start the edges: an edge whose
     Newton step from the end (``-D/D'`` with ``D < 0 < D'`` at ``a``, ``D'`` of the other sign at
@@ -254,7 +256,7 @@ def wide_float_edges(n: int, r: float, r2: float, u: float, beta: float, g: floa
     mid = 0.5 * (a + b)
     dm, d1, d2 = d012(mid, *args)
     if not (dm > 0 and d2 < 0 and a < mid < b):
-        return (*float_stage(n, r, r2, u, beta, g), False)
+        return (*float_stage(n, r, r2, u, beta, g), 0)
     # the parabola dm + d1 t + d2 t^2/2: one root either side of t = 0 (dm > 0 > d2)
     disc = math.sqrt(d1 * d1 - 2.0 * d2 * dm)
     q = -0.5 * (d1 + math.copysign(disc, d1))  # the roots q/(d2/2) and dm/q, without cancellation
@@ -264,11 +266,11 @@ def wide_float_edges(n: int, r: float, r2: float, u: float, beta: float, g: floa
             r0, r1 = r1, r0
     else:
         r0, r1 = -math.inf, math.inf
-    convex = False
+    convex = 0
     at_a = at_b = None
     if b - a > WIDE:
         at_a, at_b = d012(a, *args), d012(b, *args)
-        convex = not (at_a[2] < 0 and at_b[2] < 0)  # (NaN: convex, the safe side)
+        convex = (not at_a[2] < 0) + 2 * (not at_b[2] < 0)  # (NaN: convex, the safe side)
         reach = 0.125 * (mid - a)
         fa, da = at_a[0], at_a[1]
         if not (fa < 0 < da and -fa < reach * da):

@@ -138,6 +138,7 @@ def _unimodal(
     budget: int = 16,
     args: tuple = (),
     pieces: int = 1,
+    direct: int = 0,
 ) -> bool:
     """The shape from unimodality, at the working precision: the two root balls ``lo``, ``hi``
     disjoint and inside ``(a, b)`` (exact ends), and ``[a, b]`` cut (first into ``pieces`` equal
@@ -151,7 +152,11 @@ def _unimodal(
     ``lo`` or right of ``hi``, where the ``neg`` pieces must lie), where the ``neg`` pieces are at
     the two ends only (the others make one interval, the run) and no ``up`` piece lies right of
     a ``down`` one.  A piece that holds both root balls holds a zero of ``D'`` (Rolle) and is not
-    tested for ``up`` or ``down``.  The functions are called as ``f(X, *args)``.
+    tested for ``up`` or ``down``.  An end piece of the first cut (``pieces > 1``) named by
+    ``direct`` (``1`` the left, ``2`` the right, ``3`` both: where the float stage sees ``D``
+    convex at that end, so that no ``cap`` test can pass there) is tested for ``up`` or
+    ``down`` first by ``D'`` on the piece itself (``dD(X)``: one enclosure), then as the others
+    where that does not decide the sign.  The functions are called as ``f(X, *args)``.
 
     On the run, ``D' > 0`` up to the last ``up`` piece (a run of ``cap`` pieces before an ``up``
     one has ``D'`` decreasing to a positive value), ``D' < 0`` from the first ``down`` piece on, and
@@ -169,18 +174,23 @@ def _unimodal(
             if not fa < c < float(v):
                 return False  # pragma: no cover - guard (a bracket of a few floats)
             u = arb(c)
-            stack.append((u, v))
+            stack.append((u, v, v is b and direct & 2))
             v = u
-        stack.append((a, v))
+        stack.append((a, v, direct & 1))
     else:
-        stack = [(a, b)]
+        stack = [(a, b, False)]
     count, labels = 0, []
     while stack:  # left to right: the left half is pushed last
-        u, v = stack.pop()
+        u, v, direct = stack.pop()
         count += 1
         if count > budget:
             return False
         X = u.union(v)  # u, v exact: a ball holding [u, v]
+        if direct and not (u < lo and hi < v):  # an end piece: D' on X itself
+            d1 = dD(X, *args)
+            if d1 < 0 or d1 > 0:
+                labels.append("down" if d1 < 0 else "up")
+                continue
         if bend is not None:
             d2 = bend(X, *args)
             if d2 > 0:
@@ -202,8 +212,8 @@ def _unimodal(
         if (v < lo or hi < u) and D(X, *args) < 0:  # (elsewhere a neg piece fails the shape)
             labels.append("neg")
             continue
-        stack.append((mid, v))
-        stack.append((u, mid))
+        stack.append((mid, v, False))
+        stack.append((u, mid, False))
     while labels and labels[0] == "neg":
         labels.pop(0)
     while labels and labels[-1] == "neg":
@@ -872,7 +882,9 @@ def _lean_normal(req: Request, bits: int) -> Boundary | None:
                 N2 = N
         # the shape: unimodality on [a, b] at 64 bits (_unimodal_shape's test, on args(64))
         ctx.prec = 64
-        if not _unimodal(A, B, N1, N2, Bend, D2, D1, D0, args=low, pieces=3 if convex else 1):
+        if not _unimodal(
+            A, B, N1, N2, Bend, D2, D1, D0, args=low, pieces=3 if convex else 1, direct=convex
+        ):
             return None
         # edges_result at the roots' precision: the parameters as they are at the proof's
         # precision, else rounded from there (AtPrecision with rounded=True)
