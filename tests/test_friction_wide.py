@@ -136,3 +136,99 @@ def test_the_tail_bound_of_the_overdamped_window_holds(kappa, nu1, nu2):
             S1, S2 = mpmath.sinh(n1 * z) / n1, mpmath.sinh(n2 * z) / n2
             for sigma in (1, -1):
                 assert sigma * (2 * C1 * C2 - k_ * S1 * S2) - 2 * mpmath.cosh(2 * z) < 0
+
+
+@pytest.mark.parametrize("k", ["-50", "-1.5", "-1", "-0.3", "0", "1", "2.5", "3"])
+@pytest.mark.parametrize(
+    "nu1, nu2", [("0.05", "0.9"), ("0.5", "0.5"), ("0.9999", "0.98"), ("0.99", "0.005")]
+)
+def test_overdamped_order_one_has_no_interval_where_kappa_is_small(k, nu1, nu2):
+    """:func:`verify.hump.overdamped_no_interval`: with both halves over-damped and ``kappa <= 6
+    nu1 nu2`` (``k = kappa/(2 nu1 nu2) <= 3``), ``D < 0`` for order 1 (``sigma = -1``) at every
+    ``zeta``: checked in mpmath at 40 digits on ``D = -(2 C1 C2 - kappa S1 S2) - 2 cosh(2 zeta)``
+    over ``zeta`` from 1e-6 to 200 (a geometric grid), and the function says so for these
+    parameters (as balls)."""
+    from flint import arb
+
+    from verify.hump import overdamped_no_interval
+    from verify.params import TraceParams
+
+    with mpmath.workdps(40):
+        n1, n2 = mpmath.mpf(nu1), mpmath.mpf(nu2)
+        kap = mpmath.mpf(k) * 2 * n1 * n2
+        for i in range(600):
+            z = mpmath.mpf(10) ** (-6 + 8.3 * i / 599)
+            C1, C2 = mpmath.cosh(n1 * z), mpmath.cosh(n2 * z)
+            S1, S2 = mpmath.sinh(n1 * z) / n1, mpmath.sinh(n2 * z) / n2
+            assert -(2 * C1 * C2 - kap * S1 * S2) - 2 * mpmath.cosh(2 * z) < 0
+    if k != "3":  # (at k = 3 exactly the balls' comparison is not decided)
+        p = TraceParams(arb(mpmath.nstr(kap, 30)), arb(nu1), arb(nu2), None, None)
+        assert overdamped_no_interval(p)
+
+
+def test_overdamped_criterion_is_not_met_where_an_interval_exists():
+    """At ``m = 0.99``, ``Q = 0.0102`` the order-1 interval exists (``|mu|max > 1`` inside it, by
+    the reference monodromy) and ``k = kappa/(2 nu1 nu2)`` is about 3.2: the criterion does not
+    hold there; a ``k`` just above 3 with ``D > 0`` somewhere exists, so the bound 3 is not far
+    from the truth."""
+    from fractions import Fraction
+
+    from flint import ctx
+
+    from verify.derived import backend
+    from verify.hump import overdamped_no_interval
+    from verify.params import trace_params
+
+    b = boundary(1, "0.99", Q="0.0102", digits=15)
+    assert b.exists
+    j = b.as_json()
+    mid = (mpmath.mpf(j["lower"]) + mpmath.mpf(j["upper"])) / 2
+    assert _excess(mpmath.nstr(mid, 20), "0.99", "0.0102", "exact", 40) > 0
+    old = ctx.prec
+    ctx.prec = 64
+    try:
+        assert not overdamped_no_interval(
+            trace_params(Fraction(99, 100), Fraction(51, 5000), backend("arb"))
+        )
+    finally:
+        ctx.prec = old
+
+
+#: depths where both halves are over-damped at Q = 0.0102 (order 1): up to m = 0.9897 the
+#: criterion holds (the trace form's maximum is below 0); m = 0.985 to 0.9897 were refused before
+#: as "too close to a threshold" (the threshold lies between 0.9897 and 0.99)
+OVERDAMPED_NONE = ["0.01", "0.5", "0.985", "0.989", "0.9897"]
+
+
+@pytest.mark.parametrize("m", OVERDAMPED_NONE)
+def test_overdamped_no_interval_against_the_monodromy(m):
+    """``boundary`` finds no interval of order 1, certified, and the reference monodromy agrees:
+    ``|mu|max < 1`` at 300 periods from ``T/T0 = 1e-3`` to 30 (a geometric grid)."""
+    b = boundary(1, m, Q="0.0102", digits=15)
+    assert not b.exists and b.certified
+    assert any("kappa <= 6 nu1 nu2" in note for note in b.notes)
+    for i in range(300):
+        T = mpmath.nstr(mpmath.mpf(10) ** (-3 + 4.5 * i / 299), 15)
+        assert _excess(T, m, "0.0102", "exact", 30) < 0
+
+
+def test_existence_decides_the_overdamped_depths():
+    """``existence --order 1 --Q 0.0102`` left every depth undecided; now no depth below ``m =
+    0.98`` is undecided, and what it finds lies where the reference has ``|mu|max > 1``."""
+    from fractions import Fraction
+
+    from verify.existence import existence
+
+    ex = existence(1, "0.0102", digits=15)
+    assert all(lo >= Fraction(98, 100) for lo, _ in ex.undecided)
+    assert all(sign == -1 for _, hi, sign in ex.segments if hi <= Fraction(98, 100))
+    found = [lo for lo, _, sign in ex.segments if sign == 1]
+    assert found
+    for lo in found:
+        assert lo > Fraction(98, 100)
+        m = mpmath.nstr(mpmath.mpf(lo.numerator) / lo.denominator, 20)
+        b = boundary(1, m, Q="0.0102", digits=15)
+        assert b.exists
+        j = b.as_json()
+        mid = (mpmath.mpf(j["lower"]) + mpmath.mpf(j["upper"])) / 2
+        assert _excess(mpmath.nstr(mid, 20), m, "0.0102", "exact", 40) > 0

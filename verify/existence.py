@@ -636,6 +636,17 @@ def _decide(
     kind, regimes = form
     if kind != "normal" and not system.is_paper:
         return None
+    if kind != "normal" and n == 1 and tuple(regimes) == ("over", "over"):
+        # both halves over-damped at every depth of the range (u1 falls and u2 rises with m: the
+        # ends and the middle decide it): no interval at any period where kappa <= 6 nu1 nu2
+        from .hump import overdamped_no_interval
+
+        with ctx.workprec(64):
+            try:
+                if overdamped_no_interval(_box_trace_params(lo, hi, Q)()):
+                    return -1
+            except (ValueError, ZeroDivisionError, ArithmeticError):  # pragma: no cover - guard
+                pass
     try:
         if kind == "normal":
             h = hump_box(n, lo, hi, Q, damping, float_stage=fl, system=system)

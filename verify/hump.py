@@ -1028,6 +1028,18 @@ def hump_trace(
     regimes must be those of every depth in it)."""
     from .float_roots import damped_trace, trace_window_ends
 
+    if m_box is None and n == 1 and tuple(regimes) == ("over", "over"):
+        old = ctx.prec
+        ctx.prec = 64
+        try:
+            none = overdamped_no_interval(trace_params(m, Q, _ARB, system))
+        finally:
+            ctx.prec = old
+        if none:
+            return None, (
+                "both halves are over-damped, with kappa <= 6 nu1 nu2 in the trace form: D < 0 "
+                "at every period"
+            )
     Tf = trace_params(m, Q, _MATH, system)
     try:
         window = window or trace_window_ends(n, regimes, Tf)
@@ -1173,6 +1185,31 @@ def trace_phase(regimes, P, z, m_box=None, m=None, Q=None) -> arb:
         jet = phase(trace_params(Jet(depth_ball(m_box), 1), Jet(Qb), _ARB))
         slope = jet.d if isinstance(jet, Jet) else 0
         return mid + slope * (depth_ball(m_box) - arb(m.numerator) / m.denominator)
+
+
+def overdamped_no_interval(p) -> bool:
+    """Order 1 has no interval at any period: both halves over-damped (``nu1, nu2 > 0``, the
+    trace form's ``C_i = cosh(nu_i zeta)``, ``S_i = sinh(nu_i zeta)/nu_i``) and ``kappa <= 6 nu1
+    nu2``; ``p`` holds the balls ``kappa``, ``nu1``, ``nu2`` (of one depth, or of every depth of
+    a range).  ``s = nu1 + nu2 < 2`` holds by the model, not tested here (over the balls of a
+    range of depths it would often not be decided): an over-damped half has ``nu_i =
+    sqrt(gamma^2 - omega_i^2)/gamma < 1`` (``omega_i^2 > 0``), scaled by its share of the period
+    (``2 D`` and ``2 (1 - D)``, :func:`verify.system_params.trace_values`), which sum to 2.
+
+    With ``sigma = -1`` (order 1), ``s = nu1 + nu2``, ``d = nu1 - nu2``, ``k = kappa/(2 nu1
+    nu2)`` and ``C1 C2 = (cosh(s zeta) + cosh(d zeta))/2``, ``nu1 nu2 S1 S2 = (cosh(s zeta) -
+    cosh(d zeta))/2``::
+
+        D = -(2 C1 C2 - kappa S1 S2) - 2 cosh(2 zeta)
+          = (k - 1) cosh(s zeta) - (k + 1) cosh(d zeta) - 2 cosh(2 zeta).
+
+    For ``-1 <= k <= 3``: ``(k - 1) cosh(s zeta) <= 2 cosh(s zeta) <= 2 cosh(2 zeta)`` (``k - 1
+    <= 2``; ``0 < s < 2``, ``zeta >= 0``), so ``D <= -(k + 1) cosh(d zeta)``, negative for ``k >
+    -1``; and ``D = -2 cosh(s zeta) - 2 cosh(2 zeta)`` for ``k = -1``.  For ``k < -1``: ``-(k +
+    1) cosh(d zeta) <= -(k + 1) cosh(s zeta)`` (``|d| <= s``), so ``D <= -2 cosh(s zeta) - 2
+    cosh(2 zeta)``.  Hence ``D < 0`` for every ``zeta >= 0``: no interval of order 1."""
+    nu1, nu2, kappa = p.nu1, p.nu2, p.kappa
+    return bool(nu1 > 0 and nu2 > 0 and kappa <= 6 * nu1 * nu2)
 
 
 def prove_no_window(n: int, regimes, P, ztail: float, m_box=None, m=None, Q=None) -> bool:
