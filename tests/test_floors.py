@@ -154,3 +154,49 @@ def test_series_scene_clears_caches_that_exist():
         for f in funcs:
             assert callable(getattr(getattr(module, f), "cache_clear", None)), (name, f)
     mod._clear()
+
+
+def test_the_table_scene_hands_out_results_as_from_balls_builds_them(monkeypatch):
+    """The table scene's solver hands out, at every call, new results in exactly the state
+    :func:`verify.result.from_balls` leaves them in (its class, its attributes; nothing printed or
+    converted yet): what printing keeps in one result does not reach the next call's."""
+    from reports.commands import table
+    from verify.result import from_balls
+
+    ours = _load("floor_table").scenes(True)[0]["ours"]
+    seen = []
+
+    def rows(orders, ms, Q, damping, digits, jobs, system):
+        out = []
+        for m in ms:
+            b = table._solver(
+                3,
+                m,
+                Q=Q,
+                damping=damping,
+                digits=digits,
+                system=system,
+                modulation="square",
+                switch_time=None,
+            )
+            seen.append((m, type(b), dict(vars(b))))
+            out.append((3, m, *b.printed()))
+        return out
+
+    monkeypatch.setattr(table, "rows", rows)
+    ours()
+    ours()
+    assert seen
+    keys = ("order", "m", "Q", "damping", "digits", "method", "regime", "system", "notes")
+    for m, cls, attributes in seen:
+        solved = boundary(3, m, digits=50)
+        built = from_balls(
+            solved._balls, certified=solved.certified, **{k: getattr(solved, k) for k in keys}
+        )
+        assert cls is type(built)
+        expected = dict(vars(built))
+        assert attributes.keys() == expected.keys()  # no text, bound or number kept yet
+        balls = attributes.pop("_balls")
+        for x, y in zip(balls, expected.pop("_balls"), strict=True):
+            assert x.mid().man_exp() == y.mid().man_exp() and x.rad().man_exp() == y.rad().man_exp()
+        assert attributes == expected

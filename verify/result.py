@@ -9,6 +9,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, field, fields
 from fractions import Fraction
+from operator import index as _index
 
 import mpmath
 from flint import fmpz
@@ -390,9 +391,9 @@ def _row_of_balls(balls, dps: int) -> tuple[tuple, str | None] | None:
     exact = False  # the bound in integers
     for x in balls:
         man, exp = x.mid().man_exp()
-        man = int(man)
+        man = _index(man)  # FLINT's integers as Python's (int() exactly, without its dispatch)
         f = float(x.rad())
-        exp = int(exp)
+        exp = _index(exp)
         if man > 0:
             mag = man
         elif man:
@@ -469,24 +470,30 @@ def _bound_between(least: float, most: float) -> str | None:
         return None
     most *= 1 + 1e-12  # above the number, and below it:
     least *= 1 - 1e-12
-    e = math.floor(math.log10(most))
-    q = most * _TEN_DOUBLES[1 - e]  # [10, 100) but for the logarithm's rounding
+    e = _floor(_log10(most))
+    t = _TEN_DOUBLES[1 - e]
+    q = most * t  # [10, 100) but for the logarithm's rounding
     if q < 10:
         e -= 1
-        q = most * _TEN_DOUBLES[1 - e]
+        t = _TEN_DOUBLES[1 - e]
+        q = most * t
     elif q >= 100:
         e += 1
-        q = most * _TEN_DOUBLES[1 - e]
-    c = math.ceil(q)  # the number times 10**(1-e) is at most c
-    if not (c > 10 and least * _TEN_DOUBLES[1 - e] > c - 1):  # and above c - 1 (and 10)
+        t = _TEN_DOUBLES[1 - e]
+        q = most * t
+    c = _ceil(q)  # the number times 10**(1-e) is at most c
+    if not (c > 10 and least * t > c - 1):  # and above c - 1 (and 10)
         return None
     if c >= 100:  # carried into the next power of ten (in (99, 100])
         return f"1.0e{e + 1}"
-    return f"{c // 10}.{c % 10}e{e}"
+    return f"{_TWO_DIGITS[c]}{e}"
 
 
 #: ``10.0**j`` correctly rounded, for ``|j| <= 300``
 _TEN_DOUBLES = {j: (float(10**j) if j >= 0 else 1 / 10**-j) for j in range(-300, 301)}
+#: the head of :func:`_bound_between`'s text by ``c``, the two digits (``"4.7e"`` for 47)
+_TWO_DIGITS = {c: f"{c // 10}.{c % 10}e" for c in range(11, 100)}
+_floor, _ceil, _log10 = math.floor, math.ceil, math.log10
 
 
 def _exact_bound(raw) -> str:
