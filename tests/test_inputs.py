@@ -105,3 +105,16 @@ def test_range():
     ):
         with pytest.raises(InputError):
             as_range(bad)
+
+
+def test_as_system_passes_a_system_through_as_analytic_system_does():
+    """A ``System`` with the default duty comes back as it is (the fast path), and with another
+    duty as :func:`analytic.system.system` makes it; both as that function gives them."""
+    from analytic.system import PAPER, custom, system
+    from verify.inputs import as_system
+
+    members = [PAPER, system("torsion", duty="1/3"), custom(("4/5", "6/5"), jump="3/2")]
+    for s in members:
+        assert as_system(s) is s is system(s)
+        assert as_system(s, "2/5") == system(s, duty="2/5")
+    assert as_system("pendulum") is PAPER

@@ -16,8 +16,11 @@ def as_system(system="pendulum", duty="1/2", omega_sq=None, jump=None):
     """A member of the family (:class:`analytic.system.System`): a name (``pendulum``,
     ``torsion``, ``meissner``, ``custom`` with ``omega_sq`` and ``jump``) or a ``System``, with the
     duty ``0 < D < 1``."""
-    if system == "pendulum" and duty == "1/2" and omega_sq is None and jump is None:
-        return _paper()  # the default, without parsing it again
+    if type(system) is str:
+        if system == "pendulum" and duty == "1/2" and omega_sq is None and jump is None:
+            return _paper()  # the default, without parsing it again
+    elif duty == "1/2" and omega_sq is None and jump is None and type(system) is type(_paper()):
+        return system  # a System with the default duty passes through (analytic.system.system)
     if omega_sq is None and jump is None and type(system) is str and type(duty) in _PLAIN:
         return _named(system, duty)
     from analytic.system import system as make
