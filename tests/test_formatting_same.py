@@ -31,8 +31,19 @@ def _log10_abs(v) -> float:
     return (exp + bc - min(bc, 53) + math.log2(top)) * _LOG10_2
 
 
+def _no_bare_point(text: str) -> str:
+    """``text`` without a point that no digit follows (mpmath's ``"2."``, ``"2.e-30"``)."""
+    mant, e, exp = text.partition("e")
+    return mant.removesuffix(".") + e + exp
+
+
 def reference_text(x, rad, digits: int) -> str:
-    """The formatting as first written (mpmath's comparisons and ``nstr``)."""
+    """The formatting as first written (mpmath's comparisons and ``nstr``), without a point that
+    no digit follows."""
+    return _no_bare_point(_reference_nstr(x, rad, digits))
+
+
+def _reference_nstr(x, rad, digits: int) -> str:
     if rad is None or rad == 0 or x == 0:
         return mpmath.nstr(x, digits, strip_zeros=False) if x != 0 or rad is None else "0"
     est = _log10_abs(x) - _log10_abs(rad) - _LOG10_2
@@ -561,3 +572,22 @@ def test_row_bound_on_a_two_digit_value_and_beside_one():
         texts, bound = _row_of_balls(balls, 3)
         assert texts[:2] == ("1.00e+4", "1.00e+4") and bound == expected
     assert ball(x, quarter - mpmath.ldexp(1, -40)).rad() == 0.25  # the exact case was made
+
+
+@pytest.mark.parametrize(
+    "x, rad, digits, text",
+    [
+        ("2.2", "0.04", 30, "2"),
+        ("-2.2e-30", "4e-32", 30, "-2e-30"),
+        ("22", "0.4", 30, "2e+1"),
+        ("123.4", "0.004", 3, "123"),
+        ("98765.4321", "1e-20", 5, "98765"),
+        ("-7.7", None, 1, "-8"),
+        ("0.0123", "1e-30", 1, "0.01"),
+    ],
+)
+def test_no_point_without_a_digit_after_it(x, rad, digits, text):
+    """A proven decimal whose digits all stand before the point is written without one (mpmath
+    writes ``"2."`` and ``"2.e-30"``): one digit, or every digit of an integer part."""
+    r = None if rad is None else mpmath.mpf(rad)
+    assert proven_text(mpmath.mpf(x), r, digits) == text

@@ -529,10 +529,13 @@ def _digits_text(digits: str, exponent: int, dps: int) -> str:
     if min(-(dps // 3), -5) < exponent < dps:  # :func:`_scale`'s least exponent in fixed point
         if exponent < 0:
             return ("0." + "0" * (-exponent - 1)) + digits
+        if exponent + 1 >= len(digits):  # no digit after the point: none written
+            return digits
         return f"{digits[: exponent + 1]}.{digits[exponent + 1 :]}"
+    head = f"{digits[:1]}.{digits[1:]}" if len(digits) > 1 else digits
     if exponent > 0:
-        return f"{digits[:1]}.{digits[1:]}e+{exponent}"
-    return f"{digits[:1]}.{digits[1:]}e{exponent}"
+        return f"{head}e+{exponent}"
+    return f"{head}e{exponent}"
 
 
 def _digit_scale(dps: int, top: int) -> tuple | None:
@@ -552,7 +555,9 @@ def _digit_scale(dps: int, top: int) -> tuple | None:
     is less than one unit below ``|man| 2**(shift - bc)``, which costs less than ``p10 /
     2**fixprec`` units after the product (``F`` is ``fixprec log10(2)`` rounded to the nearest,
     so ``p10 < 2**fixprec sqrt(10)``, 3.17), and the last shift less than one more."""
-    if dps > 1400:  # |x| < 2**3500 and a radius above 2**-990 (_TINY): not every digit usable
+    # more than 1400 digits: |x| < 2**3500 and a radius above 2**-990 (_TINY) leave not every
+    # digit usable; one digit: no point to place (:func:`_nstr` writes it)
+    if dps > 1400 or dps < 2:
         return None
     scale = _scale(dps, top)
     if scale is None:
@@ -577,8 +582,10 @@ def _digit_scale(dps: int, top: int) -> tuple | None:
             pre, split, post = "", 1, (f"e+{exponent}" if exponent > 0 else f"e{exponent}")
         elif exponent < 0:  # "0.00" and the digits
             pre, split, post = "0." + "0" * (-exponent - 1), 0, ""
-        else:
+        elif exponent + 1 < dps:
             pre, split, post = "", exponent + 1, ""
+        else:  # every digit before the point: no point written (:func:`_nstr`)
+            pre, split, post = "", 0, ""
         # u: 10**-F (F = fixdps) as a double, correctly rounded (infinite beyond the doubles'
         # range: the bound then comes from the integers)
         u = 1 / p10 if fixdps < 280 else math.inf
@@ -695,14 +702,25 @@ def _proven_raw(xv: tuple, rv: tuple, digits: int) -> tuple[str, tuple[int, int]
 def _proven_slow(x, rad, digits: int) -> str:
     """:func:`proven_text` for any number type, zero and no radius included."""
     if rad is None or rad == 0 or x == 0:
-        return mpmath.nstr(x, digits, strip_zeros=False) if x != 0 or rad is None else "0"
+        if x == 0 and rad is not None:
+            return "0"
+        return _point_dropped(mpmath.nstr(x, digits, strip_zeros=False))
     est = _log10_abs(x) - _log10_abs(rad) - _LOG10_2
     usable = math.floor(est)
     if abs(est - round(est)) < 1e-6:  # next to a power of ten: decide it exactly
         usable = _usable_exactly(x, rad)
     if usable < 1:
         return "0"
-    return mpmath.nstr(x, min(digits, usable), strip_zeros=False)
+    return _point_dropped(mpmath.nstr(x, min(digits, usable), strip_zeros=False))
+
+
+def _point_dropped(text: str) -> str:
+    """mpmath's text without a decimal point that no digit follows (``"2."``, ``"2.e-30"``,
+    ``"123."``: ``"2"``, ``"2e-30"``, ``"123"``), as the engine prints every decimal."""
+    i = text.find("e")
+    if i < 0:
+        return text[:-1] if text.endswith(".") else text
+    return text[: i - 1] + text[i:] if text[i - 1] == "." else text
 
 
 _LOG2_10 = math.log(10, 2)
@@ -718,7 +736,8 @@ def _nstr(s: tuple, dps: int, strip: bool = False) -> tuple[str, tuple[int, int]
     sign, man, exp, bc = s
     scale = _SCALES.get((dps, exp + bc)) or _scale(dps, exp + bc)
     if scale is None:  # huge exponents: mpmath's own path
-        return to_str(s, dps, strip_zeros=strip), None
+        text = to_str(s, dps, strip_zeros=strip)
+        return (text if strip else _point_dropped(text)), None
     bitprec, fixprec, fixdps, p10, low = scale
     if fixprec:
         shift = bitprec - bc  # = exp + fixprec
@@ -758,6 +777,8 @@ def _nstr(s: tuple, dps: int, strip: bool = False) -> tuple[str, tuple[int, int]
         text = text.rstrip("0")
         if text[-1] == ".":
             text += "0"
+    elif text[-1] == ".":  # no digit after the point (mpmath writes "2." and "2.e-30")
+        text = text[:-1]
     if sign:
         text = "-" + text
     if exponent == 0:
