@@ -125,6 +125,27 @@ class System:
     omega_sq: tuple[Fraction, Fraction] | None = None
     jump_value: Fraction | None = None
 
+    def __post_init__(self) -> None:
+        """The model's ranges hold for every ``System``, also one built directly (not by
+        :func:`custom` or :func:`system`): ``0 < D < 1``, a custom system's ``omega_i^2 > 0``
+        and ``k > 0``.  The proofs rely on them (an over-damped phase has ``nu_i < 1`` only where
+        ``omega_i^2 > 0``, :func:`verify.hump.overdamped_no_interval`)."""
+        if self.name not in NAMES:
+            raise InputError(f"system {self.name!r} is not one of: {', '.join(NAMES)}")
+        if not 0 < self.duty < 1:
+            raise InputError(f"duty D = {self.duty} is outside the allowed range 0 < D < 1")
+        if self.name != "custom":
+            return
+        if self.omega_sq is None or len(self.omega_sq) != 2 or self.jump_value is None:
+            raise InputError("a custom system needs omega_sq = (omega1^2, omega2^2) and jump k")
+        for w in self.omega_sq:
+            if not w > 0:
+                raise InputError(
+                    f"omega^2 = {w} is not positive; allowed range omega^2 > 0 (units of omega0^2)"
+                )
+        if not self.jump_value > 0:
+            raise InputError(f"jump k = {self.jump_value} is not positive; allowed range k > 0")
+
     def __hash__(self) -> int:
         """The hash of the fields, computed once (a system keys the caches of every numeric
         call, and hashing its Fractions costs more than a 15-digit edge's parameters)."""

@@ -232,3 +232,48 @@ def test_existence_decides_the_overdamped_depths():
         j = b.as_json()
         mid = (mpmath.mpf(j["lower"]) + mpmath.mpf(j["upper"])) / 2
         assert _excess(mpmath.nstr(mid, 20), m, "0.0102", "exact", 40) > 0
+
+
+def test_a_system_built_directly_keeps_the_model_ranges():
+    """The bound ``kappa <= 6 nu1 nu2`` needs ``nu1 + nu2 < 2``, true because an over-damped
+    phase with ``omega_i^2 > 0`` has ``nu_i < 1``.  A ``System`` built directly (not by
+    ``custom``) with ``omega1^2 = -75``, ``omega2^2 = 25/2``, ``k = 1/16`` at ``Q = 0.1`` has
+    both phases "over-damped" with ``nu1 = 2`` and ``kappa/(2 nu1 nu2)`` about 2, and its
+    monodromy a multiplier near ``-1.6e14`` at ``T = 3``: no longer a member of the family, it is
+    refused when built (else ``boundary`` would call its order 1 empty), as are a duty outside
+    ``(0, 1)`` and a jump ``k <= 0``."""
+    from fractions import Fraction
+
+    from analytic.system import System
+    from paramres.inputs import InputError
+
+    half = Fraction(1, 2)
+    with pytest.raises(InputError, match="omega\\^2 = -75 is not positive"):
+        System("custom", half, (Fraction(-75), Fraction(25, 2)), Fraction(1, 16))
+    with pytest.raises(InputError, match="omega\\^2 = 0 is not positive"):
+        System("custom", half, (Fraction(1), Fraction(0)), Fraction(1))
+    with pytest.raises(InputError, match="jump k = -1 is not positive"):
+        System("custom", half, (Fraction(1), Fraction(2)), Fraction(-1))
+    with pytest.raises(InputError, match="outside the allowed range 0 < D < 1"):
+        System("pendulum", Fraction(3, 2))
+    with pytest.raises(InputError, match="needs omega_sq"):
+        System("custom", half)
+    with pytest.raises(InputError, match="is not one of"):
+        System("pendulm", half)
+    with mpmath.workdps(30):  # the multiplier of that system, from the ODE (pure mpmath)
+        g, T = mpmath.pi / mpmath.mpf("0.1"), mpmath.mpf(3)
+
+        def U(w2, t):
+            W = mpmath.sqrt(g * g - w2)
+            c, s = mpmath.cosh(W * t), mpmath.sinh(W * t) / W
+            e = mpmath.exp(-g * t)
+            return mpmath.matrix([[e * (c + g * s), e * s], [-w2 * e * s, e * (c - g * s)]])
+
+        four_pi2, k = 4 * mpmath.pi**2, mpmath.mpf(1) / 16
+        M = (
+            mpmath.matrix([[1, 0], [0, 1 / k]])
+            * U(four_pi2 * mpmath.mpf("12.5"), T / 2)
+            * mpmath.matrix([[1, 0], [0, k]])
+            * U(-four_pi2 * 75, T / 2)
+        )
+        assert mpmath.re(multipliers_mp(M)[0]) < -1e13
