@@ -448,7 +448,8 @@ def _refine(n, Q, damping, m_neg: float, m_pos: float, digits: int) -> Threshold
     ga, gb = _g_ball(n, a, Q, damping, bits), _g_ball(n, b, Q, damping, bits)
     tol = Fraction(1, 2 ** (bits + 4)) * b
     for _ in range(100):
-        if ga is None or gb is None:  # pragma: no cover - both sides have a window here
+        if ga is None or gb is None:  # pragma: no cover - no window on a side (next to a
+            # threshold there is one: k > 3 in the over-damped bound); the proofs below decide
             break
         with ctx.workprec(bits + 32):
             gam, gbm = ga.mid(), gb.mid()
