@@ -277,3 +277,27 @@ def test_a_system_built_directly_keeps_the_model_ranges():
             * U(-four_pi2 * 75, T / 2)
         )
         assert mpmath.re(multipliers_mp(M)[0]) < -1e13
+
+
+@pytest.mark.parametrize("Q, lo, hi", [("0.05", "0.953", "0.989"), ("0.2", "0.828", "0.839")])
+def test_existence_proves_the_overdamped_interval_over_depth_ranges(Q, lo, hi):
+    """Both halves over-damped, order 1, where the interval exists: ``existence`` proves it over
+    ranges of depths (the window's start taken inside ``P > 0`` for the whole range; at ``Q =
+    0.05`` it left ``0.9485 < m < 0.990`` undecided before, at ``Q = 0.2`` ``0.79 < m < 0.84``),
+    and the reference monodromy has ``|mu|max > 1`` inside the edges ``boundary`` gives at the
+    ends and the middle of the range asked for."""
+    from fractions import Fraction
+
+    from verify.existence import existence
+
+    ex = existence(1, Q, digits=15)
+    a, b = Fraction(lo), Fraction(hi)
+    # every segment meeting [lo, hi] says the interval exists there
+    meeting = [sign for x, y, sign in ex.segments if x < b and y > a]
+    assert meeting and all(sign == 1 for sign in meeting)
+    for m in (lo, hi, mpmath.nstr((mpmath.mpf(lo) + mpmath.mpf(hi)) / 2, 15)):
+        bd = boundary(1, m, Q=Q, digits=15)
+        assert bd.exists
+        j = bd.as_json()
+        mid = (mpmath.mpf(j["lower"]) + mpmath.mpf(j["upper"])) / 2
+        assert _excess(mpmath.nstr(mid, 20), m, Q, "exact", 40) > 0

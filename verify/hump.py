@@ -1109,7 +1109,11 @@ def hump_trace(
                 wx = (za, zt)
             za, zb = min(za, wx[0]), max(zb, wx[1])
     widen = 1e-9 if m_box is None else 1e-3
-    za = za * (1 - widen)
+    # the window's start: where P = 2 C1 C2 - kappa S1 S2 (> 0 before it) vanishes at one depth
+    # (the float bisection leaves P(za) tiny); over a range of depths P's ball there is wide
+    # (kappa grows like (1 - m)^-2), so the start is taken well inside P > 0: D < 0 there, the
+    # window only grows
+    za = za * (1 - (widen if m_box is None or regimes[1] == "under" else 0.05))
     zb = zb * (1 + widen)
     if not _prove_window(n, regimes, P, za, zb, m_box, m, Q):  # pragma: no cover - guard
         raise CertificationError(f"could not prove the window of order {n}: {za}, {zb}")
