@@ -155,6 +155,13 @@ class System:
             object.__setattr__(self, "_hash", h)
         return h
 
+    def __getstate__(self) -> dict:
+        """The fields without the kept hash: a string's hash differs from one process to the
+        next, so a system sent to a worker process (:mod:`verify.engine`) hashes there again."""
+        state = dict(self.__dict__)
+        state.pop("_hash", None)
+        return state
+
     # -- what the laws give ---------------------------------------------------------------
 
     @property

@@ -118,3 +118,34 @@ def test_as_system_passes_a_system_through_as_analytic_system_does():
         assert as_system(s) is s is system(s)
         assert as_system(s, "2/5") == system(s, duty="2/5")
     assert as_system("pendulum") is PAPER
+
+
+def test_a_system_hashes_again_in_another_process():
+    """A system's kept hash is not pickled: a string hashes differently in another process (a
+    worker of :mod:`verify.engine`), where the system must equal and hash as that process's own."""
+    import os
+    import pickle
+    import subprocess
+    import sys
+
+    from analytic.system import PAPER, system
+
+    torsion = system("torsion", duty="1/3")
+    hash(PAPER), hash(torsion)  # the hash kept
+    data = pickle.dumps((PAPER, torsion))
+    code = (
+        "import pickle, sys\n"
+        "from analytic.system import PAPER, system\n"
+        "p, t = pickle.loads(sys.stdin.buffer.read())\n"
+        "own = system('torsion', duty='1/3')\n"
+        "print(p == PAPER and hash(p) == hash(PAPER) and t == own and hash(t) == hash(own))\n"
+    )
+    root = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+    path = os.pathsep.join(filter(None, (root, os.environ.get("PYTHONPATH"))))
+    for seed in ("1", "2"):
+        env = dict(os.environ, PYTHONHASHSEED=seed, PYTHONPATH=path)
+        out = subprocess.run(
+            [sys.executable, "-c", code], input=data, capture_output=True, env=env, check=True
+        )
+        assert out.stdout.strip() == b"True"
+    assert pickle.loads(data) == (PAPER, torsion)
