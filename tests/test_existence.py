@@ -82,3 +82,33 @@ def test_bad_input():
         existence(0, 7)
     with pytest.raises(InputError):
         existence(3, 7, damping="none")
+
+
+def test_range_ends_rounded_inwards():
+    """An end of a range that is not a threshold (it borders an undecided range) is an exact
+    rational: printed, a range where the interval exists lies inside the proven one and an
+    undecided range holds the undecided one (65471/65536 = 0.9990081787109375, 15 digits)."""
+    from verify.existence import Existence
+
+    lo, mid, hi = Fraction(3, 4), Fraction(65471, 65536), Fraction(2**20 - 1, 2**20)
+    e = Existence(
+        1,
+        Fraction(1, 20),
+        "exact",
+        15,
+        (),
+        False,
+        undecided=((Fraction(1, 2), lo), (mid, hi)),
+        segments=(
+            (Fraction(0), Fraction(1, 2), -1),
+            (Fraction(1, 2), lo, 0),
+            (lo, mid, 1),
+            (mid, hi, 0),
+            (hi, Fraction(1), -1),
+        ),
+    )
+    assert e.interval_texts() == [["0.75", "0.999008178710937"]]
+    assert e.undecided_texts() == [["0.5", "0.75"], ["0.999008178710937", "0.999999046325684"]]
+    for a, b in e.interval_texts():
+        assert lo <= Fraction(a) and Fraction(b) <= mid
+    assert "0.999008178710937 < m < 0.999999046325684" in e.where(Fraction(999999, 10**6))

@@ -134,12 +134,16 @@ class Existence:
             return e.value
         return mpmath.mpf(1) if e == 1 else _mpf(e)
 
-    def _text(self, e) -> str:
+    def _text(self, e, *, up: bool) -> str:
+        """The end ``e`` of a range: a threshold's proven digits, else the exact rational rounded
+        towards +inf (``up``) or -inf, so that a printed range where the interval exists lies
+        inside the proven one (its start rounded up, its end down) and a printed undecided range
+        holds the undecided one (its start rounded down, its end up)."""
         if isinstance(e, Threshold):
             return e.text()
         if e == 1:
             return "1"
-        return mpmath.nstr(_mpf(e), self.digits)
+        return _directed_text(e, self.digits, up=up)
 
     @property
     def intervals(self) -> list[tuple]:
@@ -147,13 +151,10 @@ class Existence:
         return [(self._value(a), self._value(b)) for a, b in self._ranges()]
 
     def interval_texts(self) -> list[list[str]]:
-        return [[self._text(a), self._text(b)] for a, b in self._ranges()]
+        return [[self._text(a, up=True), self._text(b, up=False)] for a, b in self._ranges()]
 
     def undecided_texts(self) -> list[list[str]]:
-        return [
-            [mpmath.nstr(_mpf(lo), self.digits), mpmath.nstr(_mpf(hi), self.digits)]
-            for lo, hi in self.undecided
-        ]
+        return [[self._text(lo, up=False), self._text(hi, up=True)] for lo, hi in self.undecided]
 
     def where(self, m: Fraction) -> str:
         """Why the interval does or does not exist at the exact depth ``m``: ``"exists"``,
@@ -166,10 +167,8 @@ class Existence:
                 return "exists"
             ranges = self._ranges()
             if sign == 0 and (lo, hi) in self.undecided:
-                return (
-                    f"m lies in the range {self._text(lo)} < m < {self._text(hi)} where existence "
-                    "could not be decided"
-                )
+                a, b = self._text(lo, up=False), self._text(hi, up=True)
+                return f"m lies in the range {a} < m < {b} where existence could not be decided"
             if sign == 0:
                 return (
                     f"m lies within the enclosure of the threshold near m = "
@@ -178,12 +177,14 @@ class Existence:
             before = [r for r in ranges if self._value(r[1]) <= _mpf(m)]
             after = [r for r in ranges if self._value(r[0]) >= _mpf(m)]
             if not before and after:
-                return f"below the threshold m = {self._text(after[0][0])}"
+                return f"below the threshold m = {self._text(after[0][0], up=True)}"
             if not before and not after:
                 return "the interval exists at no depth 0 < m < 1"
             if not after:
-                return f"above the last range, which ends at m = {self._text(before[-1][1])}"
-            a, b = self._text(before[-1][1]), self._text(after[0][0])
+                return (
+                    f"above the last range, which ends at m = {self._text(before[-1][1], up=False)}"
+                )
+            a, b = self._text(before[-1][1], up=False), self._text(after[0][0], up=True)
             closing = _closing_in(self.order, self.Q, self.damping, _mpf(lo), _mpf(hi), self.system)
             around = ""
             if closing is not None:
