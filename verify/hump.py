@@ -181,12 +181,12 @@ def _unimodal(
         stack = [(a, b, False)]
     count, labels = 0, []
     while stack:  # left to right: the left half is pushed last
-        u, v, direct = stack.pop()
+        u, v, end = stack.pop()
         count += 1
         if count > budget:
             return False
         X = u.union(v)  # u, v exact: a ball holding [u, v]
-        if direct and not (u < lo and hi < v):  # an end piece: D' on X itself
+        if end and not (u < lo and hi < v):  # an end piece named by direct: D' on X itself
             d1 = dD(X, *args)
             if d1 < 0 or d1 > 0:
                 labels.append("down" if d1 < 0 else "up")
@@ -1113,7 +1113,7 @@ def hump_trace(
     # (the float bisection leaves P(za) tiny); over a range of depths P's ball there is wide
     # (kappa grows like (1 - m)^-2), so the start is taken well inside P > 0: D < 0 there, the
     # window only grows
-    za = za * (1 - (widen if m_box is None or regimes[1] == "under" else 0.05))
+    za = za * (1 - (widen if m_box is None or regimes[1] == "under" else _RANGE_START))
     zb = zb * (1 + widen)
     if not _prove_window(n, regimes, P, za, zb, m_box, m, Q):  # pragma: no cover - guard
         raise CertificationError(f"could not prove the window of order {n}: {za}, {zb}")
@@ -1189,6 +1189,11 @@ def trace_phase(regimes, P, z, m_box=None, m=None, Q=None) -> arb:
         jet = phase(trace_params(Jet(depth_ball(m_box), 1), Jet(Qb), _ARB))
         slope = jet.d if isinstance(jet, Jet) else 0
         return mid + slope * (depth_ball(m_box) - arb(m.numerator) / m.denominator)
+
+
+#: how far inside ``P > 0`` the trace form's window starts over a range of depths (both halves
+#: critically or over-damped: :func:`hump_trace`)
+_RANGE_START = 0.05
 
 
 def overdamped_no_interval(p) -> bool:

@@ -238,17 +238,7 @@ def rows(
         out = []
         add = out.append
         for n, m in progress(pairs, total=len(pairs), label=label, quiet=quiet):
-            b = solve(  # :func:`_row`, written out: a call less per row
-                n,
-                m,
-                Q=Q,
-                damping=damping,
-                digits=digits,
-                system=system,
-                modulation=modulation,
-                switch_time=switch_time,
-            )
-            add((n, m, *b.printed()))
+            add(_row(solve, n, m, Q, damping, digits, system, modulation, switch_time))
         return out
     from verify.atlas import edge_seconds
     from verify.engine import cluster, ordered
