@@ -219,3 +219,117 @@ def test_numpy_parameter_texts_agree_with_the_math_texts():
                 assert abs(a - b) <= 1e-13 * abs(b), (key, i, a, b)
         checked += 1
     assert checked >= 30
+
+
+def _random_balls(rng, count: int, zero_share: float = 0.05) -> list:
+    """``count`` balls: midpoints in ``(-2, 2)`` (a share of them exactly 0), radii from 0 to
+    about the midpoint's size."""
+    out = []
+    for _ in range(count):
+        mid = 0.0 if rng.random() < zero_share else rng.uniform(-2, 2)
+        rad = abs(mid) * 10 ** rng.uniform(-18, 0.3) if rng.random() < 0.7 else 0.0
+        out.append(arb(mid, rad))
+    return out
+
+
+def _same_ball(a, b) -> bool:
+    return a.mid() == b.mid() and a.rad() == b.rad()
+
+
+ARB_FORMS = [
+    ("indicator", (-1,), 0),
+    ("indicator", (1,), 1),
+    ("indicator", (-1,), 2),
+    ("indicator", (1,), (0, 1)),
+    ("indicator_bend", (-1,), 0),
+    ("indicator_slope", (1,), 0),
+    ("edge_equation", (-1,), (0, 1)),
+    ("trace_indicator", ("under", "over"), 2),
+    ("near_one_forms[2]", (), 2),
+]
+
+
+@pytest.mark.parametrize("builder, args, orders", ARB_FORMS, ids=str)
+def test_arb_texts_give_the_balls_of_the_plain_text(monkeypatch, builder, args, orders):
+    """The arb texts (:func:`verify.derived.arb_text`: pairs shared, squares as products,
+    method calls) give bit for bit the balls of the text :func:`sympy.lambdify` writes with the
+    pairs shared alone, at 64 and 200 bits, on random balls -- except where a squared value's
+    midpoint is exactly 0: there ``**`` gave NaN and the product gives an enclosure, which must
+    hold the plain text's value at the midpoints of the arguments."""
+    import random
+
+    form = generate_forms._lazy(builder, args).real
+    new_text = form.source("arb", orders)
+    new = derived.load_source(new_text, "arb", orders)
+    monkeypatch.setattr(derived, "arb_text", derived.share_pairs)
+    plain_text = form.source("arb", orders)
+    plain = derived.load_source(plain_text, "arb", orders)
+    assert new_text != plain_text  # (something rewritten)
+    rng = random.Random(7)
+    nargs = len(form.args)
+    for prec in (64, 200):
+        with ctx.workprec(prec):
+            for _ in range(1500):
+                xs = _random_balls(rng, nargs)
+                got, want = new(*xs), plain(*xs)
+                many = isinstance(orders, tuple)
+                for g, w in zip(got if many else (got,), want if many else (want,), strict=True):
+                    if w.is_nan() and not g.is_nan():
+                        at_mid = plain(*(x.mid() + arb(0, 0) for x in xs))
+                        point = at_mid[0] if many else at_mid
+                        assert point.is_nan() or g.overlaps(point)
+                    else:
+                        assert (g.is_nan() and w.is_nan()) or _same_ball(g, w), (xs, g, w)
+
+
+def test_squares_as_products_hoists_a_call_and_keeps_precedence():
+    """A squared call is made once (into a new name, before the first line that squares it);
+    a squared name becomes a parenthesised product, so ``-x**2`` and ``a*x**2/y`` keep their
+    order of operations; a power other than 2 and a parenthesised base are left alone."""
+    text = (
+        "def _lambdifygenerated(x, y, a):\n"
+        "    x0 = cos(a*x)**2 + y**2\n"
+        "    return -x**2 + a*x**2/y - x0*cos(a*x)**2 + x**3 + (x + y)**2 + x**20\n"
+    )
+    out = derived.squares_as_products(text)
+    assert out.split("\n")[1] == "    _sq0 = cos(a*x)"
+    assert "-(x*x) + a*(x*x)/y - x0*(_sq0*_sq0) + x**3 + (x + y)**2 + x**20" in out
+    assert out.count("_sq0 = ") == 1
+    with ctx.workprec(80):
+        xs = (arb("0.3", "1e-10"), arb("-1.7"), arb("0.61", "1e-3"))
+        got = derived.load_source(derived.method_calls(out), "arb")(*xs)
+        want = derived.load_source(text, "arb")(*xs)
+    assert _same_ball(got, want)
+
+
+def test_method_calls_rewrite_only_the_back_ends_methods():
+    """``sin(v)`` becomes ``(v).sin()`` (a plain name without the parentheses), with one level
+    of parentheses inside the argument; a deeper argument keeps the call (the same method, through
+    the back end), as does a call inside a rewritten argument; names that merely end in a
+    function's name are left alone."""
+    text = (
+        "def _lambdifygenerated(theta, c, beta):\n"
+        "    _sin_theta, _cos_theta = sin_cos(theta)\n"
+        "    return sin(beta*(c + theta)) + asin(theta) + my_sin(theta) + cos(sin(cos(theta)))\n"
+    )
+    out = derived.method_calls(text)
+    assert "    _sin_theta, _cos_theta = theta.sin_cos()" in out
+    assert "(beta*(c + theta)).sin() + theta.asin() + my_sin(theta)" in out
+    assert "cos((cos(theta)).sin())" in out  # (the inner call, matched inside, stays a call)
+
+
+def test_the_slope_is_the_indicators_derivative():
+    """:func:`verify.derived.indicator_slope` (``D'`` in double angles) encloses what the
+    indicator's ``D'`` encloses on narrow balls, to the precision's width, for both parities."""
+    import random
+
+    rng = random.Random(11)
+    for parity in (-1, 1):
+        slope = derived.indicator_slope(parity).compiled("arb", 0)
+        d1 = derived.indicator(parity).compiled("arb", 1)
+        with ctx.workprec(120):
+            for _ in range(300):
+                args = [arb(rng.uniform(-1.5, 1.5), 1e-20), 3 * arb.pi() / 2]
+                args += [arb(rng.uniform(0.05, 1)) for _ in range(4)]
+                a, b = slope(*args), d1(*args)
+                assert a.overlaps(b) and abs(a - b) < arb(2) ** -60 * (1 + abs(b))

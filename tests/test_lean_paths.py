@@ -244,7 +244,7 @@ def test_concave_bound_decides_only_where_there_is_no_interval(Q, exists):
     from verify.params import normal_values
 
     n = 3
-    _, _, D2, D01, _, Bend = hump._normal_forms(-1)
+    _, _, D2, D01, _, Bend, _ = hump._normal_forms(-1)
     old = ctx.prec
     ctx.prec = 76
     try:

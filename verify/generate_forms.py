@@ -26,7 +26,7 @@ ENTRIES = (
     + [("edge_equation", (p,), "arb", o) for p in (-1, 1) for o in (0, 1, (0, 1))]
     + [("indicator", (p,), "math", o) for p in (-1, 1) for o in ((0, 1), (1, 2), (0, 1, 2))]
     + [("indicator", (p,), "arb", o) for p in (-1, 1) for o in (0, 1, 2, (0, 1))]
-    + [("indicator_bend", (p,), "arb", 0) for p in (-1, 1)]
+    + [(f"indicator_{kind}", (p,), "arb", 0) for kind in ("bend", "slope") for p in (-1, 1)]
     + [("indicator", (p,), "numpy", 0) for p in (-1, 1)]
     + [
         ("trace_window", (r,), b, o)

@@ -51,6 +51,7 @@ from .derived import (
     edge_equation,
     indicator,
     indicator_bend,
+    indicator_slope,
     near_one_forms,
     order1_forms,
     trace_indicator,
@@ -111,6 +112,9 @@ class _Hump:
     #: ``-D''/2`` in a form whose enclosure of a wide ball is tighter and cheaper than ``D''``'s
     #: (:func:`verify.derived.indicator_bend`), where there is one: the concavity test
     bend: Callable | None = None
+    #: ``D'`` in a cheaper form (:func:`verify.derived.indicator_slope`), where there is one: the
+    #: interval Newton test's slope, and ``D'`` in the shape's tests
+    slope: Callable | None = None
 
 
 def _unimodal_shape(h: _Hump, lo_root, hi_root, budget: int = 16) -> bool:
@@ -120,8 +124,9 @@ def _unimodal_shape(h: _Hump, lo_root, hi_root, budget: int = 16) -> bool:
     ctx.prec = 64
     try:
         return _unimodal(
-            arb(h.a), arb(h.b), lo_root.ball, hi_root.ball, h.bend, h.d2D, h.dD, h.D, budget
-        )  # (h.a, h.b floats: exact)
+            arb(h.a), arb(h.b), lo_root.ball, hi_root.ball, h.bend, h.d2D, h.slope or h.dD, h.D,
+            budget,
+        )  # (h.a, h.b floats: exact)  # fmt: skip
     finally:
         ctx.prec = old
 
@@ -168,18 +173,19 @@ def _unimodal(
         return False
     if pieces > 1:  # the cuts at floats strictly inside (a, b), as the stack takes them
         fa, fb = float(a), float(b)  # (exact: the ends are floats)
-        cuts = [fb - (fb - fa) * i / pieces for i in range(1, pieces)]
-        stack, v = [], b
-        for c in cuts:  # (descending: the leftmost piece is pushed last)
-            if not fa < c < float(v):
+        stack, v, fv = [], b, fb
+        for i in range(1, pieces):  # the cuts, descending: the leftmost piece is pushed last
+            c = fb - (fb - fa) * i / pieces
+            if not fa < c < fv:
                 return False  # pragma: no cover - guard (a bracket of a few floats)
             u = arb(c)
             stack.append((u, v, v is b and direct & 2))
-            v = u
+            v, fv = u, c
         stack.append((a, v, direct & 1))
     else:
         stack = [(a, b, False)]
     count, labels = 0, []
+    zero = _ZERO  # (a ball: comparing with the int 0 converts it each time)
     while stack:  # left to right: the left half is pushed last
         u, v, end = stack.pop()
         count += 1
@@ -188,28 +194,34 @@ def _unimodal(
         X = u.union(v)  # u, v exact: a ball holding [u, v]
         if end and not (u < lo and hi < v):  # an end piece named by direct: D' on X itself
             d1 = dD(X, *args)
-            if d1 < 0 or d1 > 0:
-                labels.append("down" if d1 < 0 else "up")
+            if d1 > zero:
+                labels.append("up")
+                continue
+            if d1 < zero:
+                labels.append("down")
                 continue
         if bend is not None:
             d2 = bend(X, *args)
-            if d2 > 0:
+            if d2 > zero:
                 labels.append("cap")
                 continue
             d2 = -2 * d2  # D'' on X (bend is -D''/2, in a tighter form than d2D's)
         else:
             d2 = d2D(X, *args)
-            if d2 < 0:
+            if d2 < zero:
                 labels.append("cap")
                 continue
         mid = X.mid()
         if not (u < lo and hi < v):
             # D' on X by the mean-value form around the midpoint (D'' on X is d2)
             d1 = dD(mid, *args) + d2 * (X - mid)
-            if d1 < 0 or d1 > 0:
-                labels.append("down" if d1 < 0 else "up")
+            if d1 > zero:
+                labels.append("up")
                 continue
-        if (v < lo or hi < u) and D(X, *args) < 0:  # (elsewhere a neg piece fails the shape)
+            if d1 < zero:
+                labels.append("down")
+                continue
+        if (v < lo or hi < u) and D(X, *args) < zero:  # (elsewhere a neg piece fails the shape)
             labels.append("neg")
             continue
         stack.append((mid, v, False))
@@ -361,6 +373,9 @@ def _solve_hump(req: Request, h: _Hump, bits: int):
 
     neg = lambda t: -h.D(t)  # noqa: E731
     dneg = lambda t: -h.dD(t)  # noqa: E731
+    # the interval Newton test's slope on its narrow ball (D' in a cheaper form, where there is one)
+    slope = h.dD if h.slope is None else h.slope
+    slope_neg = lambda t: -slope(t)  # noqa: E731
     if h.DdD is not None:
         both = h.DdD
 
@@ -376,11 +391,11 @@ def _solve_hump(req: Request, h: _Hump, bits: int):
         """The fast path for the float edge on one side of ``top`` (``None`` where it fails)."""
         if lower:
             return quick_root(
-                both, h.D, h.dD, h.lo, bits=bits, floor=h.floor,
+                both, h.D, slope, h.lo, bits=bits, floor=h.floor,
                 bracket=(ball(h.a), ball(top)), scale=scale,
             )  # fmt: skip
         return quick_root(
-            both_neg, neg, dneg, h.hi, bits=bits, floor=h.floor,
+            both_neg, neg, slope_neg, h.hi, bits=bits, floor=h.floor,
             bracket=(ball(top), ball(h.b)), scale=scale,
         )  # fmt: skip
 
@@ -476,14 +491,16 @@ def _params_at(m, Q, damping, m_box, make):
 
 @cache
 def _normal_forms(parity: int) -> tuple:
-    """``D``, ``D'``, ``D''``, ``(D, D')``, the undamped edge equation and ``-D''/2`` in the sines
-    (:func:`verify.derived.indicator_bend`), compiled for arb."""
+    """``D``, ``D'``, ``D''``, ``(D, D')``, the undamped edge equation, ``-D''/2`` in the sines
+    (:func:`verify.derived.indicator_bend`) and ``D'`` in double angles
+    (:func:`verify.derived.indicator_slope`), compiled for arb."""
     form = indicator(parity)
     return (
         *(form.compiled("arb", k) for k in (0, 1, 2)),
         form.compiled("arb", (0, 1)),
         edge_equation(parity).compiled("arb", 0),
         indicator_bend(parity).compiled("arb", 0),
+        indicator_slope(parity).compiled("arb", 0),
     )
 
 
@@ -506,7 +523,7 @@ def hump_normal(
     float stage is that of ``m`` (``float_stage``: computed already, a dict as
     :func:`verify.float_stage.normal_float_stage` returns, plus ``"bm"``)."""
     parity = -1 if n % 2 else 1  # the multiplier (analytic.stitching.Parity)
-    D0, D1, D2, D01, E0, Bend = _normal_forms(parity)
+    D0, D1, D2, D01, E0, Bend, Slope = _normal_forms(parity)
     if jet:  # parameters as jets in m over the range (for the mean-value form, hump_box)
 
         def jets():
@@ -601,6 +618,7 @@ def hump_normal(
         d2D=lambda t: D2(t, *args()),
         DdD=lambda t: D01(t, *args()),
         bend=lambda t: Bend(t, *args()),
+        slope=lambda t: Slope(t, *args()),
         a=a,
         b=b,
         top=fl["top"],
@@ -754,7 +772,7 @@ def _lean_normal(req: Request, bits: int) -> Boundary | None:
     ``None`` where a step does not succeed at once; the caller then runs the general path, which
     repeats these steps and goes on from there."""
     n = req.order
-    D0, D1, D2, D01, E0, Bend = _normal_forms(-1 if n % 2 else 1)
+    D0, D1, D2, D01, E0, Bend, Slope = _normal_forms(-1 if n % 2 else 1)
     work = bits + QUICK_GUARD
     top = work if work > 80 else 80
     old = ctx.prec
@@ -861,7 +879,7 @@ def _lean_normal(req: Request, bits: int) -> Boundary | None:
                 if floor > size:
                     size = floor
                 X = arb(x, (size * pow2(4 - acc)).abs_upper())
-            dX = D1(X, c, r2, u, beta, g)  # of -D for the upper edge: the same quotient (above)
+            dX = Slope(X, c, r2, u, beta, g)  # of -D for the upper edge: the same quotient
             if _ZERO in dX or not dX.is_finite():  # (dX.contains(0), without converting 0)
                 return None
             N = x - D0(x, c, r2, u, beta, g) / dX
@@ -883,7 +901,7 @@ def _lean_normal(req: Request, bits: int) -> Boundary | None:
         # the shape: unimodality on [a, b] at 64 bits (_unimodal_shape's test, on args(64))
         ctx.prec = 64
         if not _unimodal(
-            A, B, N1, N2, Bend, D2, D1, D0, args=low, pieces=3 if convex else 1, direct=convex
+            A, B, N1, N2, Bend, D2, Slope, D0, args=low, pieces=3 if convex else 1, direct=convex
         ):
             return None
         # edges_result at the roots' precision: the parameters as they are at the proof's

@@ -101,7 +101,7 @@ def _derive(system: System, damping: str, backends=STORED_BACKENDS) -> dict[str,
 
     from analytic.model import S
 
-    from .derived import backend
+    from .derived import arb_text, backend
 
     forms = _proven(system, damping)
     names = tuple(forms.atoms)
@@ -123,9 +123,13 @@ def _derive(system: System, damping: str, backends=STORED_BACKENDS) -> dict[str,
     for b in backends:
         ns = backend(b).namespace
         many = b == "numpy"  # arrays: integer powers as products
-        out[key(f"values | {b}")] = _source(args, values, ns, cse=True, products=many)
-        out[key(f"atoms | {b}")] = _source((S.m, S.Q), exprs, ns, products=many)
-        out[key(f"atoms_om | {b}")] = _source((om, S.Q), near_one, ns, products=many)
+        texts = {
+            "values": _source(args, values, ns, cse=True, products=many),
+            "atoms": _source((S.m, S.Q), exprs, ns, products=many),
+            "atoms_om": _source((om, S.Q), near_one, ns, products=many),
+        }
+        for part, text in texts.items():
+            out[key(f"{part} | {b}")] = arb_text(text) if b == "arb" else text
     return out
 
 
