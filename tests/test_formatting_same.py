@@ -540,6 +540,46 @@ def test_many_thousand_digits_print():
     assert len(texts[0]) == 5001  # 5000 digits and the point
 
 
+@pytest.mark.parametrize("digits", [3, 15, 50, 100])
+def test_rows_with_wide_radii_and_zeros_as_before(digits):
+    """Rows from balls whose radii lie between one unit of the truncated digits (``10**-F``,
+    below which a radius is left out of the bound's bracket in doubles) and the least radius that
+    leaves not every digit usable -- each counted in the bound exactly -- and rows with a number
+    printed ``"0"`` (its radius wider than itself: its error ``|x| + r`` taken in doubles) beside
+    numbers printed in full: rows from balls against the reference
+    (:func:`assert_balls_as_numbers`), written in the one pass of
+    :func:`verify.result._row_of_balls`."""
+    from verify.certify import ball
+    from verify.result import _row_of_balls
+
+    def exact(v) -> Fraction:
+        man, exp = v.man_exp
+        return Fraction(man) * Fraction(2) ** exp
+
+    rng = random.Random(digits)
+    bits = int(digits * 3.33) + 60
+    zeros = 0
+    for _ in range(30):
+        # the last below 1/8 (a radius three times it stays below 1, the one pass's reach)
+        xs = [
+            _mpf(rng.choice([-1, 1]) * rng.getrandbits(bits), rng.randint(-12, top) - bits)
+            for top in (12, 12, 12, -3)
+        ]
+        # |x| 10**-(digits + j): every digit usable (j >= 1), and above one unit (j <= 3)
+        radii = [
+            _rounded(abs(exact(x)) / 10 ** (digits + rng.choice([1, 2, 3])), 30, True) for x in xs
+        ]
+        if rng.random() < 0.5:  # a number printed "0": its radius three times itself
+            radii[3] = _rounded(3 * abs(exact(xs[3])), 30, True)
+            zeros += 1
+        b = _row(xs[0], digits, radii=tuple(radii), deltas=(xs[2], xs[3]))
+        assert_balls_as_numbers(dataclasses.replace(b, upper=xs[1]))
+        balls = [ball(x, r) for x, r in zip(xs, radii, strict=True)]
+        row = _row_of_balls(balls, digits)
+        assert row is not None and (row[0][3] == "0") == (radii[3] > abs(xs[3]))
+    assert zeros > 5
+
+
 def test_row_bound_on_a_two_digit_value_and_beside_one():
     """The bound of a row from its errors' bounds in doubles (:func:`verify.result._row_of_balls`,
     :func:`verify.result._bound_between`) where the largest error is exactly a two-digit value

@@ -372,77 +372,73 @@ _TINY, _HUGE = 2.0**-990, 1.0
 def _row_of_balls(balls, dps: int) -> tuple[tuple, str | None] | None:
     """The four texts of a row and the bound of the printed digits
     (:func:`verify.rounding.largest_bound`) straight from the balls, in one pass: each midpoint's
-    mantissa and exponent and each radius (a double, exactly) read once, and the digits of
-    :func:`_nstr` (mpmath's ``to_str``: truncated at ``dps + 3`` digits, rounded half up) taken
-    by one division on the scale of :func:`_digit_scale`.  A number whose radius does not support
-    every digit asked for is printed by :func:`_proven_raw`.  The bound: each number's error
-    ``|printed - x| + r`` lies within 4.2 units of ``10**-F`` of what the division leaves (the
-    truncated digits lie less than that below ``|x| 10**F``: :func:`_digit_scale`), so the
-    largest is bracketed in doubles and rounded up to two digits (:func:`_bound_between`), or --
-    where the bracket does not decide the two digits, or out of the doubles' range -- computed
-    in integers on one scale (:func:`_exact_bound`).  ``None`` (the general path) for a zero
-    midpoint, a radius outside ``(_TINY, _HUGE)`` or huge exponents."""
+    mantissa and exponent read once, each radius placed between two powers of two by arb's
+    relative accuracy (read in full, a double exactly, only where it is not below one unit of
+    the digits), and the digits of :func:`_nstr` (mpmath's ``to_str``: truncated at ``dps + 3``
+    digits, rounded half up) taken by one division on the scale of :func:`_digit_scale`.  A
+    number whose radius does not support every digit asked for is printed by
+    :func:`_proven_raw`.  The bound: each number's error ``|printed - x| + r`` lies within 4.2
+    units ``u = 10**-F`` of ``rem u + r`` (``rem``: what the division leaves, the truncated digits
+    lying less than 4.2 units below ``|x| 10**F``: :func:`_digit_scale`), and ``r`` is either
+    counted or below one unit, so that the largest lies between ``most - 4.2 wide`` and ``most +
+    5.2 wide`` (``most`` the largest ``rem u`` with the radii counted, ``wide`` the largest
+    ``u``): it is rounded up to two digits in doubles (:func:`_bound_between`), or -- where that
+    bracket does not decide the two digits, or out of the doubles' range -- computed in integers
+    on one scale from the texts printed (:func:`_exact_bound`).  ``None`` (the general path) for
+    a zero midpoint, a radius outside ``(_TINY, _HUGE)`` or huge exponents."""
     scales = _ROW_SCALES.get(dps)
     if scales is None:
         scales = _ROW_SCALES[dps] = {}
     texts = []
-    raw = []  # (k, D, exp, man, radius) of each number: the printed value D 10**k
-    most = wide = 0.0  # the largest error lies within 4.2 wide of most, in doubles
+    most = wide = 0.0  # the largest error lies within 4.2 wide below most and 5.2 wide above
     exact = False  # the bound in integers
     for x in balls:
         man, exp = x.mid().man_exp()
         man = _index(man)  # FLINT's integers as Python's (int() exactly, without its dispatch)
-        f = float(x.rad())
         exp = _index(exp)
-        if man > 0:
-            mag = man
-        elif man:
-            mag = -man
-        else:
-            return None
+        # arb's relative accuracy: the radius r has 2**(top - acc - 2) <= r < 2**(top - acc - 1)
+        # (top = exp + bc; a zero midpoint has none: 1 - 2**63, or 2**63 - 1 with a zero
+        # radius), all the digits need to know of r, and the bound where r is below one unit
+        # (reading r itself costs twice as much)
+        acc = x.rel_accuracy_bits()
+        mag = -man if man < 0 else man
         bc = mag.bit_length()
         sc = scales.get(exp + bc)
         if sc is None:
-            sc = _digit_scale(dps, exp + bc) or False
+            sc = _digit_scale(dps, exp + bc) or _NO_SCALE
             if len(scales) < 4096:
                 scales[exp + bc] = sc
-        if sc and _TINY < f < sc[0]:  # every digit usable: |x| / (2 rad) > 2 10**dps
-            _, shift, p10, fixprec, thr, many, fewer, tens = sc
-            if shift < bc:
-                n = (mag >> (bc - shift)) * p10 >> fixprec
-            else:
-                n = (mag << (shift - bc)) * p10 >> fixprec
-            cut, half, exponent, k, pre, split, post, u = many if n >= thr else fewer
+        usable, tiny, unit, shift, p5, fix, thr, u, tens, cut, half, split, piece, nines, fewer = sc
+        if usable <= acc < tiny:  # every digit usable, r above _TINY (a zero midpoint: none)
+            n = (mag >> (bc - shift) if shift < bc else mag << (shift - bc)) * p5 >> fix
+            if n < thr:  # one digit fewer than the scale's most
+                cut, half, split, piece, nines = fewer
             D, rem = divmod(n, cut)
             # |printed - x| 10**F (F = fixdps): the printed value is rem units below the
             # truncated digits n, or cut - rem above, and n lies less than 4.2 units below
-            # |x| 10**F (:func:`_digit_scale`): the error lies within 4.2 u of rem u + f
+            # |x| 10**F (:func:`_digit_scale`): the error lies within 4.2 u of rem u + r
             if rem >= half:  # the first digit cut is 5 or more: round half up
                 D += 1
                 rem = cut - rem
-            e = rem * u + f  # (infinite where 10**-F is beyond the doubles: the integers')
+            e = rem * u  # (infinite where 10**-F is beyond the doubles: the integers')
+            if acc < unit:  # r not below one unit u: counted exactly (else in the bracket)
+                e += float(x.rad())
             if e > most:
                 most = e
             if u > wide:
                 wide = u
             if D == tens:  # a run of nines carried into the next power of ten
-                D //= 10
-                exponent += 1
-                k += 1
-                text = _digits_text(str(D), exponent, dps)
-            elif post:
+                text = nines
+            elif split:  # the first split digits, a point, the rest and an exponent (if any)
                 digits = str(D)
-                text = f"{digits[:1]}.{digits[1:]}{post}"
-            elif split:
-                digits = str(D)
-                text = f"{digits[:split]}.{digits[split:]}"
-            else:
-                text = pre + str(D)
+                text = f"{digits[:split]}.{digits[split:]}{piece}"
+            else:  # "0.00" (if any) and the digits
+                text = piece + str(D)
             if man < 0:
                 text = "-" + text
-                D = -D
         else:  # fewer digits, or no kept scale: :func:`_proven_raw` (its own test first)
-            if not _TINY < f < _HUGE:
+            f = float(x.rad())
+            if not (man and _TINY < f < _HUGE):
                 return None
             rm, den = f.as_integer_ratio()  # exact: a radius has a 30-bit mantissa
             text, dk = _proven_raw(
@@ -450,15 +446,21 @@ def _row_of_balls(balls, dps: int) -> tuple[tuple, str | None] | None:
             )
             if dk is None:  # huge exponents: mpmath's own path
                 return None
-            D, k = dk
-            exact = True
+            if dk[0] or bc > 1000:  # digits printed: their error cancels in doubles
+                exact = True
+            else:  # "0": the error is |x| + r exactly, in doubles to a relative 1e-15
+                e = _ldexp(float(mag), exp) + f
+                if e > most:
+                    most = e
         texts.append(text)
-        raw.append((k, D, exp, man, f))
-    # the largest error lies within 4.2 wide of most; most - 4.2 wide is then at least most / 2
-    # and off by half a unit in its last place at most (within _bound_between's margin)
-    wide *= 4.2
-    bound = None if exact or most < 2 * wide else _bound_between(most - wide, most + wide)
-    return tuple(texts), (_exact_bound(raw) if bound is None else bound)
+    # the largest error lies between most - 4.2 wide and most + 5.2 wide; the first is then at
+    # least most / 2 and off by half a unit in its last place at most (within _bound_between's
+    # margin)
+    if exact or most < 8.4 * wide:
+        bound = None
+    else:
+        bound = _bound_between(most - 4.2 * wide, most + 5.2 * wide)
+    return tuple(texts), (_exact_bound(balls, texts) if bound is None else bound)
 
 
 def _bound_between(least: float, most: float) -> str | None:
@@ -493,20 +495,28 @@ def _bound_between(least: float, most: float) -> str | None:
 _TEN_DOUBLES = {j: (float(10**j) if j >= 0 else 1 / 10**-j) for j in range(-300, 301)}
 #: the head of :func:`_bound_between`'s text by ``c``, the two digits (``"4.7e"`` for 47)
 _TWO_DIGITS = {c: f"{c // 10}.{c % 10}e" for c in range(11, 100)}
-_floor, _ceil, _log10 = math.floor, math.ceil, math.log10
+_floor, _ceil, _log10, _ldexp = math.floor, math.ceil, math.log10, math.ldexp
 
 
-def _exact_bound(raw) -> str:
-    """The bound of :func:`_row_of_balls` in integers: the largest ``|D 10**k - x| + r`` of the
-    items ``(k, D, exp, man, radius)`` (``x = man 2**exp``, the radius a double, exactly), all on
-    one scale ``2**a 10**b`` (:func:`verify.rounding.largest_bound`), rounded up to two
-    digits."""
+def _exact_bound(balls, texts) -> str:
+    """The bound of :func:`_row_of_balls` in integers: the largest ``|printed - x| + r`` of the
+    balls (``x`` a midpoint ``man 2**exp``, ``r`` a radius, a double exactly) and their printed
+    texts (the value ``D 10**k`` each text writes), all on one scale ``2**a 10**b``
+    (:func:`verify.rounding.largest_bound`), rounded up to two digits."""
     b = a = 0
     items = []
-    for k, D, exp, man, f in raw:
-        rm, den = f.as_integer_ratio()
+    for x, text in zip(balls, texts, strict=True):
+        man, exp = x.mid().man_exp()
+        exp = _index(exp)
+        rm, den = float(x.rad()).as_integer_ratio()
         re = 1 - den.bit_length()
-        items.append((k, D, exp, man, re, rm))
+        # the printed value: the text's digits, the point's place and the exponent (at most
+        # some 1400 digits: |x| < 2**3500 and r > 2**-990, :func:`_row_of_balls`)
+        number, _, e = text.partition("e")
+        head, _, tail = number.partition(".")
+        D = int(head + tail)
+        k = (int(e) if e else 0) - len(tail)
+        items.append((k, D, exp, _index(man), re, rm))
         if k < b:
             b = k
         if exp < a:
@@ -540,16 +550,23 @@ def _digits_text(digits: str, exponent: int, dps: int) -> str:
 
 def _digit_scale(dps: int, top: int) -> tuple | None:
     """What :func:`_row_of_balls` needs to print a number ``s`` with ``2**(top-1) <= |s| <
-    2**top`` as :func:`_nstr` does: the least radius (a double) that leaves not every digit
-    usable, then the truncated digits are ``n = (|man| >> (bc - shift)) p10 >> fixprec``
-    (:func:`_scale`, ``shift = bitprec``, ``p10 = 10**F``: the same integer as :func:`_nstr`'s),
-    and ``n`` has ``c`` or ``c - 1`` digits, ``c`` those of ``2**top 10**F``, told apart by ``thr
-    = 10**(c-1)``; for each count (``many``, ``fewer``): ``cut``, what the last printed digit
-    stands for (``cut 10**-F``), half of it, the decimal exponent of the first digit, that of the
-    last (``k``), the pieces of the text around the digits (:func:`_digits_text`) and ``u =
-    10**-F`` (a double, correctly rounded; infinite beyond the doubles' range); ``tens = 10**dps``.
-    ``None`` where :func:`_nstr`'s own steps serve: huge exponents, no fixed-point scale, or
-    fewer than ``dps + 1`` digits.
+    2**top`` as :func:`_nstr` does, as one tuple ``(usable, tiny, unit, shift, p5, fix, thr, u,
+    tens, *many, fewer)``.  First the bounds of a ball's relative accuracy ``acc`` (arb's: its
+    radius ``r`` has ``2**(top - acc - 2) <= r < 2**(top - acc - 1)``): every digit is usable and
+    ``r`` below 1 (``_HUGE``) where ``acc >= usable``, ``r`` is above ``_TINY`` where ``acc <
+    tiny``, and below one unit ``u = 10**-F`` where ``acc >= unit``.  Then the truncated digits
+    are ``n = (|man| >> (bc - shift)) p5 >> fix`` (:func:`_scale`, ``shift = bitprec``; ``p5 =
+    5**F`` and ``fix = fixprec - F``: ``p10 = 10**F = p5 2**F``, so this is :func:`_nstr`'s
+    ``(|man| >> (bc - shift)) p10 >> fixprec``, the same integer with a shorter factor), and ``n``
+    has ``c`` or ``c - 1`` digits, ``c`` those of ``2**top 10**F``, told apart by ``thr =
+    10**(c-1)``; ``u`` is a double, correctly rounded (infinite beyond the doubles' range), and
+    ``tens = 10**dps``.  For each count (``many``, in the tuple itself, and ``fewer``, a tuple of
+    its own): ``cut``, what the last printed digit stands for (``cut 10**-F``), half of it, how
+    the text is written (:func:`_digits_text`: the first ``split`` digits, a point, the rest and
+    ``piece``, an exponent or nothing; or, ``split = 0``, ``piece`` -- ``"0.00"`` or nothing --
+    and the digits) and the text of a run of nines carried into the next power of ten.  ``None``
+    where :func:`_nstr`'s own steps serve: huge exponents, no fixed-point scale, or fewer than
+    ``dps + 1`` digits.
 
     The truncated digits lie less than 4.2 units below ``|s| 10**F``: ``|man| >> (bc - shift)``
     is less than one unit below ``|man| 2**(shift - bc)``, which costs less than ``p10 /
@@ -573,30 +590,43 @@ def _digit_scale(dps: int, top: int) -> tuple | None:
     # a radius below 2**lim (re + rbc <= lim): |x| / (2 rad) > 2**(top - 2 - lim) >= 2 10**dps,
     # every digit usable (and :func:`_proven`'s own test passes)
     lim = top - 3 - math.ceil(dps * _LOG2_10)
-    limf = _HUGE if lim >= 0 else (math.ldexp(1.0, lim) if lim > -1070 else 0.0)
 
     def count(size: int) -> tuple:
         cut = _pow10(size - dps)
         exponent = size - fixdps - 1
         if not low < exponent < dps:  # with an exponent
-            pre, split, post = "", 1, (f"e+{exponent}" if exponent > 0 else f"e{exponent}")
+            split, piece = 1, (f"e+{exponent}" if exponent > 0 else f"e{exponent}")
         elif exponent < 0:  # "0.00" and the digits
-            pre, split, post = "0." + "0" * (-exponent - 1), 0, ""
+            split, piece = 0, "0." + "0" * (-exponent - 1)
         elif exponent + 1 < dps:
-            pre, split, post = "", exponent + 1, ""
+            split, piece = exponent + 1, ""
         else:  # every digit before the point: no point written (:func:`_nstr`)
-            pre, split, post = "", 0, ""
-        # u: 10**-F (F = fixdps) as a double, correctly rounded (infinite beyond the doubles'
-        # range: the bound then comes from the integers)
-        u = 1 / p10 if fixdps < 280 else math.inf
-        return cut, cut // 2, exponent, exponent + 1 - dps, pre, split, post, u
+            split, piece = 0, ""
+        # the digits rounded up to 10**dps: 10**(dps-1), one place higher
+        nines = _digits_text("1" + "0" * (dps - 1), exponent + 1, dps)
+        return cut, cut // 2, split, piece, nines
 
-    return (limf, bitprec, p10, fixprec, _pow10(c - 1), count(c), count(c - 1), _pow10(dps))
+    # r < 2**(top - acc - 1) is below 2**lim (every digit usable) and 1 where acc >= usable, and
+    # below 2**-b < 10**-F (b: the bits of 10**F) where acc >= unit; r >= 2**(top - acc - 2) is
+    # above 2**-990 where acc < tiny
+    usable = top - 1 - min(lim, 0)
+    tiny = top + 988
+    unit = top - 1 + p10.bit_length()
+    # u: 10**-F (F = fixdps) as a double, correctly rounded (infinite beyond the doubles' range:
+    # the bound then comes from the integers)
+    u = 1 / p10 if fixdps < 280 else math.inf
+    p5 = p10 >> fixdps  # 5**F (F <= fixprec)
+    head = (usable, tiny, unit, bitprec, p5, fixprec - fixdps, _pow10(c - 1), u, _pow10(dps))
+    return head + count(c) + (count(c - 1),)
 
 
-#: the scales of :func:`_row_of_balls` by digits, then by ``exponent + bitcount`` (``False``
+#: a scale no radius passes (no accuracy ``acc`` with ``0 <= acc < 0``): :func:`_row_of_balls`
+#: prints by :func:`_proven_raw`
+_NO_SCALE = (0, 0, *(None,) * 13)
+
+#: the scales of :func:`_row_of_balls` by digits, then by ``exponent + bitcount`` (``_NO_SCALE``
 #: where :func:`_nstr`'s own steps serve)
-_ROW_SCALES: dict[int, dict[int, tuple | bool]] = {}
+_ROW_SCALES: dict[int, dict[int, tuple]] = {}
 
 
 def _raw_max(rads: tuple) -> tuple:

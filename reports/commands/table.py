@@ -361,6 +361,10 @@ def csv_text(header, data) -> str:
     are written by the writer itself."""
     lines = [",".join(header)]
     add = lines.append
+    # the fields that could need quotes (the header's and the rows' texts; not the orders and the
+    # depths, which are numbers), to be searched at once
+    fields = list(header)
+    more = fields.extend
     # the text of each depth, once a table (the orders repeat them), by the depth itself (data
     # holds every depth while this runs: no two at one id)
     depths: dict = {}
@@ -369,19 +373,19 @@ def csv_text(header, data) -> str:
         mt = depths.get(key)
         if mt is None:
             mt = depths[key] = decimal_text(r[1])
+        texts = r[2:]
         try:
-            add(f"{r[0]},{mt}," + ",".join(r[2:]))
+            add(f"{r[0]},{mt}," + ",".join(texts))
         except TypeError:  # a missing number (None) or a field that is not text
-            add(f"{r[0]},{mt}," + ",".join(["" if v is None else str(v) for v in r[2:]]))
+            texts = ["" if v is None else str(v) for v in texts]
+            add(f"{r[0]},{mt}," + ",".join(texts))
+        more(texts)
     add("")
-    text = "\n".join(lines)
-    commas = len(header) - 1 + sum(map(len, data)) - len(data)
-    if (
-        text.count(",") == commas
-        and text.count("\n") == len(lines) - 1
-        and not ('"' in text or "\r" in text)
-    ):
-        return text
+    # one search per character over the fields alone (a search for one character is much
+    # cheaper than a count of it over the whole text, commas and line ends included)
+    probe = "".join(fields)
+    if not ("," in probe or "\n" in probe or '"' in probe or "\r" in probe):
+        return "\n".join(lines)
     buf = io.StringIO()  # a field to quote: the writer's own lines
     w = csv.writer(buf, lineterminator="\n")
     w.writerow(header)
