@@ -246,6 +246,7 @@ ARB_FORMS = [
     ("edge_equation", (-1,), (0, 1)),
     ("trace_indicator", ("under", "over"), 2),
     ("near_one_forms[2]", (), 2),
+    ("near_one_forms[0]", (), 2),  # (a dyadic rational: _q(1, 2))
 ]
 
 
@@ -333,3 +334,23 @@ def test_the_slope_is_the_indicators_derivative():
                 args += [arb(rng.uniform(0.05, 1)) for _ in range(4)]
                 a, b = slope(*args), d1(*args)
                 assert a.overlaps(b) and abs(a - b) < arb(2) ** -60 * (1 + abs(b))
+
+
+def test_dyadic_constants_are_the_rationals_they_replace():
+    """A rational with a power of two below becomes a constant made once above the function
+    (``_q(1, 2)`` -> ``_q1_2``, ``_q(-3, 4)`` -> ``_qm3_4``), each use reads it, another rational
+    stays a call, and the function gives the very balls of the text with the calls at 24 to
+    300 bits."""
+    text = (
+        "def _lambdifygenerated(x0, x1):\n"
+        "    return (_q(1, 2))*x0 + (_q(1, 2))*x1 - _q(-3, 4)*x0 + _q(2, 3)*x1 + _q(5, 1)\n"
+    )
+    out = derived.dyadic_constants(text)
+    lines = out.split("\n")
+    assert lines[:2] == ["_q1_2 = _dyadic(1, -1)", "_qm3_4 = _dyadic(-3, -2)"]
+    assert "(_q1_2)*x0 + (_q1_2)*x1 - _qm3_4*x0 + _q(2, 3)*x1 + _q5_1" in out
+    before, after = derived.load_source(text, "arb"), derived.load_source(out, "arb")
+    for prec in (24, 64, 300):
+        with ctx.workprec(prec):
+            xs = (arb("0.3", "1e-9"), arb(-1.7))
+            assert _same_ball(after(*xs), before(*xs))

@@ -167,6 +167,7 @@ _BACKENDS = {
         "sin_cos": methodcaller("sin_cos"),
         "sinh_cosh": methodcaller("sinh_cosh"),
         "_q": _arb_q,
+        "_dyadic": lambda man, exp: arb((man, exp)),  # man 2**exp, exactly (dyadic_constants)
         "_pi": arb.pi,
     },
 }
@@ -280,8 +281,9 @@ def arb_text(text: str) -> str:
     """A compiled text for the arb back end, as :func:`sympy.lambdify` wrote it, with the work
     of each evaluation cut and its balls unchanged: pairs shared (:func:`share_pairs`), squares
     as products (:func:`squares_as_products`) and the functions as method calls
-    (:func:`method_calls`)."""
-    return method_calls(squares_as_products(share_pairs(text)))
+    (:func:`method_calls`), and the rationals with a power of two below as constants made once
+    (:func:`dyadic_constants`)."""
+    return dyadic_constants(method_calls(squares_as_products(share_pairs(text))))
 
 
 _PAIRS = (("sin", "cos", "sin_cos"), ("sinh", "cosh", "sinh_cosh"))
@@ -366,6 +368,28 @@ def method_calls(text: str) -> str:
         return f"{v}.{mt.group(1)}()" if re.fullmatch(r"\w+", v) else f"({v}).{mt.group(1)}()"
 
     return "\n".join(lines[:1] + [pat.sub(repl, line) for line in lines[1:]])
+
+
+def dyadic_constants(text: str) -> str:
+    """An arb form's text with each rational ``_q(p, q)`` whose denominator is a power of two
+    (and ``|p| < 2**24``) read from a name made once, above the function, by ``_dyadic(p, -k)``
+    (``q = 2**k``): the ball ``p 2**-k`` exactly, which is the ball ``_q(p, q)`` gives at any
+    working precision of 24 bits or more (the quotient is exact), where each evaluation made it
+    again (a conversion and a division, about 190 ns).  ``_q(1, 2)`` is the mean of two phases'
+    values in the parameters of the family (equal halves), the most frequent of them."""
+    pat = re.compile(r"(?<![\w.])_q\((-?\d+), (\d+)\)")
+    made: dict[str, str] = {}
+
+    def repl(mt):
+        p, q = int(mt.group(1)), int(mt.group(2))
+        if q & (q - 1) or abs(p) >= 2**24:
+            return mt.group(0)
+        name = f"_q{'m' if p < 0 else ''}{abs(p)}_{q}"
+        made[name] = f"{name} = _dyadic({p}, {1 - q.bit_length()})"
+        return name
+
+    body = pat.sub(repl, text)
+    return "".join(f"{line}\n" for line in made.values()) + body
 
 
 def hoist_powers(text: str, names, least: int = 3) -> tuple[str, tuple]:
