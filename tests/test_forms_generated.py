@@ -303,6 +303,18 @@ def test_squares_as_products_hoists_a_call_and_keeps_precedence():
     assert _same_ball(got, want)
 
 
+def test_squares_as_products_leaves_a_square_whose_exponent_is_raised():
+    """``x**2**k`` is ``x**(2**k)`` (``**`` groups from the right): the ``2`` is no square's
+    exponent, and the text (a name or a call as the base) stays as it was, with its value."""
+    import math
+
+    text = "def _lambdifygenerated(x, y):\n    return x**2**y + cos(x)**2**3 - y**2\n"
+    out = derived.squares_as_products(text)
+    assert out.split("\n")[1] == "    return x**2**y + cos(x)**2**3 - (y*y)"
+    fn = derived.load_source(out, "math")
+    assert fn(1.25, 3.0) == 1.25**8 + math.cos(1.25) ** 8 - 9
+
+
 def test_method_calls_rewrite_only_the_back_ends_methods():
     """``sin(v)`` becomes ``(v).sin()`` (a plain name without the parentheses), with one level
     of parentheses inside the argument; a deeper argument keeps the call (the same method, through

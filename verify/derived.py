@@ -331,8 +331,9 @@ def squares_as_products(text: str) -> str:
     such a call is made once, into a new name ``_sq<k>`` assigned just before the first line that
     squares it, so that the product does not evaluate it twice."""
     lines = text.split("\n")
-    name_sq = re.compile(r"(?<![\w.])([A-Za-z_]\w*)\*\*2(?![\w.])")
-    call_sq = re.compile(r"(?<![\w.])([A-Za-z_]\w*\([^()]*\))\*\*2(?![\w.])")
+    # (not a base of a power in the exponent: x**2**k is x**(2**k))
+    name_sq = re.compile(r"(?<![\w.])([A-Za-z_]\w*)\*\*2(?![\w.]|\*\*)")
+    call_sq = re.compile(r"(?<![\w.])([A-Za-z_]\w*\([^()]*\))\*\*2(?![\w.]|\*\*)")
     calls: dict[str, str] = {}
     out = lines[:1]
 
