@@ -101,6 +101,43 @@ def test_a_scene_without_floor_is_timed_alone_against_seconds():
     assert floor is None and ours >= 0 and len(calls) == 1 + 3  # one warm-up call, three samples
 
 
+def test_short_calls_are_timed_in_more_shorter_samples(monkeypatch):
+    """Calls shorter than ``min_time / SPLIT`` are timed in ``SPLIT`` times as many samples of a
+    ``SPLIT``-th of the time (ours and the floor alternating that much more often); longer calls
+    in the samples asked for.  The clock is a counter: each call of a function advances it by
+    that function's time."""
+    floors = _load("floors")
+    now, reads = [0.0], [0]
+
+    def clock():
+        reads[0] += 1
+        return now[0]
+
+    monkeypatch.setattr(floors, "_clock", lambda kind: clock)
+
+    def timed(seconds: float, log: list):
+        def fn():
+            now[0] += seconds
+            log.append(seconds)
+
+        return fn
+
+    assert floors.SPLIT > 1
+    for seconds, want in ((1e-4, 9 * floors.SPLIT), (0.01, 9)):
+        ours_log, floor_log = [], []
+        reads[0] = 0
+        ours, floor = floors.measure(
+            timed(seconds, ours_log), timed(2 * seconds, floor_log), samples=9, min_time=0.03
+        )
+        assert ours == pytest.approx(seconds) and floor == pytest.approx(2 * seconds)
+        # one warm-up call, one to size the batches, then the samples of ``per`` calls each
+        per, left = divmod(len(floor_log) - 2, want)
+        length = 0.03 / (floors.SPLIT if want > 9 else 1)
+        assert left == 0 and abs(per - length / (2 * seconds)) <= 1, (seconds, len(floor_log))
+        # two reads to size the batches of each, and two a sample of each
+        assert reads[0] == 2 * 2 + 2 * 2 * want
+
+
 @pytest.mark.parametrize("digits", [15, 60, 300])
 def test_the_certified_floor_encloses_the_engines_edges(digits):
     fc = _load("floor_certified")
