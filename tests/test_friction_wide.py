@@ -166,6 +166,67 @@ def test_overdamped_order_one_has_no_interval_where_kappa_is_small(k, nu1, nu2):
         assert overdamped_no_interval(p)
 
 
+def _scaled_max_of_D(k: str, nu1: str, nu2: str) -> mpmath.mpf:
+    """The largest ``D / cosh(2 zeta)`` of order 1 (both halves over-damped) over ``zeta`` from
+    1e-4 to 1e5 (a geometric grid of 800), in mpmath at 40 digits; ``kappa = 2 k nu1 nu2``."""
+    with mpmath.workdps(40):
+        n1, n2 = mpmath.mpf(nu1), mpmath.mpf(nu2)
+        kap = mpmath.mpf(k) * 2 * n1 * n2
+        best = -mpmath.inf
+        for i in range(800):
+            z = mpmath.mpf(10) ** (-4 + 9 * i / 799)
+            C1, C2 = mpmath.cosh(n1 * z), mpmath.cosh(n2 * z)
+            S1, S2 = mpmath.sinh(n1 * z) / n1, mpmath.sinh(n2 * z) / n2
+            D = -(2 * C1 * C2 - kap * S1 * S2) - 2 * mpmath.cosh(2 * z)
+            best = max(best, D / mpmath.cosh(2 * z))
+        return best
+
+
+@pytest.mark.parametrize(
+    "k, nu1, nu2, proven",
+    [
+        ("3.004", "0.999999", "0.998", True),  # m = 0.999, Q = 0.001: s = 1.998
+        ("3.0009", "0.9999", "0.9999", True),  # s = 1.9998: up to about 1 + 4/s = 3.0002, and on
+        ("3.3", "0.95", "0.9", True),
+        ("5", "0.5", "0.5", True),  # a <= 1: (k - 1) s/4 = 1
+        ("3.01", "0.9999", "0.9999", False),  # D > 0 at large zeta: an interval
+        ("4.2", "0.9", "0.88", False),  # D < 0, but beyond what the bound proves
+    ],
+)
+def test_overdamped_bound_by_log_convexity(k, nu1, nu2, proven):
+    """Above ``k = 3`` (``kappa > 6 nu1 nu2``) :func:`verify.hump.overdamped_no_interval` proves
+    ``D < 0`` by ``cosh(s zeta) <= cosh(2 zeta)**(s/2)`` where that bound reaches: it says so
+    only where the scaled ``D / cosh(2 zeta)`` is negative at every ``zeta`` of a grid from 1e-4
+    to 1e5 (mpmath, 40 digits), and not where it is positive somewhere."""
+    from flint import arb
+
+    from verify.hump import overdamped_no_interval
+    from verify.params import TraceParams
+
+    top = _scaled_max_of_D(k, nu1, nu2)
+    kap = mpmath.mpf(k) * 2 * mpmath.mpf(nu1) * mpmath.mpf(nu2)
+    p = TraceParams(arb(mpmath.nstr(kap, 30)), arb(nu1), arb(nu2), None, None)
+    got = overdamped_no_interval(p)
+    assert bool(got) == proven
+    if got:
+        assert top < 0 and "log-convexity" in got
+    if k == "3.01":
+        assert top > 0
+
+
+def test_overdamped_near_one_at_a_tiny_quality_factor():
+    """``m = 0.999``, ``Q = 0.001`` (``k = 3.004``, ``s = 1.998``): refused before (the trace
+    form's window reached beyond the doubles); now no interval, certified by the bound by
+    log-convexity, and the reference monodromy agrees: ``|mu|max < 1`` at 120 periods from
+    ``T/T0 = 1e-3`` to 30 (a geometric grid)."""
+    b = boundary(1, "0.999", Q="0.001", digits=15)
+    assert not b.exists and b.certified
+    assert any("log-convexity" in note for note in b.notes)
+    for i in range(120):
+        T = mpmath.nstr(mpmath.mpf(10) ** (-3 + 4.5 * i / 119), 15)
+        assert _excess(T, "0.999", "0.001", "exact", 30) < 0
+
+
 def test_overdamped_criterion_is_not_met_where_an_interval_exists():
     """At ``m = 0.99``, ``Q = 0.0102`` the order-1 interval exists (``|mu|max > 1`` inside it, by
     the reference monodromy) and ``k = kappa/(2 nu1 nu2)`` is about 3.2: the criterion does not

@@ -1054,10 +1054,7 @@ def hump_trace(
         finally:
             ctx.prec = old
         if none:
-            return None, (
-                "both halves are over-damped, with kappa <= 6 nu1 nu2 in the trace form: D < 0 "
-                "at every period"
-            )
+            return None, none
     Tf = trace_params(m, Q, _MATH, system)
     try:
         window = window or trace_window_ends(n, regimes, Tf)
@@ -1214,29 +1211,61 @@ def trace_phase(regimes, P, z, m_box=None, m=None, Q=None) -> arb:
 _RANGE_START = 0.05
 
 
-def overdamped_no_interval(p) -> bool:
+def overdamped_no_interval(p) -> str | None:
     """Order 1 has no interval at any period: both halves over-damped (``nu1, nu2 > 0``, the
-    trace form's ``C_i = cosh(nu_i zeta)``, ``S_i = sinh(nu_i zeta)/nu_i``) and ``kappa <= 6 nu1
-    nu2``; ``p`` holds the balls ``kappa``, ``nu1``, ``nu2`` (of one depth, or of every depth of
-    a range).  ``s = nu1 + nu2 < 2`` holds by the model, not tested here (over the balls of a
-    range of depths it would often not be decided): an over-damped half has ``nu_i =
+    trace form's ``C_i = cosh(nu_i zeta)``, ``S_i = sinh(nu_i zeta)/nu_i``) and ``k = kappa/(2 nu1
+    nu2)`` small enough; ``p`` holds the balls ``kappa``, ``nu1``, ``nu2`` (of one depth, or of
+    every depth of a range).  The reason, as a result's note, where this is proven; else
+    ``None``.  ``s = nu1 + nu2 < 2`` holds by the model: an over-damped half has ``nu_i =
     sqrt(gamma^2 - omega_i^2)/gamma < 1`` (``omega_i^2 > 0``), scaled by its share of the period
-    (``2 D`` and ``2 (1 - D)``, :func:`verify.system_params.trace_values`), which sum to 2.
+    (``2 D`` and ``2 (1 - D)``, :func:`verify.system_params.trace_values`), which sum to 2.  The
+    first bound does not test it (over the balls of a range of depths it would often not be
+    decided); the second one uses the ball of ``s`` and needs it below 2.
 
-    With ``sigma = -1`` (order 1), ``s = nu1 + nu2``, ``d = nu1 - nu2``, ``k = kappa/(2 nu1
-    nu2)`` and ``C1 C2 = (cosh(s zeta) + cosh(d zeta))/2``, ``nu1 nu2 S1 S2 = (cosh(s zeta) -
-    cosh(d zeta))/2``::
+    With ``sigma = -1`` (order 1), ``s = nu1 + nu2``, ``d = nu1 - nu2`` and ``C1 C2 = (cosh(s
+    zeta) + cosh(d zeta))/2``, ``nu1 nu2 S1 S2 = (cosh(s zeta) - cosh(d zeta))/2``::
 
         D = -(2 C1 C2 - kappa S1 S2) - 2 cosh(2 zeta)
           = (k - 1) cosh(s zeta) - (k + 1) cosh(d zeta) - 2 cosh(2 zeta).
 
-    For ``-1 <= k <= 3``: ``(k - 1) cosh(s zeta) <= 2 cosh(s zeta) <= 2 cosh(2 zeta)`` (``k - 1
-    <= 2``; ``0 < s < 2``, ``zeta >= 0``), so ``D <= -(k + 1) cosh(d zeta)``, negative for ``k >
-    -1``; and ``D = -2 cosh(s zeta) - 2 cosh(2 zeta)`` for ``k = -1``.  For ``k < -1``: ``-(k +
-    1) cosh(d zeta) <= -(k + 1) cosh(s zeta)`` (``|d| <= s``), so ``D <= -2 cosh(s zeta) - 2
-    cosh(2 zeta)``.  Hence ``D < 0`` for every ``zeta >= 0``: no interval of order 1."""
+    **k <= 3** (``kappa <= 6 nu1 nu2``).  For ``-1 <= k <= 3``: ``(k - 1) cosh(s zeta) <= 2
+    cosh(s zeta) <= 2 cosh(2 zeta)`` (``k - 1 <= 2``; ``0 < s < 2``, ``zeta >= 0``), so ``D <=
+    -(k + 1) cosh(d zeta)``, negative for ``k > -1``; and ``D = -2 cosh(s zeta) - 2 cosh(2
+    zeta)`` for ``k = -1``.  For ``k < -1``: ``-(k + 1) cosh(d zeta) <= -(k + 1) cosh(s zeta)``
+    (``|d| <= s``), so ``D <= -2 cosh(s zeta) - 2 cosh(2 zeta)``.
+
+    **k > 1, by log-convexity** (sharper where ``s`` is below 2: it reaches past ``k = 3`` up to
+    ``1 + 4/s`` and beyond).  ``log cosh`` is convex and 0 at 0, so ``cosh(l x) <= cosh(x)**l``
+    for ``0 <= l <= 1``: with ``l = s/2`` and ``C = cosh(2 zeta) >= 1``, ``cosh(s zeta) <=
+    C**l``; and ``cosh(d zeta) >= 1``.  So ``D <= h(C) = (k - 1) C**l - 2 C - (k + 1)`` (``k -
+    1 > 0``, ``k + 1 > 0``), concave in ``C > 0`` with its maximum at ``C* = a**(1/(1 - l))``,
+    ``a = (k - 1) l/2``, where ``(k - 1) C***l = 2 C*/l``: ``h <= h(C*) = 2 C* (1 - l)/l - (k +
+    1)``, and ``h(1) = -4`` where ``C* <= 1`` (``a <= 1``).  Hence ``D < 0`` where ``a <= 1`` or
+    ``log(2 (1 - l)/l) + log(a)/(1 - l) < log(k + 1)`` -- in logarithms, so that ``C*`` (huge as
+    ``s -> 2``) is never formed.
+
+    Either way ``D < 0`` for every ``zeta >= 0``: no interval of order 1."""
     nu1, nu2, kappa = p.nu1, p.nu2, p.kappa
-    return bool(nu1 > 0 and nu2 > 0 and kappa <= 6 * nu1 * nu2)
+    if not (nu1 > 0 and nu2 > 0):
+        return None
+    if kappa <= 6 * nu1 * nu2:
+        return (
+            "both halves are over-damped, with kappa <= 6 nu1 nu2 in the trace form: D < 0 "
+            "at every period"
+        )
+    k = kappa / (2 * nu1 * nu2)
+    lam = (nu1 + nu2) / 2
+    if not (k > 1 and lam > 0 and lam < 1):
+        return None
+    a = (k - 1) * lam / 2
+    if not a <= 1:
+        bound = (2 * (1 - lam) / lam).log() + a.log() / (1 - lam)
+        if not bound < (k + 1).log():
+            return None
+    return (
+        "both halves are over-damped, with k = kappa/(2 nu1 nu2) below the bound by log-convexity "
+        "(cosh(s zeta) <= cosh(2 zeta)**(s/2)) in the trace form: D < 0 at every period"
+    )
 
 
 def prove_no_window(n: int, regimes, P, ztail: float, m_box=None, m=None, Q=None) -> bool:
