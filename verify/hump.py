@@ -112,9 +112,13 @@ class _Hump:
     #: ``-D''/2`` in a form whose enclosure of a wide ball is tighter and cheaper than ``D''``'s
     #: (:func:`verify.derived.indicator_bend`), where there is one: the concavity test
     bend: Callable | None = None
-    #: ``D'`` in a cheaper form (:func:`verify.derived.indicator_slope`), where there is one: the
-    #: interval Newton test's slope, and ``D'`` in the shape's tests
+    #: ``D'`` in a cheaper form (:func:`verify.derived.indicator_slope`), where there is one (else
+    #: ``dD`` itself): the interval Newton test's slope, and ``D'`` in the shape's tests
     slope: Callable | None = None
+
+    def __post_init__(self):
+        if self.slope is None:
+            self.slope = self.dD
 
 
 def _unimodal_shape(h: _Hump, lo_root, hi_root, budget: int = 16) -> bool:
@@ -124,9 +128,8 @@ def _unimodal_shape(h: _Hump, lo_root, hi_root, budget: int = 16) -> bool:
     ctx.prec = 64
     try:
         return _unimodal(
-            arb(h.a), arb(h.b), lo_root.ball, hi_root.ball, h.bend, h.d2D, h.slope or h.dD, h.D,
-            budget,
-        )  # (h.a, h.b floats: exact)  # fmt: skip
+            arb(h.a), arb(h.b), lo_root.ball, hi_root.ball, h.bend, h.d2D, h.slope, h.D, budget
+        )  # (h.a, h.b floats: exact)
     finally:
         ctx.prec = old
 
@@ -193,12 +196,9 @@ def _unimodal(
             return False
         X = u.union(v)  # u, v exact: a ball holding [u, v]
         if end and not (u < lo and hi < v):  # an end piece named by direct: D' on X itself
-            d1 = dD(X, *args)
-            if d1 > zero:
-                labels.append("up")
-                continue
-            if d1 < zero:
-                labels.append("down")
+            label = _slope_label(dD(X, *args))
+            if label:
+                labels.append(label)
                 continue
         if bend is not None:
             d2 = bend(X, *args)
@@ -214,12 +214,9 @@ def _unimodal(
         mid = X.mid()
         if not (u < lo and hi < v):
             # D' on X by the mean-value form around the midpoint (D'' on X is d2)
-            d1 = dD(mid, *args) + d2 * (X - mid)
-            if d1 > zero:
-                labels.append("up")
-                continue
-            if d1 < zero:
-                labels.append("down")
+            label = _slope_label(dD(mid, *args) + d2 * (X - mid))
+            if label:
+                labels.append(label)
                 continue
         if (v < lo or hi < u) and D(X, *args) < zero:  # (elsewhere a neg piece fails the shape)
             labels.append("neg")
@@ -239,6 +236,16 @@ def _unimodal(
         elif label == "up" and down:
             return False
     return True
+
+
+def _slope_label(d1: arb) -> str | None:
+    """:func:`_unimodal`'s label of a piece where ``d1`` encloses ``D'`` on it: ``up``, ``down``,
+    or ``None`` where the sign is not decided."""
+    if d1 > _ZERO:
+        return "up"
+    if d1 < _ZERO:
+        return "down"
+    return None
 
 
 def _prove_shape(h: _Hump, lo_root, hi_root, unimodal: bool = True) -> bool:
@@ -373,8 +380,7 @@ def _solve_hump(req: Request, h: _Hump, bits: int):
 
     neg = lambda t: -h.D(t)  # noqa: E731
     dneg = lambda t: -h.dD(t)  # noqa: E731
-    # the interval Newton test's slope on its narrow ball (D' in a cheaper form, where there is one)
-    slope = h.dD if h.slope is None else h.slope
+    slope = h.slope  # the interval Newton test's D' on its narrow ball
     slope_neg = lambda t: -slope(t)  # noqa: E731
     if h.DdD is not None:
         both = h.DdD
