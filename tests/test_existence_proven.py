@@ -111,6 +111,41 @@ def test_reason_in_a_gap_around_a_closing():
         simulate(4, "0.7988", Q=3, edge="lower")
 
 
+def test_critical_damping_is_decided_across_the_axis():
+    """Was, at Q = 1/2 (phase 2 critically damped at m -> 0): undecided for 2.4e-7 < m < 0.289
+    (the tail bound's ``zeta a > 2`` held at the middle of a range with a margin of 1e-6, and
+    ``a`` varies more over the range), around the threshold (0.6338 < m < 0.6348) and above
+    m = 0.948 (the phases at the window's ends wider than its margin over a range).  Every depth
+    away from m = 0 is now decided and agrees with the certified boundary, and the threshold
+    lies between two depths 1e-13 apart that the boundary decides apart."""
+    ex = _ex(1, "1/2", "exact")
+    assert all(hi < Fraction(1, 10**100) for _, hi in ex.undecided)
+    for m in ["1e-6", "0.1", "0.289", "0.6", "0.7", "0.95", "0.999", "0.9999999"]:
+        sign = _sign_at(ex, Fraction(m))
+        assert sign is not None, m
+        assert boundary(1, m, Q="1/2", digits=10).exists == (sign == 1), m
+    (t,) = ex.thresholds
+    assert t.appears and t.text().startswith("0.6345193500009")
+    assert not boundary(1, "0.6345193500009", Q="1/2", digits=20).exists
+    assert boundary(1, "0.6345193500010", Q="1/2", digits=20).exists
+
+
+@pytest.mark.parametrize("order,Q", [(1, "0.7"), (1, "0.3"), (2, "0.3")])
+def test_the_tail_towards_one_is_decided_in_the_trace_form(order, Q):
+    """Was: undecided from m = 0.99901 (order 1) or in alternate pieces from m = 0.99936 (order
+    2) up to 1, where a half is over-damped (the trace form): over a range a tenth as wide as
+    ``1 - m`` the phase at the window's ends is a ball a hundredth of pi wide, more than the
+    window's margin.  The interval now exists up to m -> 1, as the certified boundary finds at
+    depths 1e-4 to 1e-12 from 1."""
+    ex = _ex(order, Q, "exact")
+    assert not [r for r in ex.undecided if r[1] > Fraction(99, 100)]
+    assert ex.open_to_one
+    for k in (4, 7, 12):
+        m = 1 - Fraction(1, 10**k)
+        assert _sign_at(ex, m) == 1
+        assert boundary(order, m, Q=Q, digits=10).exists
+
+
 CASES = [
     (3, "7", "exact"),
     (3, "7", "paper"),
@@ -119,6 +154,8 @@ CASES = [
     (5, "2.0089", "exact"),  # near the birth of the island (it exists above Q ~ 2.0088)
     (3, "0.3", "exact"),
     (1, "5", "paper"),
+    (1, "1/2", "exact"),  # critical damping of phase 2 at m -> 0
+    (2, "0.7", "exact"),
 ]
 
 

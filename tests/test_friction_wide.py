@@ -362,3 +362,84 @@ def test_existence_proves_the_overdamped_interval_over_depth_ranges(Q, lo, hi):
         j = bd.as_json()
         mid = (mpmath.mpf(j["lower"]) + mpmath.mpf(j["upper"])) / 2
         assert _excess(mpmath.nstr(mid, 20), m, Q, "exact", 40) > 0
+
+
+def _D_trace_order_one(k, nu1, nu2, z):
+    """The trace form's ``D`` of order 1 with both halves over-damped, in mpmath from its
+    definition (``C_i = cosh(nu_i z)``, ``S_i = sinh(nu_i z)/nu_i``, ``kappa = 2 k nu1 nu2``)."""
+    C1, C2 = mpmath.cosh(nu1 * z), mpmath.cosh(nu2 * z)
+    S1, S2 = mpmath.sinh(nu1 * z) / nu1, mpmath.sinh(nu2 * z) / nu2
+    return -(2 * C1 * C2 - 2 * k * nu1 * nu2 * S1 * S2) - 2 * mpmath.cosh(2 * z)
+
+
+def test_overdamped_beyond_holds_past_the_last_zero_and_only_there():
+    """:func:`verify.hump.overdamped_beyond` (``D < 0`` from ``z`` on, both halves over-damped,
+    order 1) against ``D`` in mpmath (40 digits): where ``D`` has a last zero ``z0`` (an interval
+    exists; below ``zeta = 90``), it does not claim at ``0.999 z0`` and does claim at ``1.001
+    z0``; wherever it claims, ``D < 0`` on a grid from ``z`` to ``z + 400``."""
+    import random
+    from types import SimpleNamespace
+
+    from flint import arb, ctx
+
+    from verify.hump import overdamped_beyond
+
+    rng = random.Random(11)
+    claims = 0
+    with mpmath.workdps(40):
+        for _ in range(60):
+            nu1 = mpmath.mpf(rng.uniform(0.3, 0.999))
+            nu2 = mpmath.mpf(rng.uniform(0.3, min(0.999, 1.999 - float(nu1))))
+            k = mpmath.mpf(10 ** rng.uniform(0.3, 4))
+            p = SimpleNamespace(
+                nu1=arb(mpmath.nstr(nu1, 40)),
+                nu2=arb(mpmath.nstr(nu2, 40)),
+                kappa=arb(mpmath.nstr(2 * k * nu1 * nu2, 40)),
+            )
+            grid = [mpmath.mpf(j) / 20 for j in range(1, 2000)]
+            positive = [z for z in grid if _D_trace_order_one(k, nu1, nu2, z) >= 0]
+            if positive and positive[-1] > 90:  # D > 0 up to the grid's end: no last zero seen
+                continue
+            old, ctx.prec = ctx.prec, 64
+            try:
+                if positive:  # the last zero, by bisection
+                    a, b = positive[-1], positive[-1] + mpmath.mpf(1) / 20
+                    for _ in range(120):
+                        c = (a + b) / 2
+                        a, b = (c, b) if _D_trace_order_one(k, nu1, nu2, c) >= 0 else (a, c)
+                    assert not overdamped_beyond(p, float(b * mpmath.mpf("0.999")))
+                    assert overdamped_beyond(p, float(b * mpmath.mpf("1.001")))
+                z = rng.uniform(0.05, 20)
+                if overdamped_beyond(p, z):
+                    claims += 1
+                    for j in range(400):
+                        assert _D_trace_order_one(k, nu1, nu2, z + mpmath.mpf(j)) < 0
+            finally:
+                ctx.prec = old
+    assert claims > 10
+
+
+@pytest.mark.parametrize(
+    "Q, below, above",
+    [("0.1", "0.9080637255058", "0.9080637255059"), ("0.05", "0.9523483356125", "0.9523483356126")],
+)
+def test_existence_pins_the_overdamped_threshold(Q, below, above):
+    """Both halves over-damped, order 1: was undecided over ``0.9051 < m < 0.9081`` (``Q =
+    0.1``) and ``0.95179 < m < 0.95235`` (``Q = 0.05``), where ``boundary`` decides every depth:
+    over a range of depths the proof that ``D < 0`` right of the maximiser bisected up to the
+    window's tail bound (``D`` there a difference of cosh terms a hundred million times larger),
+    and left of it ran out of pieces.  Now the threshold is pinned to 15 digits, between two
+    depths 1e-13 apart that the certified boundary decides apart, and it is the only undecided
+    thing below the regime change at ``m = 1 - 4 Q^2``."""
+    from fractions import Fraction
+
+    from verify.existence import existence
+
+    ex = existence(1, Q, digits=15)
+    (t,) = ex.thresholds
+    lo, hi = t.enclosure
+    assert Fraction(below) < lo and hi < Fraction(above) and t.appears
+    assert not boundary(1, below, Q=Q, digits=20).exists
+    assert boundary(1, above, Q=Q, digits=20).exists
+    change = 1 - 4 * Fraction(Q) ** 2
+    assert all(abs(x - change) < Fraction(1, 10**14) for x, _ in ex.undecided)

@@ -689,11 +689,20 @@ def _decide(
                 if val < 0 and not narrow:
                     break
     try:
-        if _negative_on_box(h, budget=60, top=top, narrow=narrow):
+        # the trace form's D near a threshold is flat next to its maximiser, where its balls over
+        # a range are wide (kappa grows like (1 - m)^-2): a bisection there takes more pieces,
+        # and D' has the larger margin (monotone)
+        trace = kind != "normal"
+        budget = 4 * _NEGATIVE_PIECES if trace else _NEGATIVE_PIECES
+        if _negative_on_box(h, budget=budget, top=top, narrow=narrow, monotone=trace):
             return -1
     except (ValueError, ZeroDivisionError, OverflowError):  # pragma: no cover - guard
         return 0
     return 0
+
+
+#: the evaluations of each bisection in a range's proof that ``D < 0`` (:func:`_negative_on_box`)
+_NEGATIVE_PIECES = 60
 
 
 def _box_trace_params(lo, hi, Q):
@@ -740,12 +749,21 @@ def _no_window_on_box(n, lo, hi, Q, regimes) -> bool:
     z = max(2 / a, 1.0) * (1 + 1e-6)
     while (2 + abs(float(T.kappa)) * z * z) * math.exp(-a * z) >= 0.5:
         z *= 1.25
-    try:
-        return prove_no_window(
-            n, regimes, _box_trace_params(lo, hi, Q), z, (lo, hi), (lo + hi) / 2, Q
-        )
-    except (ValueError, ZeroDivisionError, ArithmeticError):
-        return False
+    # the tail bound needs zeta a > 2 for every depth of the range, and z holds it at the middle
+    # with a margin of 1e-6 only: where a's ball is wider, a larger zeta serves as well (the
+    # phase, which grows with zeta, must still stay under the order's window there)
+    P = _box_trace_params(lo, hi, Q)
+    for grow in _NO_WINDOW_GROW:
+        try:
+            if prove_no_window(n, regimes, P, z * grow, (lo, hi), (lo + hi) / 2, Q):
+                return True
+        except (ValueError, ZeroDivisionError, ArithmeticError):
+            return False
+    return False
+
+
+#: the factors tried, in turn, on the float tail point of :func:`_no_window_on_box`
+_NO_WINDOW_GROW = (1.0, 1.01, 1.1, 1.5)
 
 
 def _exact_ball(t):
@@ -771,10 +789,13 @@ def _polish_top(h, top, bits: int, a: float, b: float):
     return t
 
 
-def _negative_on_box(h, budget: int, top=None, narrow: bool = False) -> bool:
+def _negative_on_box(
+    h, budget: int, top=None, narrow: bool = False, monotone: bool = False
+) -> bool:
     """``D < 0`` on the whole bracket ``[a, b]`` for every depth of the range (the parameters are
     balls): by bisection (:func:`verify.certify.prove_sign`), else by Taylor's bound around the
-    float maximiser ``t`` (any point will do; :func:`verify.hump.taylor_negative`)."""
+    float maximiser ``t`` (any point will do; :func:`verify.hump.taylor_negative`, its sides
+    first by the sign of ``D'`` with ``monotone``)."""
     from .hump import taylor_negative
 
     top = h.top if top is None else top
@@ -791,7 +812,7 @@ def _negative_on_box(h, budget: int, top=None, narrow: bool = False) -> bool:
             if not Dt < 0:
                 continue
             below = True
-            proven = taylor_negative(h, tf, Dt, D1t, 30, prec, budget)
+            proven = taylor_negative(h, tf, Dt, D1t, 30, prec, budget, monotone)
             if proven is not None:
                 return proven
     if at_top and not below:

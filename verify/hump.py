@@ -115,6 +115,9 @@ class _Hump:
     #: ``D'`` in a cheaper form (:func:`verify.derived.indicator_slope`), where there is one (else
     #: ``dD`` itself): the interval Newton test's slope, and ``D'`` in the shape's tests
     slope: Callable | None = None
+    #: a proof that ``D < 0`` at every point right of its argument (a float), where there is one
+    #: (:func:`overdamped_beyond`): the bracket's right part without a bisection
+    beyond: Callable | None = None
 
     def __post_init__(self):
         if self.slope is None:
@@ -343,12 +346,15 @@ def prove_negative(
     return False
 
 
-def taylor_negative(h: _Hump, t: float, Dt, D1t, tries: int, prec: int, budget: int) -> bool | None:
+def taylor_negative(
+    h: _Hump, t: float, Dt, D1t, tries: int, prec: int, budget: int, monotone: bool = False
+) -> bool | None:
     """``D < 0`` on all of ``[a, b]`` from ``D(t) = Dt < 0`` and ``D'(t) = D1t`` near the
     maximiser ``t``: on a ball ``X`` around ``t`` where ``D'' < 0``, ``D <= D(t) + D'(t)^2 / (2
     |sup D''(X)|)``, and bisection (:func:`verify.certify.prove_sign` at ``prec``, ``budget``)
     outside ``X``.  ``X`` shrinks by 4 up to ``tries`` times.  ``True``: proven; ``False``: the
-    bound holds on ``X`` but a side was not proven; ``None``: no such ``X``."""
+    bound holds on ``X`` but a side was not proven; ``None``: no such ``X``.  ``monotone``: each
+    side is first tried by the sign of ``D'`` (:func:`_negative_side`)."""
     rho = (h.b - h.a) / 4
     for _ in range(tries):
         lo, hi = max(t - rho, h.a), min(t + rho, h.b)
@@ -357,11 +363,40 @@ def taylor_negative(h: _Hump, t: float, Dt, D1t, tries: int, prec: int, budget: 
         if d2 < 0:
             bound = Dt + D1t * D1t / (2 * abs(d2.upper()))
             if bound < 0:
-                return (
-                    lo <= h.a or prove_sign(h.D, h.dD, h.a, lo, -1, prec=prec, budget=budget)
-                ) and (hi >= h.b or prove_sign(h.D, h.dD, hi, h.b, -1, prec=prec, budget=budget))
+                return _negative_side(h, h.a, lo, True, prec, budget, monotone) and _negative_right(
+                    h, hi, prec, budget, monotone
+                )
         rho /= 4
     return None
+
+
+def _negative_side(
+    h: _Hump, x: float, y: float, rising: bool, prec: int, budget: int, monotone: bool
+) -> bool:
+    """``D < 0`` on ``[x, y]``, a side of :func:`taylor_negative`'s ball ``X``: ``y`` its left end
+    (``rising``) or ``x`` its right end, where the bound gives ``D < 0``.  By bisection of ``D``;
+    with ``monotone`` first of ``D'`` (``> 0`` if ``rising``, else ``< 0``): ``D`` is then below
+    its value at that end of ``X``.  Where ``D`` is flat next to ``X`` and its enclosures are wide
+    (over a range of depths), ``D'``'s margin is the larger one."""
+    if x >= y:
+        return True
+    if monotone and prove_sign(h.dD, h.d2D, x, y, 1 if rising else -1, prec=prec, budget=budget):
+        return True
+    return prove_sign(h.D, h.dD, x, y, -1, prec=prec, budget=budget)
+
+
+def _negative_right(h: _Hump, x: float, prec: int, budget: int, monotone: bool = False) -> bool:
+    """``D < 0`` on ``[x, b]``, right of :func:`taylor_negative`'s ball (:func:`_negative_side`);
+    where the hump has a proof for all of a right part (:attr:`_Hump.beyond`), by that proof from
+    ``x`` or from a point a little right of it (the rest only up to there)."""
+    if h.beyond is not None:
+        if h.beyond(x):
+            return True
+        for f in (1 / 64, 1 / 16, 1 / 4):
+            c = x + (h.b - x) * f
+            if h.beyond(c):
+                return _negative_side(h, x, c, False, prec, budget, monotone)
+    return _negative_side(h, x, h.b, False, prec, budget, monotone)
 
 
 def _solve_hump(req: Request, h: _Hump, bits: int):
@@ -1129,15 +1164,21 @@ def hump_trace(
                     zt *= 1.25
                 wx = (za, zt)
             za, zb = min(za, wx[0]), max(zb, wx[1])
-    widen = 1e-9 if m_box is None else 1e-3
     # the window's start: where P = 2 C1 C2 - kappa S1 S2 (> 0 before it) vanishes at one depth
     # (the float bisection leaves P(za) tiny); over a range of depths P's ball there is wide
     # (kappa grows like (1 - m)^-2), so the start is taken well inside P > 0: D < 0 there, the
-    # window only grows
-    za = za * (1 - (widen if m_box is None or regimes[1] == "under" else _RANGE_START))
-    zb = zb * (1 + widen)
-    if not _prove_window(n, regimes, P, za, zb, m_box, m, Q):  # pragma: no cover - guard
-        raise CertificationError(f"could not prove the window of order {n}: {za}, {zb}")
+    # window only grows.  Over a range of depths the ends' phases are balls as wide as the
+    # phase's change over the range (near m = 1 a tenth of the range in 1 - m moves it by a
+    # hundredth of pi): where the proof fails at a margin, wider ones are tried
+    # (:data:`_RANGE_WIDEN`); any window the proof holds serves, holding the order's window
+    for widen in (1e-9,) if m_box is None else _RANGE_WIDEN:
+        wa = za * (1 - (widen if m_box is None or regimes[1] == "under" else _RANGE_START))
+        wb = zb * (1 + widen)
+        if _prove_window(n, regimes, P, wa, wb, m_box, m, Q):
+            za, zb = wa, wb
+            break
+    else:  # (at a depth alone a guard: its window is proven at the first margin)
+        raise CertificationError(f"could not prove the window of order {n}: {wa}, {wb}")
     fl = damped_trace(n, regimes, Tf, (za, zb))
     h = _Hump(
         D=funcs[0],
@@ -1152,6 +1193,13 @@ def hump_trace(
         floor=0.0,
         # T = 2 Q zeta/pi and the offset T - n/(2 w0): accuracy relative to both
         shifts=(0.0, -math.pi * n / (4 * float(Q) * Tf.w0)),
+        # over a range of depths, order 1 with both halves over-damped: D < 0 right of a point
+        # by one test there (:func:`overdamped_beyond`; P holds every depth of the range)
+        beyond=(
+            (lambda z: overdamped_beyond(P(), z))
+            if m_box is not None and n == 1 and tuple(regimes) == ("over", "over")
+            else None
+        ),
     )
     return h, P
 
@@ -1216,6 +1264,11 @@ def trace_phase(regimes, P, z, m_box=None, m=None, Q=None) -> arb:
 #: critically or over-damped: :func:`hump_trace`)
 _RANGE_START = 0.05
 
+#: the relative margins tried, in turn, around the trace form's window over a range of depths
+#: (:func:`hump_trace`): the first is the one a range's proofs were built on; the wider ones
+#: decide ranges next to ``m = 1`` and to critical damping, whose ends' phases are wide balls
+_RANGE_WIDEN = (1e-3, 0.02, 0.1, 0.3, 0.6)
+
 
 def overdamped_no_interval(p) -> str | None:
     """Order 1 has no interval at any period: both halves over-damped (``nu1, nu2 > 0``, the
@@ -1272,6 +1325,38 @@ def overdamped_no_interval(p) -> str | None:
         "both halves are over-damped, with k = kappa/(2 nu1 nu2) below the bound by log-convexity "
         "(cosh(s zeta) <= cosh(2 zeta)**(s/2)) in the trace form: D < 0 at every period"
     )
+
+
+def overdamped_beyond(p, z: float) -> bool:
+    """Order 1, both halves over-damped: ``D < 0`` at every ``zeta >= z`` (``z > 0``), for every
+    value in the balls ``kappa``, ``nu1``, ``nu2`` of ``p``.  With ``k``, ``s``, ``d`` as in
+    :func:`overdamped_no_interval`, ``D = g(zeta) - (k + 1) cosh(d zeta)``, ``g(zeta) = (k - 1)
+    cosh(s zeta) - 2 cosh(2 zeta)``, and ``0 < s < 2``, ``k > -1``.  Two tests at ``z``:
+
+    - ``g(z) < 0``: ``cosh(2 zeta)/cosh(s zeta)`` increases (its logarithm's derivative is ``2
+      tanh(2 zeta) - s tanh(s zeta) >= 0``), so ``g < 0`` from ``z`` on, and ``D <= g``.
+    - ``g'(z) < 0`` and ``D(z) < 0``: ``sinh(2 zeta)/sinh(s zeta)`` increases too (``x coth x``
+      increases, so ``2 coth(2 zeta) >= s coth(s zeta)``), so ``g' = (k - 1) s sinh(s zeta) - 4
+      sinh(2 zeta) < 0`` from ``z`` on and ``g(zeta) <= g(z)``; with ``cosh(d zeta) >= cosh(d
+      z)``, ``D(zeta) <= D(z) < 0``.  This one holds just past the maximiser of ``D``.
+
+    Where the window's tail bound (:func:`_prove_window`) needs ``max(2, 1 + k) exp(-(2 - s)
+    zeta) < 1``, far out as ``s -> 2``, these need no bisection of the range in between, whose
+    balls of large, nearly cancelling terms take many pieces."""
+    nu1, nu2, kappa = p.nu1, p.nu2, p.kappa
+    if not (nu1 > 0 and nu2 > 0 and z > 0):
+        return False
+    s = nu1 + nu2
+    k = kappa / (2 * nu1 * nu2)
+    if not (s < 2 and k + 1 > 0):
+        return False
+    zb = arb(z)
+    sz, tz = s * zb, 2 * zb
+    g = (k - 1) * sz.cosh() - 2 * tz.cosh()
+    if g < 0:
+        return True
+    falling = (k - 1) * s * sz.sinh() < 4 * tz.sinh()  # g' < 0 at z
+    return bool(falling and g - (k + 1) * ((nu1 - nu2) * zb).cosh() < 0)
 
 
 def prove_no_window(n: int, regimes, P, ztail: float, m_box=None, m=None, Q=None) -> bool:
