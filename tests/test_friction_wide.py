@@ -443,3 +443,45 @@ def test_existence_pins_the_overdamped_threshold(Q, below, above):
     assert boundary(1, above, Q=Q, digits=20).exists
     change = 1 - 4 * Fraction(Q) ** 2
     assert all(abs(x - change) < Fraction(1, 10**14) for x, _ in ex.undecided)
+
+
+def test_taylor_ball_holds_the_sides_ends_and_the_point_of_expansion():
+    """:func:`verify.hump.taylor_negative` bounds ``D`` on a ball ``X`` and proves the sides
+    ``[a, lo]`` and ``[hi, b]`` apart: ``X`` must hold ``[lo, hi]`` and the point where ``D(t)``,
+    ``D'(t)`` were taken.  Was: a ball around the float middle of ``[lo, hi]`` with its half
+    width, which misses ``lo`` (here ``a`` itself, whose side is empty) by half a unit in the last
+    place where ``hi - lo`` is three units, and the point of expansion where it is not the
+    float ``t``."""
+    import math
+
+    from flint import arb
+
+    from verify.hump import _Hump, taylor_negative
+
+    u = 2.0**-52
+    seen = []
+
+    def d2D(X):
+        seen.append(X)
+        return arb(-1)
+
+    a = 1.5
+    h = _Hump(
+        D=lambda x: arb(-1),
+        dD=lambda x: arb(0),
+        d2D=d2D,
+        a=a,
+        b=a + 8 * u,
+        top=a + u,
+        dtop=-1.0,
+        lo=math.nan,
+        hi=math.nan,
+        floor=0.0,
+    )
+    assert taylor_negative(h, a + u, arb(-1), arb(0), 1, 64, 10)
+    (X,) = seen
+    for x in (arb(a), arb(a + 3 * u), arb(a + u)):  # lo = a, hi = t + rho = a + 3 u
+        assert X.contains(x)
+    at = arb(a + u) + arb(2) ** -60  # (not a float)
+    assert taylor_negative(h, a + u, arb(-1), arb(0), 1, 64, 10, at=at)
+    assert seen[-1].contains(at)

@@ -812,7 +812,7 @@ def _negative_on_box(
             if not Dt < 0:
                 continue
             below = True
-            proven = taylor_negative(h, tf, Dt, D1t, 30, prec, budget, monotone)
+            proven = taylor_negative(h, tf, Dt, D1t, 30, prec, budget, monotone, at=tb)
             if proven is not None:
                 return proven
     if at_top and not below:

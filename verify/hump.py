@@ -340,25 +340,40 @@ def prove_negative(
             Dt, D1t = h.D(t), h.dD(t)
             if Dt > 0:
                 return False
-            if Dt < 0 and taylor_negative(h, float(t), Dt, D1t, 60, 64, 10 * budget):
+            if Dt < 0 and taylor_negative(h, float(t), Dt, D1t, 60, 64, 10 * budget, at=t):
                 return True
         prec *= 2
     return False
 
 
 def taylor_negative(
-    h: _Hump, t: float, Dt, D1t, tries: int, prec: int, budget: int, monotone: bool = False
+    h: _Hump,
+    t: float,
+    Dt,
+    D1t,
+    tries: int,
+    prec: int,
+    budget: int,
+    monotone: bool = False,
+    at: arb | None = None,
 ) -> bool | None:
     """``D < 0`` on all of ``[a, b]`` from ``D(t) = Dt < 0`` and ``D'(t) = D1t`` near the
     maximiser ``t``: on a ball ``X`` around ``t`` where ``D'' < 0``, ``D <= D(t) + D'(t)^2 / (2
     |sup D''(X)|)``, and bisection (:func:`verify.certify.prove_sign` at ``prec``, ``budget``)
     outside ``X``.  ``X`` shrinks by 4 up to ``tries`` times.  ``True``: proven; ``False``: the
     bound holds on ``X`` but a side was not proven; ``None``: no such ``X``.  ``monotone``: each
-    side is first tried by the sign of ``D'`` (:func:`_negative_side`)."""
+    side is first tried by the sign of ``D'`` (:func:`_negative_side`).  ``at``: the ball where
+    ``Dt`` and ``D1t`` were taken, where it is not the float ``t`` itself.  ``X`` is the hull of
+    the sides' inner ends ``[lo, hi]`` and of that point (Taylor's bound needs the segment from it
+    to each point in ``X``, and the sides end at ``lo`` and ``hi``): a ball around the float
+    middle of ``[lo, hi]`` with its half width misses an end by a rounding where ``hi - lo`` is a
+    few units in the last place."""
     rho = (h.b - h.a) / 4
     for _ in range(tries):
         lo, hi = max(t - rho, h.a), min(t + rho, h.b)
-        X = arb(ball(0.5 * (lo + hi)), 0.5 * (hi - lo) * (1 + 2.0**-40))
+        X = arb(lo).union(arb(hi)).union(arb(t))  # (floats: exact; the union rounds outward)
+        if at is not None:
+            X = X.union(at)
         d2 = h.d2D(X)
         if d2 < 0:
             bound = Dt + D1t * D1t / (2 * abs(d2.upper()))
