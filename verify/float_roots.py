@@ -65,7 +65,8 @@ def regime_of(u) -> str:
 def trace_window_ends(n: int, regimes, T, *, bits: int = 60):
     """The ``zeta``-window of order ``n`` (floats ``(za, zb)``; ``None`` if the order has none).
 
-    Half 2 under-damped: ``Phi(zeta) = n pi -+ pi/2`` (``Phi`` increases strictly), the upper end
+    Half 2 under-damped: ``Phi(zeta) = n pi -+ pi/2`` (``Phi`` increases strictly wherever it
+    exceeds ``pi/2``: :mod:`verify.solve`), the upper end
     capped where ``(2 + |kappa| zeta^2) exp(-(2 - nu1) zeta) < 1/2`` (``D < 0`` beyond).  Both
     halves critically or over-damped: only ``n = 1``, from the zero of ``P = 2 C1 C2 - kappa S1 S2``
     to a point beyond which ``D < 0`` is guaranteed by ``(2 + |kappa| zeta^2) exp(-(2 - nu1 - nu2)

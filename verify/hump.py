@@ -1377,7 +1377,8 @@ def overdamped_beyond(p, z: float) -> bool:
 def prove_no_window(n: int, regimes, P, ztail: float, m_box=None, m=None, Q=None) -> bool:
     """Order ``n`` has no interval (half 2 under-damped): beyond ``ztail`` ``D < 0`` (the tail
     bound of :func:`verify.grid.trace_window_ends`), and below it the phase stays under ``n pi -
-    pi/2`` (``Phi`` increases), so the order's window does not begin."""
+    pi/2`` (``Phi`` increases wherever it exceeds ``pi/2``: :mod:`verify.solve`), so the order's
+    window does not begin."""
     if regimes[1] != "under":
         return n > 1
     with ctx.workprec(96):

@@ -36,10 +36,13 @@ of ``[a, b]``).
 sigma (2 C1 C2 - kappa S1 S2) - 2 cosh(2 zeta)`` in ``zeta = gamma T/2``
 (:func:`verify.derived.trace_indicator`).  With half 2 under-damped, ``2 C1 C2 - kappa S1 S2 = rho
 cos(Phi)`` with the phase ``Phi = nu2 zeta + atan2(kappa S1, 2 nu2 C1)``, which increases strictly
-with ``T``; ``D > 0`` needs ``sigma cos(Phi) > 0``, so the ``n``-th interval lies where ``|Phi - n
-pi| < pi/2`` (this numbers the orders continuously with the normal form).  With both halves
-over-damped there is no rotation: only ``n = 1`` can exist, where ``P < 0``.  Inside the window the
-same maximise-and-bracket scheme as above is proven.
+with ``T`` wherever it exceeds ``pi/2`` (for ``zeta >= pi/(2 nu2)``, where the atan2 term's
+derivative is below ``1/(2 zeta) < nu2``; before, ``Phi < pi/2``, with a dip of about ``1e-5``
+below 0 near ``zeta = 0`` where ``kappa < -2 nu2^2``); ``D > 0`` needs ``sigma cos(Phi) > 0``, so
+the ``n``-th interval lies where ``|Phi - n pi| < pi/2`` (this numbers the orders continuously
+with the normal form).  With both halves over-damped there is no rotation: only ``n = 1`` can
+exist, where ``P < 0``.  Inside the window the same maximise-and-bracket scheme as above is
+proven.
 
 ``method=`` selects a solver from :data:`verify.methods.METHODS` (``"certified"``, the default,
 :mod:`verify.certified`; ``"fixedpoint"``, the paper's own iteration, uncertified,
