@@ -59,7 +59,14 @@ from .derived import (
 )
 from .enclosure import AtPrecision, edges_result, no_interval, sgn_of, theta_floor
 from .float_stage import normal_float_edges, normal_float_stage, wide_float_edges
-from .params import NEAR_ONE, NormalParams, normal_params, normal_values, trace_params
+from .params import (
+    NEAR_ONE,
+    NormalParams,
+    exact_arb_values,
+    normal_params,
+    normal_values,
+    trace_params,
+)
 from .request import Request
 from .result import Boundary, from_balls
 from .system_params import normal_jets
@@ -791,9 +798,12 @@ def _lean_normal(req: Request, bits: int) -> Boundary | None:
         # objects compute them (12 bits above it), without the NormalParams object (the same
         # balls): the paper's exact model, and the other members of the family
         ctx.prec = top + 12
-        r, r2, u, beta, w, g, _, dinv, bm = normal_values(
-            req.m, req.Q, req.damping, _ARB, req.system
-        )
+        if req.system is PAPER and req.damping == "exact":  # normal_values' route for these
+            r, r2, u, beta, w, g, _, dinv, bm = exact_arb_values(req.m, req.Q)
+        else:
+            r, r2, u, beta, w, g, _, dinv, bm = normal_values(
+                req.m, req.Q, req.damping, _ARB, req.system
+            )
         c = arb.pi() * n / 2
         if float(bm) < NEAR_ONE:
             return None
