@@ -428,3 +428,40 @@ def test_hoisted_source_keeps_the_evaluation_order():
     assert "return (_h0 * theta + theta * a * b, _h1)" in source
     prepare, evaluate = hoisted(text, "math")
     assert evaluate(0.3, *prepare(0.1, 0.7)) == (0.1 * 0.7 * 0.3 + 0.3 * 0.1 * 0.7, 2 * (0.1 * 0.7))
+
+
+def test_lean_forms_give_the_balls_of_the_stored_forms():
+    """The short path's forms with their integer constants as exact balls
+    (:func:`verify.hump._lean_forms`, :func:`verify.derived.int_constants`) give the very balls of
+    the stored forms (:func:`verify.hump._normal_forms`) on random balls -- points and wide ones,
+    parameters from several precisions -- at the precisions the short path works at; and no
+    integer is left beside a ball in their texts."""
+    import random
+    import re
+
+    from flint import arb, ctx
+
+    from verify.derived import indicator, indicator_slope, int_constants
+
+    rnd = random.Random(11)
+    old = ctx.prec
+    try:
+        for parity in (-1, 1):
+            lean, stored = hump._lean_forms(parity), hump._normal_forms(parity)
+            for _ in range(3000):
+                ctx.prec = rnd.choice([64, 76, 92, 128, 300])
+                c = arb.pi() * rnd.randint(1, 6) / 2
+                params = [arb(rnd.uniform(0.01, 1.5)) / 3 for _ in range(4)]
+                ctx.prec = rnd.choice([64, 87, 100, 200])
+                x = arb(rnd.uniform(-1.5, 1.5), rnd.choice([0.0, 1e-15, 0.1, 0.6]))
+                for f, g in zip(lean, stored, strict=True):
+                    a, b = f(x, c, *params), g(x, c, *params)
+                    for u, v in zip(a, b, strict=True) if isinstance(a, tuple) else ((a, b),):
+                        assert u.mid() == v.mid() and u.rad() == v.rad()
+    finally:
+        ctx.prec = old
+    for text in (indicator(-1).text("arb", (0, 1)), indicator_slope(1).text("arb", 0)):
+        new = int_constants(text)
+        body = new[new.index("def ") :]
+        assert re.search(r"(?<![\w.])\d+ \*|[-+] \d+(?![\w.])", body) is None
+        assert "_i2 = _dyadic(2, 0)" in new

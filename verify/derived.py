@@ -393,6 +393,51 @@ def dyadic_constants(text: str) -> str:
     return "".join(f"{line}\n" for line in made.values()) + body
 
 
+def int_constants(text: str) -> str:
+    """An arb form's text with each integer constant that is an operand of ``+``, ``-``, ``*``
+    or ``/`` beside a ball (``2*c``, ``1 - v``, ``-2*_d0``) read from a name made once, above
+    the function, by ``_dyadic(k, 0)``: the exact ball ``k``, which is what python-flint
+    converts the int to at each evaluation (about 40 ns), so every result is the same ball.
+    Only for arguments that are balls: with an int or a float argument (``eps = 1``) or a jet,
+    ``2*eps`` would become a ball, or a jet's arithmetic another's.  Exponents, function
+    arguments and operations between two constants stay as they are."""
+    import ast
+
+    tree = ast.parse(text)
+    made: dict[str, str] = {}
+
+    def constant(node) -> int | None:
+        if isinstance(node, ast.Constant) and type(node.value) is int:
+            return node.value
+        if (
+            isinstance(node, ast.UnaryOp)
+            and isinstance(node.op, ast.USub)
+            and isinstance(node.operand, ast.Constant)
+            and type(node.operand.value) is int
+        ):
+            return -node.operand.value
+        return None
+
+    def named(k: int):
+        name = f"_i{'m' if k < 0 else ''}{abs(k)}"
+        made[name] = f"{name} = _dyadic({k}, 0)"
+        return ast.Name(name, ast.Load())
+
+    class Constants(ast.NodeTransformer):
+        def visit_BinOp(self, node):
+            self.generic_visit(node)
+            if isinstance(node.op, ast.Add | ast.Sub | ast.Mult | ast.Div):
+                kl, kr = constant(node.left), constant(node.right)
+                if kl is not None and kr is None:
+                    node.left = named(kl)
+                elif kr is not None and kl is None:
+                    node.right = named(kr)
+            return node
+
+    body = ast.unparse(ast.fix_missing_locations(Constants().visit(tree)))
+    return "".join(f"{line}\n" for line in sorted(made.values())) + body + "\n"
+
+
 def hoist_powers(text: str, names, least: int = 3) -> tuple[str, tuple]:
     """A compiled form's text with each power ``v**k`` (``k >= least``) of an argument ``v`` in
     ``names`` read from a new argument ``_pow_v_k`` (appended to the signature, in order of

@@ -52,6 +52,8 @@ from .derived import (
     indicator,
     indicator_bend,
     indicator_slope,
+    int_constants,
+    load_source,
     near_one_forms,
     order1_forms,
     trace_indicator,
@@ -521,6 +523,30 @@ def _normal_forms(parity: int) -> tuple:
     )
 
 
+@cache
+def _lean_forms(parity: int) -> tuple:
+    """:func:`_normal_forms` for :func:`_lean_normal`, whose arguments are always balls: ``D``,
+    ``D'`` and the undamped edge equation as they are, and ``D''``, ``(D, D')``, ``-D''/2`` and
+    ``D'`` in double angles with their integer constants as exact balls made once
+    (:func:`verify.derived.int_constants`): the same balls, without an int converted at each
+    operation."""
+    D0, D1, _, _, E0, _, _ = _normal_forms(parity)
+    form = indicator(parity)
+
+    def balls(f, k):
+        return load_source(int_constants(f.text("arb", k)), "arb", k)
+
+    return (
+        D0,
+        D1,
+        balls(form, 2),
+        balls(form, (0, 1)),
+        E0,
+        balls(indicator_bend(parity), 0),
+        balls(indicator_slope(parity), 0),
+    )
+
+
 def hump_normal(
     n: int,
     m: Fraction,
@@ -789,7 +815,7 @@ def _lean_normal(req: Request, bits: int) -> Boundary | None:
     ``None`` where a step does not succeed at once; the caller then runs the general path, which
     repeats these steps and goes on from there."""
     n = req.order
-    D0, D1, D2, D01, E0, Bend, Slope = _normal_forms(-1 if n % 2 else 1)
+    D0, D1, D2, D01, E0, Bend, Slope = _lean_forms(-1 if n % 2 else 1)
     work = bits + QUICK_GUARD
     top = work if work > 80 else 80
     old = ctx.prec
