@@ -259,8 +259,14 @@ def as_quality(Q) -> Fraction | mpmath.mpf | None:
         return None
     kind = type(Q)
     if kind is int:  # the common cases first, by exact type (as as_number); else as below
+        got = _INT_QUALITY.get(Q)  # (a Fraction is immutable: the one made before will do)
+        if got is not None:
+            return got
         if _quality_ok(Q, 1):
-            return Fraction(Q)
+            got = Fraction(Q)
+            if len(_INT_QUALITY) < 256:
+                _INT_QUALITY[Q] = got
+            return got
     elif kind is Fraction and _quality_ok(Q.numerator, Q.denominator):
         return Q
     if isinstance(Q, str) and Q.strip().lower() in ("none", "inf", "infinity"):
@@ -277,6 +283,11 @@ def as_quality(Q) -> Fraction | mpmath.mpf | None:
     if not _quality_ok(val.numerator, val.denominator):
         raise InputError(f"quality factor Q = {_show(Q)} is outside the allowed range {allowed}")
     return val
+
+
+#: the integer quality factors met so far (in range), as Fractions (making one costs more than the
+#: lookup)
+_INT_QUALITY: dict[int, Fraction] = {}
 
 
 def _quality_ok(p: int, q: int) -> bool:

@@ -151,6 +151,33 @@ def test_unimodal_direct_test_that_fails_falls_back():
     )  # fmt: skip
 
 
+def test_unimodal_stops_at_the_first_label_that_fails():
+    """The labels are checked as they come, left to right: a piece rising after a falling one
+    ends the test (``False``) before the pieces right of it are evaluated -- no later label could
+    make the shape acceptable.  Here ``[-3, -1]`` falls (``D'`` on it), ``[-1, 1]`` is not a cap
+    and rises (the mean-value form), and ``[1, 3]`` is never evaluated."""
+    calls = []
+
+    def dD(x):
+        calls.append(("dD", float(x.mid())))
+        return x * 0 + (-1 if x.upper() < -0.5 else 1)
+
+    def bend(x):
+        calls.append(("bend", float(x.mid())))
+        return x * 0 - arb(1) / 100
+
+    def D(x):  # pragma: no cover - not reached (no neg test here)
+        calls.append(("D", float(x.mid())))
+        return x * 0 - 1
+
+    ok = hump._unimodal(
+        arb(-3.0), arb(3.0), _root(-2.5).ball, _root(2.5).ball, bend, None, dD, D,
+        pieces=3, direct=3,
+    )  # fmt: skip
+    assert not ok
+    assert calls == [("dD", -2.0), ("bend", 0.0), ("dD", 0.0)]
+
+
 def test_unimodal_shape_refuses_bad_roots():
     """The same zero twice, or a zero outside the bracket: not proven."""
     h = _hump_of(lambda x: 1 - x * x, lambda x: -2 * x, lambda x: x * 0 - 2, -2.0, 2.0)

@@ -149,3 +149,17 @@ def test_a_system_hashes_again_in_another_process():
         )
         assert out.stdout.strip() == b"True"
     assert pickle.loads(data) == (PAPER, torsion)
+
+
+def test_integer_quality_factors_are_kept():
+    """An integer ``Q`` gives its exact Fraction, the same object again on the next call (made
+    once); out of range it is refused every time (never kept)."""
+    from paramres.inputs import as_quality
+
+    q = as_quality(7)
+    assert q == Fraction(7) and type(q) is Fraction
+    assert as_quality(7) is q
+    for bad in (0, 10**31):
+        for _ in range(2):
+            with pytest.raises(InputError):
+                as_quality(bad)

@@ -341,3 +341,127 @@ def test_wide_float_edges_are_the_float_stages(m, Q):
         if dtop0 > 0 and dtop > 0:
             assert abs(lo - lo0) <= 1e-13 * abs(lo0) + 1e-300
             assert abs(hi - hi0) <= 1e-13 * abs(hi0) + 1e-300
+
+
+def _plain_d012(monkeypatch):
+    """Make :mod:`verify.float_stage` evaluate ``(D, D', D'')`` by the stored text itself (no
+    parameter products computed ahead): the reference of the hoisted evaluation."""
+    import verify.float_stage as fs
+
+    def plain(odd):
+        d012 = fs._forms(odd)[1]
+        return (lambda *params: params), d012
+
+    monkeypatch.setattr(fs, "_hoisted", plain)
+
+
+@pytest.mark.parametrize("m", ["1e-6", "3/10", "3/5", "9/10", "999/1000"])
+@pytest.mark.parametrize("Q", ["1/2", "3", "7", "1000"])
+def test_float_stage_hoisted_is_the_stored_text(monkeypatch, m, Q):
+    """The float stage evaluates ``(D, D', D'')`` with the products of the parameters alone
+    computed once (:func:`verify.derived.hoisted`): every float it returns is the one of the
+    stored text evaluated as it is (the same operations on the same operands), with an interval
+    and without (the maximiser's search), on wide brackets and narrow ones."""
+    from fractions import Fraction
+
+    from verify.float_stage import float_stage, wide_float_edges
+    from verify.params import form_for, normal_values
+
+    for damping in ("exact", "paper"):
+        if form_for(Fraction(m), Fraction(Q), damping)[0] != "normal":
+            continue
+        p = normal_values(Fraction(m), Fraction(Q), damping, hump._MATH)
+        r, r2, u, beta, _, g, _, _, _ = p
+        got = [
+            (f(n, r, r2, u, beta, g)) for n in (1, 2, 3, 6) for f in (float_stage, wide_float_edges)
+        ]
+        with monkeypatch.context() as mp:
+            _plain_d012(mp)
+            ref = [
+                (f(n, r, r2, u, beta, g))
+                for n in (1, 2, 3, 6)
+                for f in (float_stage, wide_float_edges)
+            ]
+        assert repr(got) == repr(ref)
+
+
+def test_hoisted_forms_are_the_stored_forms():
+    """``evaluate(x, *prepare(*params))`` gives the very floats of the stored text on random
+    points, for both parities; the parameters' products are computed in ``prepare`` (none is
+    left in ``evaluate``)."""
+    import math
+    import random
+
+    from verify.derived import hoisted, hoisted_source, indicator
+    from verify.float_stage import _forms
+
+    rnd = random.Random(7)
+    for odd in (True, False):
+        text = indicator(-1 if odd else 1).text("math", (0, 1, 2))
+        prepare, evaluate = hoisted(text, "math")
+        d012 = _forms(odd)[1]
+        for _ in range(20000):
+            params = (
+                rnd.randint(1, 12) * math.pi / 2,
+                rnd.random(),
+                rnd.random() * rnd.choice([1.0, 1e-3]),
+                rnd.uniform(0.01, 2),
+                rnd.random() * rnd.choice([1.0, 10.0, 1e-3]),
+            )
+            x = rnd.uniform(-1.6, 1.6)
+            assert repr(evaluate(x, *prepare(*params))) == repr(d012(x, *params))
+        source = hoisted_source(text)
+        body = source[source.index("def _evaluate") :]
+        assert "_d0 * beta" not in body and "g * u" not in body and "beta * beta" not in body
+        assert "_d0 * beta" in source  # computed once, in _prepare
+
+
+def test_hoisted_source_keeps_the_evaluation_order():
+    """Only whole nodes of the evaluation tree move: ``a*b*x`` is ``(a*b)*x`` (``a*b`` computed
+    ahead), ``x*a*b`` is ``(x*a)*b`` (nothing moves), a node of the parameters alone moves whole
+    (``2*(a*b)``, its own operations in its own order)."""
+    from verify.derived import hoisted, hoisted_source
+
+    text = "def _lambdifygenerated(theta, a, b):\n    return [a*b*theta + theta*a*b, 2*(a*b)]\n"
+    source = hoisted_source(text)
+    assert "_h0 = a * b" in source and "_h1 = 2 * (a * b)" in source
+    assert "return (_h0 * theta + theta * a * b, _h1)" in source
+    prepare, evaluate = hoisted(text, "math")
+    assert evaluate(0.3, *prepare(0.1, 0.7)) == (0.1 * 0.7 * 0.3 + 0.3 * 0.1 * 0.7, 2 * (0.1 * 0.7))
+
+
+def test_lean_forms_give_the_balls_of_the_stored_forms():
+    """The short path's forms with their integer constants as exact balls
+    (:func:`verify.hump._lean_forms`, :func:`verify.derived.int_constants`) give the very balls of
+    the stored forms (:func:`verify.hump._normal_forms`) on random balls -- points and wide ones,
+    parameters from several precisions -- at the precisions the short path works at; and no
+    integer is left beside a ball in their texts."""
+    import random
+    import re
+
+    from flint import arb, ctx
+
+    from verify.derived import indicator, indicator_slope, int_constants
+
+    rnd = random.Random(11)
+    old = ctx.prec
+    try:
+        for parity in (-1, 1):
+            lean, stored = hump._lean_forms(parity), hump._normal_forms(parity)
+            for _ in range(3000):
+                ctx.prec = rnd.choice([64, 76, 92, 128, 300])
+                c = arb.pi() * rnd.randint(1, 6) / 2
+                params = [arb(rnd.uniform(0.01, 1.5)) / 3 for _ in range(4)]
+                ctx.prec = rnd.choice([64, 87, 100, 200])
+                x = arb(rnd.uniform(-1.5, 1.5), rnd.choice([0.0, 1e-15, 0.1, 0.6]))
+                for f, g in zip(lean, stored, strict=True):
+                    a, b = f(x, c, *params), g(x, c, *params)
+                    for u, v in zip(a, b, strict=True) if isinstance(a, tuple) else ((a, b),):
+                        assert u.mid() == v.mid() and u.rad() == v.rad()
+    finally:
+        ctx.prec = old
+    for text in (indicator(-1).text("arb", (0, 1)), indicator_slope(1).text("arb", 0)):
+        new = int_constants(text)
+        body = new[new.index("def ") :]
+        assert re.search(r"(?<![\w.])\d+ \*|[-+] \d+(?![\w.])", body) is None
+        assert "_i2 = _dyadic(2, 0)" in new

@@ -186,3 +186,22 @@ def test_one_minus_m_given_separately(damping, Q):
             for k in ("r2", "u", "beta", "w", "bm", "g"):
                 x, y = getattr(a, k), getattr(b, k)
                 assert x.overlaps(y) and y.rad() <= abs(y.mid()) * 2.0**-190 + 2.0**-400, (k, m)
+
+
+def test_form_for_every_system_by_its_integers():
+    """The choice of equations for exact ``m``, ``Q`` is cached by their integers for every member
+    of the family (not only the paper's pendulum): the same answers as the exact decision itself,
+    and a second call is a lookup."""
+    from verify.inputs import as_system
+    from verify.params import _form_for, _form_for_system, form_for
+
+    for name in ("torsion", "meissner"):
+        sysv = as_system(name, "1/2")
+        for m in (Fraction(3, 10), Fraction(9, 10), Fraction(99, 100)):
+            for Q in (Fraction(1, 2), Fraction(7), Fraction(30)):
+                for damping in ("exact", "paper"):
+                    want = _form_for.__wrapped__(m, Q, damping, sysv)
+                    assert form_for(m, Q, damping, sysv) == want
+                    hits = _form_for_system.cache_info().hits
+                    assert form_for(m, Q, damping, sysv) == want
+                    assert _form_for_system.cache_info().hits == hits + 1

@@ -393,6 +393,51 @@ def dyadic_constants(text: str) -> str:
     return "".join(f"{line}\n" for line in made.values()) + body
 
 
+def int_constants(text: str) -> str:
+    """An arb form's text with each integer constant that is an operand of ``+``, ``-``, ``*``
+    or ``/`` beside a ball (``2*c``, ``1 - v``, ``-2*_d0``) read from a name made once, above
+    the function, by ``_dyadic(k, 0)``: the exact ball ``k``, which is what python-flint
+    converts the int to at each evaluation (about 40 ns), so every result is the same ball.
+    Only for arguments that are balls: with an int or a float argument (``eps = 1``) or a jet,
+    ``2*eps`` would become a ball, or a jet's arithmetic another's.  Exponents, function
+    arguments and operations between two constants stay as they are."""
+    import ast
+
+    tree = ast.parse(text)
+    made: dict[str, str] = {}
+
+    def constant(node) -> int | None:
+        if isinstance(node, ast.Constant) and type(node.value) is int:
+            return node.value
+        if (
+            isinstance(node, ast.UnaryOp)
+            and isinstance(node.op, ast.USub)
+            and isinstance(node.operand, ast.Constant)
+            and type(node.operand.value) is int
+        ):
+            return -node.operand.value
+        return None
+
+    def named(k: int):
+        name = f"_i{'m' if k < 0 else ''}{abs(k)}"
+        made[name] = f"{name} = _dyadic({k}, 0)"
+        return ast.Name(name, ast.Load())
+
+    class Constants(ast.NodeTransformer):
+        def visit_BinOp(self, node):
+            self.generic_visit(node)
+            if isinstance(node.op, ast.Add | ast.Sub | ast.Mult | ast.Div):
+                kl, kr = constant(node.left), constant(node.right)
+                if kl is not None and kr is None:
+                    node.left = named(kl)
+                elif kr is not None and kl is None:
+                    node.right = named(kr)
+            return node
+
+    body = ast.unparse(ast.fix_missing_locations(Constants().visit(tree)))
+    return "".join(f"{line}\n" for line in sorted(made.values())) + body + "\n"
+
+
 def hoist_powers(text: str, names, least: int = 3) -> tuple[str, tuple]:
     """A compiled form's text with each power ``v**k`` (``k >= least``) of an argument ``v`` in
     ``names`` read from a new argument ``_pow_v_k`` (appended to the signature, in order of
@@ -437,6 +482,87 @@ def load_source(text: str, name: str, orders=0):
     return inner
 
 
+def hoisted(text: str, name: str, dynamic: str = "theta"):
+    """``(prepare, evaluate)`` of :func:`hoisted_source`, in back end ``name``'s namespace."""
+    ns = dict(backend(name).namespace)
+    source = hoisted_source(text, dynamic)
+    exec(compile(source, f"<hoisted form {name}>", "exec"), ns)  # noqa: S102 - derived text
+    return ns["_prepare"], ns["_evaluate"]
+
+
+def hoisted_source(text: str, dynamic: str = "theta") -> str:
+    """The text of two functions, ``_prepare`` and ``_evaluate``, from a compiled text
+    (:meth:`Form.source`, a function of ``dynamic`` and parameters) for many evaluations with the
+    same parameters: ``_evaluate(x, *_prepare(*params))`` is ``f(x, *params)``, value for value,
+    with the work that does not depend on ``x`` done once in ``_prepare``.
+
+    Every subexpression of the text (a node of Python's evaluation tree: ``-2*_d0*beta*x10*x7``
+    is ``(((-2*_d0)*beta)*x10)*x7``) whose names are all parameters (or variables assigned from
+    parameters alone) is computed in ``prepare`` instead: the same operations on the same
+    operands, so the same numbers (floats: the same roundings; no reassociation), and ``evaluate``
+    takes each as a name.  Equal subexpressions are computed once.  Constants (``2``, ``-2``)
+    stay in place.  A list returned is returned as a tuple (as :func:`load_source` does)."""
+    import ast
+
+    tree = ast.parse(text)
+    fn = tree.body[0]
+    if not isinstance(fn, ast.FunctionDef):  # pragma: no cover - a lambdify text
+        raise ValueError("not a function text")
+    params = [a.arg for a in fn.args.args if a.arg != dynamic]
+    static = set(params)
+    hoist: dict[str, str] = {}  # the text of a hoisted subexpression -> its name
+    prep: list[ast.stmt] = []
+
+    def is_static(node) -> bool:
+        return all(n.id in static for n in ast.walk(node) if isinstance(n, ast.Name))
+
+    def trivial(node) -> bool:
+        return isinstance(node, ast.Name | ast.Constant) or (
+            isinstance(node, ast.UnaryOp) and isinstance(node.operand, ast.Constant)
+        )
+
+    class Hoist(ast.NodeTransformer):
+        def visit(self, node):
+            if isinstance(node, ast.expr) and not trivial(node) and is_static(node):
+                key = ast.dump(node)
+                var = hoist.get(key)
+                if var is None:
+                    var = hoist[key] = f"_h{len(hoist)}"
+                    prep.append(ast.Assign([ast.Name(var, ast.Store())], node, lineno=0))
+                return ast.Name(var, ast.Load())
+            return self.generic_visit(node)
+
+    body: list[ast.stmt] = []
+    for stmt in fn.body:
+        if (
+            isinstance(stmt, ast.Assign)
+            and len(stmt.targets) == 1
+            and isinstance(stmt.targets[0], ast.Name)
+            and is_static(stmt.value)
+        ):
+            prep.append(stmt)  # a variable of the parameters alone
+            static.add(stmt.targets[0].id)
+            continue
+        if isinstance(stmt, ast.Return) and isinstance(stmt.value, ast.List):
+            stmt = ast.Return(ast.Tuple(stmt.value.elts, ast.Load()))
+        body.append(Hoist().visit(stmt))
+    static.update(hoist.values())
+    used = sorted({n.id for st in body for n in ast.walk(st) if isinstance(n, ast.Name)} & static)
+    args = lambda names: ast.arguments(  # noqa: E731
+        posonlyargs=[], args=[ast.arg(v) for v in names], kwonlyargs=[], kw_defaults=[],
+        defaults=[],
+    )  # fmt: skip
+    ret = ast.Return(ast.Tuple([ast.Name(v, ast.Load()) for v in used], ast.Load()))
+    module = ast.Module(
+        [
+            ast.FunctionDef("_prepare", args(params), [*prep, ret], [], lineno=0),
+            ast.FunctionDef("_evaluate", args([dynamic, *used]), body, [], lineno=0),
+        ],
+        [],
+    )
+    return ast.unparse(ast.fix_missing_locations(module)) + "\n"
+
+
 class LazyForm:
     """A :class:`Form` derived only when something needs more than its compiled functions.
 
@@ -467,6 +593,12 @@ class LazyForm:
             fn = load_source(text, name, orders) if text else self.real.compiled(name, orders)
             self._fns[k] = fn
         return fn
+
+    def text(self, name: str, orders=0) -> str:
+        """The text of ``compiled(name, orders)``: the stored one, else the derived form's."""
+        from .forms_generated import SOURCES
+
+        return SOURCES.get(generated_key(self.key, name, orders)) or self.real.source(name, orders)
 
     def __getattr__(self, attr):
         if attr.startswith("__") or attr in ("_build", "_real", "_fns", "key"):

@@ -17,7 +17,7 @@ from __future__ import annotations
 import math
 from functools import cache
 
-from .derived import edge_equation, indicator
+from .derived import edge_equation, hoisted, indicator
 from .enclosure import sgn_of
 
 __all__ = [
@@ -74,6 +74,15 @@ def float_edge(fn, n: int, eps: int, r: float, beta: float) -> float:
             return tn
         th = tn
     return th
+
+
+@cache
+def _hoisted(odd: bool):
+    """``(prepare, evaluate)`` of ``(D, D', D'')`` (:func:`verify.derived.hoisted`): ``evaluate(x,
+    *prepare(c, r2, u, beta, g))`` gives the very floats of :func:`_forms`' ``d012(x, c, r2, u,
+    beta, g)``, with the products of the parameters alone computed once per point instead of at
+    each evaluation."""
+    return hoisted(indicator(-1 if odd else 1).text("math", (0, 1, 2)), "math")
 
 
 _HALF_PI = math.pi / 2
@@ -176,13 +185,16 @@ def float_stage(n: int, r: float, r2: float, u: float, beta: float, g: float) ->
     ``D(top)`` is then below the maximum by about ``D'' 1e-24``), and each edge by Halley's
     method, started where the parabola through the maximiser with the curvature there vanishes
     (or at the bracket's end, where that start falls outside)."""
-    edge, d012, d12 = _forms(n % 2 == 1)
+    odd = n % 2 == 1
+    edge, _, d12 = _forms(odd)
     t1 = float_edge(edge, n, 1, r, beta)
     t2 = float_edge(edge, n, -1, r, beta)
     a, b = min(t1, t2), max(t1, t2)
     args = (n * math.pi / 2, r2, u, beta, g)
-    at_a = d012(a, *args)
-    at_b = d012(b, *args)
+    prepare, d012 = _hoisted(odd)  # d012(x, *hargs): the floats of _forms' d012(x, *args)
+    hargs = prepare(*args)
+    at_a = d012(a, *hargs)
+    at_b = d012(b, *hargs)
     d1a, d1b = at_a[1], at_b[1]
     if d1a <= 0:
         top, at_top = a, at_a
@@ -193,7 +205,7 @@ def float_stage(n: int, r: float, r2: float, u: float, beta: float, g: float) ->
         if not a < x0 < b:
             x0 = 0.5 * (a + b)
         top = bisect_newton(lambda x: d12(x, *args), a, b, x0, False, rtol=1e-12)
-        at_top = d012(top, *args)
+        at_top = d012(top, *hargs)
     dtop = at_top[0]
     lo = hi = math.nan
     if dtop > 0:
@@ -205,10 +217,10 @@ def float_stage(n: int, r: float, r2: float, u: float, beta: float, g: float) ->
             (b, at_b, top + half, False, (top, b)),
         ):
             if u0 < x0 < v0:
-                first = d012(x0, *args)
+                first = d012(x0, *hargs)
             else:
                 x0, first = end, at_end
-            ends.append(_halley_edge(d012, u0, v0, x0, inc, first, args))
+            ends.append(_halley_edge(d012, u0, v0, x0, inc, first, hargs))
         lo, hi = ends
     return a, b, top, dtop, lo, hi
 
@@ -248,24 +260,17 @@ def wide_float_edges(n: int, r: float, r2: float, u: float, beta: float, g: floa
     Newton step from the end (``-D/D'`` with ``D < 0 < D'`` at ``a``, ``D'`` of the other sign at
     ``b``) is under an eighth of the half-bracket is started there, where ``D`` is nearly linear
     (a deep modulation puts each edge close to an end); the other at the parabola's root."""
-    edge, d012, _ = _forms(n % 2 == 1)
+    odd = n % 2 == 1
+    edge = _forms(odd)[0]
     t1 = float_edge(edge, n, 1, r, beta)
     t2 = float_edge(edge, n, -1, r, beta)
     a, b = (t1, t2) if t1 < t2 else (t2, t1)
-    args = (n * math.pi / 2, r2, u, beta, g)
+    prepare, d012 = _hoisted(odd)  # d012(x, *args): D, D', D'' (the floats of _forms' d012)
+    args = prepare(n * math.pi / 2, r2, u, beta, g)
     mid = 0.5 * (a + b)
     dm, d1, d2 = d012(mid, *args)
     if not (dm > 0 and d2 < 0 and a < mid < b):
         return (*float_stage(n, r, r2, u, beta, g), 0)
-    # the parabola dm + d1 t + d2 t^2/2: one root either side of t = 0 (dm > 0 > d2)
-    disc = math.sqrt(d1 * d1 - 2.0 * d2 * dm)
-    q = -0.5 * (d1 + math.copysign(disc, d1))  # the roots q/(d2/2) and dm/q, without cancellation
-    if q != 0:
-        r0, r1 = q / (0.5 * d2), dm / q
-        if r1 < r0:
-            r0, r1 = r1, r0
-    else:
-        r0, r1 = -math.inf, math.inf
     convex = 0
     at_a = at_b = None
     if b - a > WIDE:
@@ -278,6 +283,19 @@ def wide_float_edges(n: int, r: float, r2: float, u: float, beta: float, g: floa
         fb, db = at_b[0], at_b[1]
         if not (fb < 0 < -db and -fb < -reach * db):
             at_b = None
+    if at_a is None or at_b is None:
+        # the parabola dm + d1 t + d2 t^2/2: one root either side of t = 0 (dm > 0 > d2); only
+        # where an edge starts from it (on a wide bracket both may start at the bracket's ends)
+        disc = math.sqrt(d1 * d1 - 2.0 * d2 * dm)
+        q = -0.5 * (d1 + math.copysign(disc, d1))  # the roots q/(d2/2) and dm/q, no cancellation
+        if q != 0:
+            r0, r1 = q / (0.5 * d2), dm / q
+            if r1 < r0:
+                r0, r1 = r1, r0
+        else:
+            r0, r1 = -math.inf, math.inf
+    else:
+        r0 = r1 = math.nan  # (not used)
     lo = _edge_from(d012, args, a, mid, a, at_a, mid + r0, True)
     hi = _edge_from(d012, args, mid, b, b, at_b, mid + r1, False)
     return a, b, mid, dm, lo, hi, convex

@@ -52,6 +52,8 @@ from .derived import (
     indicator,
     indicator_bend,
     indicator_slope,
+    int_constants,
+    load_source,
     near_one_forms,
     order1_forms,
     trace_indicator,
@@ -59,7 +61,14 @@ from .derived import (
 )
 from .enclosure import AtPrecision, edges_result, no_interval, sgn_of, theta_floor
 from .float_stage import normal_float_edges, normal_float_stage, wide_float_edges
-from .params import NEAR_ONE, NormalParams, normal_params, normal_values, trace_params
+from .params import (
+    NEAR_ONE,
+    NormalParams,
+    exact_arb_values,
+    normal_params,
+    normal_values,
+    trace_params,
+)
 from .request import Request
 from .result import Boundary, from_balls
 from .system_params import normal_jets
@@ -189,66 +198,70 @@ def _unimodal(
             v, fv = u, c
         stack.append((a, v, direct & 1))
     else:
-        stack = [(a, b, False)]
-    count, labels = 0, []
+        stack = [(a, b, 0)]
+    # The labels are checked as they come (left to right), not collected: ``state`` is 0 while
+    # only neg pieces came (none yet: the leading ones), 1 in the run before any down piece (cap
+    # or up pieces), 2 in the run once a down piece came, 3 in the neg pieces after the run.  A
+    # label that no later labels can make acceptable -- a cap, up or down piece after the
+    # trailing neg pieces (a neg piece inside the run), an up piece after a down one -- ends the
+    # test at once: False, as the whole list would give.
+    state = 0
+    count = 0
     zero = _ZERO  # (a ball: comparing with the int 0 converts it each time)
+    pop, push = stack.pop, stack.append
     while stack:  # left to right: the left half is pushed last
-        u, v, end = stack.pop()
+        u, v, end = pop()
         count += 1
         if count > budget:
             return False
         X = u.union(v)  # u, v exact: a ball holding [u, v]
-        if end and not (u < lo and hi < v):  # an end piece named by direct: D' on X itself
-            label = _slope_label(dD(X, *args))
-            if label:
-                labels.append(label)
-                continue
-        if bend is not None:
-            d2 = bend(X, *args)
-            if d2 > zero:
-                labels.append("cap")
-                continue
-            d2 = -2 * d2  # D'' on X (bend is -D''/2, in a tighter form than d2D's)
-        else:
-            d2 = d2D(X, *args)
-            if d2 < zero:
-                labels.append("cap")
-                continue
-        mid = X.mid()
-        if not (u < lo and hi < v):
-            # D' on X by the mean-value form around the midpoint (D'' on X is d2)
-            label = _slope_label(dD(mid, *args) + d2 * (X - mid))
-            if label:
-                labels.append(label)
-                continue
-        if (v < lo or hi < u) and D(X, *args) < zero:  # (elsewhere a neg piece fails the shape)
-            labels.append("neg")
-            continue
-        stack.append((mid, v, False))
-        stack.append((u, mid, False))
-    while labels and labels[0] == "neg":
-        labels.pop(0)
-    while labels and labels[-1] == "neg":
-        labels.pop()
-    if "neg" in labels:
-        return False
-    down = False
-    for label in labels:
-        if label == "down":
-            down = True
-        elif label == "up" and down:
-            return False
+        both = None  # whether the piece holds both root balls (compared once, where needed)
+        label = 0  # 1 cap, 2 up, 3 down, 4 neg; 0 not decided
+        if end:  # an end piece named by direct: D' on X itself
+            both = u < lo and hi < v
+            if not both:
+                d1 = dD(X, *args)
+                label = 2 if d1 > zero else 3 if d1 < zero else 0
+        if not label:
+            if bend is not None:
+                d2 = bend(X, *args)
+                if d2 > zero:
+                    label = 1
+                else:
+                    d2 = -2 * d2  # D'' on X (bend is -D''/2, in a tighter form than d2D's)
+            else:
+                d2 = d2D(X, *args)
+                if d2 < zero:
+                    label = 1
+            if not label:
+                mid = X.mid()
+                if both is None:
+                    both = u < lo and hi < v
+                if not both:
+                    # D' on X by the mean-value form around the midpoint (D'' on X is d2)
+                    d1 = dD(mid, *args) + d2 * (X - mid)
+                    label = 2 if d1 > zero else 3 if d1 < zero else 0
+                if not label:
+                    if (v < lo or hi < u) and D(X, *args) < zero:  # (elsewhere a neg piece
+                        label = 4  # fails the shape)
+                    else:
+                        push((mid, v, 0))
+                        push((u, mid, 0))
+                        continue
+        if label == 4:
+            if state:
+                state = 3
+        elif state == 3:
+            return False  # a neg piece inside the run
+        elif label == 3:
+            state = 2
+        elif label == 2:
+            if state == 2:
+                return False  # up after down
+            state = 1
+        elif not state:
+            state = 1
     return True
-
-
-def _slope_label(d1: arb) -> str | None:
-    """:func:`_unimodal`'s label of a piece where ``d1`` encloses ``D'`` on it: ``up``, ``down``,
-    or ``None`` where the sign is not decided."""
-    if d1 > _ZERO:
-        return "up"
-    if d1 < _ZERO:
-        return "down"
-    return None
 
 
 def _prove_shape(h: _Hump, lo_root, hi_root, unimodal: bool = True) -> bool:
@@ -560,6 +573,30 @@ def _normal_forms(parity: int) -> tuple:
     )
 
 
+@cache
+def _lean_forms(parity: int) -> tuple:
+    """:func:`_normal_forms` for :func:`_lean_normal`, whose arguments are always balls: ``D``,
+    ``D'`` and the undamped edge equation as they are, and ``D''``, ``(D, D')``, ``-D''/2`` and
+    ``D'`` in double angles with their integer constants as exact balls made once
+    (:func:`verify.derived.int_constants`): the same balls, without an int converted at each
+    operation."""
+    D0, D1, _, _, E0, _, _ = _normal_forms(parity)
+    form = indicator(parity)
+
+    def balls(f, k):
+        return load_source(int_constants(f.text("arb", k)), "arb", k)
+
+    return (
+        D0,
+        D1,
+        balls(form, 2),
+        balls(form, (0, 1)),
+        E0,
+        balls(indicator_bend(parity), 0),
+        balls(indicator_slope(parity), 0),
+    )
+
+
 def hump_normal(
     n: int,
     m: Fraction,
@@ -828,7 +865,7 @@ def _lean_normal(req: Request, bits: int) -> Boundary | None:
     ``None`` where a step does not succeed at once; the caller then runs the general path, which
     repeats these steps and goes on from there."""
     n = req.order
-    D0, D1, D2, D01, E0, Bend, Slope = _normal_forms(-1 if n % 2 else 1)
+    D0, D1, D2, D01, E0, Bend, Slope = _lean_forms(-1 if n % 2 else 1)
     work = bits + QUICK_GUARD
     top = work if work > 80 else 80
     old = ctx.prec
@@ -837,9 +874,12 @@ def _lean_normal(req: Request, bits: int) -> Boundary | None:
         # objects compute them (12 bits above it), without the NormalParams object (the same
         # balls): the paper's exact model, and the other members of the family
         ctx.prec = top + 12
-        r, r2, u, beta, w, g, _, dinv, bm = normal_values(
-            req.m, req.Q, req.damping, _ARB, req.system
-        )
+        if req.system is PAPER and req.damping == "exact":  # normal_values' route for these
+            r, r2, u, beta, w, g, _, dinv, bm = exact_arb_values(req.m, req.Q)
+        else:
+            r, r2, u, beta, w, g, _, dinv, bm = normal_values(
+                req.m, req.Q, req.damping, _ARB, req.system
+            )
         c = arb.pi() * n / 2
         if float(bm) < NEAR_ONE:
             return None
@@ -872,14 +912,19 @@ def _lean_normal(req: Request, bits: int) -> Boundary | None:
             ctx.prec = 76  # 64 + 12, as args(64)
             r = +r
         c64, _, _, beta64, _ = low
-        ctx.prec = 64
         sgn = _SGN[n & 3]  # exact: the same balls as with the int
-        if not (
-            E0(A, c64, sgn, _EPS_BOTH, r, beta64) < _ZERO
-            and E0(B, c64, sgn, _EPS_BOTH, r, beta64) > _ZERO
-        ):
-            return None
+        # the precision changes as few times as it can (setting it costs about as much as an
+        # arb product): the bracket's test (64 bits) comes after the edges and the result's
+        # arithmetic (at the proof's precision), next to the shape (64 bits) -- each test's
+        # balls are those of the order where the bracket came first; a failed test returns
+        # None either way
         if not dtop > 0:
+            ctx.prec = 64
+            if not (
+                E0(A, c64, sgn, _EPS_BOTH, r, beta64) < _ZERO
+                and E0(B, c64, sgn, _EPS_BOTH, r, beta64) > _ZERO
+            ):
+                return None
             # the float stage finds no interval: D < 0 on all of [a, b], on the balls args(64)
             # -- by Taylor's bound at the float maximiser where D'' < 0 on the whole bracket
             # (taylor_negative's, on all of [a, b]), else by the first step of prove_negative;
@@ -906,25 +951,27 @@ def _lean_normal(req: Request, bits: int) -> Boundary | None:
         Tp = arb(tp) if need > _START_BITS else None  # (the steps' bracket: none at few digits)
         # the lower edge: a zero of D; the upper one: of -D (quick_root's F and F')
         N1 = N2 = None
+        ctx.prec = work
         for x0, left, right in ((lo, A, Tp), (hi, Tp, B)):
-            x = arb(x0)
+            x = arb(x0)  # (exact at any precision)
             acc = _START_BITS
-            while acc < need:
-                acc = min(2 * acc - 8, need + 8)
-                prec = acc + 12
-                if cache is None:
-                    cache = {}
-                at = _lean_args(cache, prec, top, near)
-                ctx.prec = prec
-                # -D for the upper edge: the step f/d is the same ball (both negated exactly,
-                # the quotient rounded towards zero), and so are the tests
-                f, d = D01(x, *at)
-                if not (d.is_finite() and f.is_finite()) or d.contains(0):
-                    return None
-                x = (x - f / d).mid()
-                if not left < x < right:
-                    return None
-            ctx.prec = work
+            if acc < need:
+                while acc < need:
+                    acc = min(2 * acc - 8, need + 8)
+                    prec = acc + 12
+                    if cache is None:
+                        cache = {}
+                    at = _lean_args(cache, prec, top, near)
+                    ctx.prec = prec
+                    # -D for the upper edge: the step f/d is the same ball (both negated
+                    # exactly, the quotient rounded towards zero), and so are the tests
+                    f, d = D01(x, *at)
+                    if not (d.is_finite() and f.is_finite()) or d.contains(0):
+                        return None
+                    x = (x - f / d).mid()
+                    if not left < x < right:
+                        return None
+                ctx.prec = work
             if acc == _START_BITS and abs(x0) > big:
                 # x is the float start (no step taken) and |x| is above the floor: the radius
                 # |x| 2**(4 - acc) is an exact float, and the ball the one below
@@ -954,18 +1001,12 @@ def _lean_normal(req: Request, bits: int) -> Boundary | None:
                 N1 = N
             else:
                 N2 = N
-        # the shape: unimodality on [a, b] at 64 bits (_unimodal_shape's test, on args(64))
-        ctx.prec = 64
-        if not _unimodal(
-            A, B, N1, N2, Bend, D2, Slope, D0, args=low, pieces=3 if convex else 1, direct=convex
-        ):
-            return None
         # edges_result at the roots' precision: the parameters as they are at the proof's
         # precision, else rounded from there (AtPrecision with rounded=True)
         if work != top:  # the two fields used, as _rounded_params(pt, work) rounds them
             ctx.prec = work + 12
             w, dinv = +w, +dinv
-        ctx.prec = work
+            ctx.prec = work
         pi = arb.pi()
         half = _HALVES[n] if n < 8 else arb(n) * _HALF
         pw = pi * w
@@ -977,6 +1018,18 @@ def _lean_normal(req: Request, bits: int) -> Boundary | None:
             d1, d2 = N1 / pw + hd, N2 / pw + hd
         if not (T1.rad() <= T1.abs_lower() * tol and T2.rad() <= T2.abs_lower() * tol):
             return None  # pragma: no cover - guard
+        ctx.prec = 64
+        # the bracket: D < 0 outside it (the edge equation's signs at its ends, both eps)
+        if not (
+            E0(A, c64, sgn, _EPS_BOTH, r, beta64) < _ZERO
+            and E0(B, c64, sgn, _EPS_BOTH, r, beta64) > _ZERO
+        ):
+            return None
+        # the shape: unimodality on [a, b] at 64 bits (_unimodal_shape's test, on args(64))
+        if not _unimodal(
+            A, B, N1, N2, Bend, D2, Slope, D0, args=low, pieces=3 if convex else 1, direct=convex
+        ):
+            return None
     finally:
         ctx.prec = old
     return from_balls(

@@ -140,15 +140,25 @@ def form_for(
     The normal form without friction, in the paper model, and in the exact model with both halves
     under-damped and half 1 (the low-frequency phase) not within :data:`NEAR_CRITICAL` of critical
     damping (``Omega1^2 / gamma^2 < NEAR_CRITICAL^2``); the trace form otherwise."""
-    if system is PAPER and type(m) is Fraction and type(Q) is Fraction:
-        # cached by the integers (hashing a Fraction and a System costs more than the lookup)
-        return _form_for_paper(m.numerator, m.denominator, Q.numerator, Q.denominator, damping)
+    if type(m) is Fraction and type(Q) is Fraction:
+        # cached by the integers (hashing a Fraction costs more than the lookup; a System's hash
+        # about a quarter of one)
+        if system is PAPER:
+            return _form_for_paper(m.numerator, m.denominator, Q.numerator, Q.denominator, damping)
+        return _form_for_system(
+            m.numerator, m.denominator, Q.numerator, Q.denominator, damping, system
+        )
     return _form_for(m, Q, damping, system)
 
 
 @lru_cache(maxsize=256)
 def _form_for_paper(mp: int, mq: int, qp: int, qq: int, damping: str):
     return _form_for(Fraction(mp, mq), Fraction(qp, qq), damping, PAPER)
+
+
+@lru_cache(maxsize=256)
+def _form_for_system(mp: int, mq: int, qp: int, qq: int, damping: str, system: System):
+    return _form_for(Fraction(mp, mq), Fraction(qp, qq), damping, system)
 
 
 @lru_cache(maxsize=256)
