@@ -43,6 +43,7 @@ NUMERIC = [
     ["boundary", "--order", "3", "--m", "0.3"],
     ["boundary", "--order", "3", "--m", "0.3", "--Q", "7"],
     ["boundary", "--order", "1", "--m", "0.999999", "--digits", "700"],  # the near-one forms
+    ["boundary", "--order", "1", "--m", "0.9995", "--Q", "0.001"],  # the scaled trace form
     ["table", "--orders", "1-2", "--m", "0.1:0.2:0.1", "--digits", "20"],
     ["multipliers", "--T", "1.45", "--m", "0.3"],
 ]

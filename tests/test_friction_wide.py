@@ -13,6 +13,8 @@ and the largest ``Q`` at 40 digits.
 
 from __future__ import annotations
 
+import math
+
 import mpmath
 import pytest
 
@@ -75,15 +77,80 @@ def test_no_interval_just_below_a_threshold():
     assert -0.01 < worst < 0  # close to the threshold, yet below it
 
 
-def test_over_damped_window_past_double_range_is_refused(capsys):
-    # both halves over-damped at m = 0.999: the window's tail bound lies where exp(2 zeta) has no
-    # double; the engine says it cannot decide instead of failing
+#: (m, Q) with both halves over-damped where the order-1 window lies past the double range
+#: (``cosh(2 zeta)`` overflows before its tail bound holds; ``zeta`` up to about 1000): refused
+#: before as "not decided"; the float stage now takes ``D exp(-2 zeta)``
+#: (:func:`verify.derived.trace_indicator_scaled`).  The last one is a narrow interval just above
+#: the threshold in ``Q`` at ``m = 0.999``.
+OVERDAMPED_PAST_DOUBLES = [
+    ("0.9992", "0.001"),
+    ("0.9993", "0.001"),
+    ("0.9995", "0.001"),
+    ("0.9997", "0.001"),
+    ("0.9996", "0.0005"),
+    ("0.9999", "0.0005"),
+    ("0.999", "0.002"),
+    ("0.9993", "0.002"),
+    ("0.999", "0.0010018469107664705"),
+]
+
+
+@pytest.mark.parametrize("digits", [15, 40])
+@pytest.mark.parametrize("m, Q", OVERDAMPED_PAST_DOUBLES)
+def test_over_damped_window_past_double_range_against_the_monodromy(m, Q, digits):
+    b = boundary(1, m, Q=Q, damping="exact", digits=digits)
+    assert b.exists and b.certified and not b.notes
+    j = b.as_json()
+    assert "half 1 over, half 2 over" in j["regime"]
+    dps = digits + 45  # (the reference's entries reach exp(+-1000): relative digits suffice)
+    with mpmath.workdps(dps):
+        lo, hi, err = (mpmath.mpf(j[k]) for k in ("lower", "upper", "error_bound"))
+        assert hi - lo > 8 * err
+        assert _excess((lo + hi) / 2, m, Q, "exact", dps) > 0
+        for edge, inward in ((lo, 1), (hi, -1)):
+            assert _excess(edge + inward * 3 * err, m, Q, "exact", dps) > 0
+            assert _excess(edge - inward * 3 * err, m, Q, "exact", dps) < 0
+
+
+def test_over_damped_window_past_double_range_answers(capsys):
+    # m = 0.999 just above the threshold in Q: the window's tail bound lies where exp(2 zeta) has
+    # no double; refused before, answered from the scaled form (as the table, below)
     code, out, err = run_cli(
         capsys, "boundary", "--order", "1", "--m", "0.999", "--Q", "0.0010018469107664705"
     )
-    assert code == 2 and out == ""
-    assert err.startswith("paramres: error: ") and "not decided" in err
-    assert "Traceback" not in err
+    assert code == 0 and err == ""
+    assert "lower T/T0 = 0.002558809698429" in out and "upper T/T0 = 0.002738561494758" in out
+    assert "half 1 over, half 2 over" in out and "not certified" not in out
+
+
+def test_over_damped_window_past_double_range_from_the_float_stage():
+    from fractions import Fraction
+
+    from verify.derived import backend, trace_indicator_scaled
+    from verify.float_roots import NOISE_ULPS, damped_trace, trace_window_ends
+    from verify.params import trace_params
+
+    # the plain float stage overflows; the scaled one gives the window and the edges in zeta
+    # (T = 2 Q zeta/pi), with the same signs and no overflow; its rounding bound (zeta ~ 500
+    # times the rounding of the exponents) is above DOUBT, which sends the double grid to the
+    # certified route, and holds the edges' actual errors (1.7e-14 at the upper edge)
+    T = trace_params(Fraction(1999, 2000), Fraction(1, 1000), backend("math"))
+    with pytest.raises(OverflowError):
+        trace_window_ends(1, ("over", "over"), T)
+    window = trace_window_ends(1, ("over", "over"), T, scaled=True)
+    assert window is not None and window[1] > 400
+    got = damped_trace(1, ("over", "over"), T, window, scaled=True)
+    assert got["dtop"] > 0 and got["doubt"]
+    b = boundary(1, "0.9995", Q="0.001", digits=20)
+    scale = 2 * 0.001 / math.pi  # T/T0 = 2 Q zeta/pi
+    form = trace_indicator_scaled("over", "over")
+    sizes, d01 = form.compiled("math", (4, 5)), form.compiled("math", (0, 1))
+    args = (-1.0, float(T.kappa), float(T.nu1), float(T.nu2))
+    for z, edge in ((got["lo"], b.as_json()["lower"]), (got["hi"], b.as_json()["upper"])):
+        total, slope = sizes(z, *args)
+        noise = NOISE_ULPS * 2.0**-53 * (total + z * slope)
+        estimate = noise / abs(d01(z, *args)[1]) / z  # the relative error damped_trace bounds
+        assert abs(z * scale / float(edge) - 1) < min(estimate, 1e-12)
 
 
 def test_paper_model_past_double_range_is_refused(capsys):
@@ -106,15 +173,34 @@ def test_paper_model_past_double_range_is_refused(capsys):
 
 
 def test_table_past_double_range_is_refused(capsys):
-    # the double grid's trace form at the same point: the certified route is asked, and refuses
+    # the double grid at the paper model's point above: the certified route is asked, and refuses
     code, out, err = run_cli(
-        capsys, "table", "--orders", "1", "--m", "0.999:0.999:0.1", "--Q", "0.0010018469107664705"
+        capsys,
+        "table",
+        "--orders",
+        "1",
+        "--m",
+        "0.999999:0.999999:0.1",
+        "--Q",
+        "1.0669502220605025e-06",
+        "--damping",
+        "paper",
     )
     assert code == 2
     assert err.startswith("paramres: error: ") and "not decided" in err
-    # m = 0.999 lies inside the double grid's range: the refusal does not say it lies outside
+    # m = 0.999999 lies inside the double grid's range: the refusal does not say it lies outside
     assert "outside the double grid" not in err
     assert "the double grid cannot bound its error there" in err
+
+
+def test_table_past_double_range_over_damped(capsys):
+    # the double grid's trace form at m = 0.999 past the double range: the certified route is
+    # asked, and answers (refused before)
+    code, out, err = run_cli(
+        capsys, "table", "--orders", "1", "--m", "0.999:0.999:0.1", "--Q", "0.0010018469107664705"
+    )
+    assert code == 0
+    assert out.splitlines()[-1] == "1,0.999,0.002558809698429,0.002738561494758"
 
 
 @pytest.mark.parametrize("kappa", ["-1000", "-3", "-0.1", "0.1", "3", "1000"])

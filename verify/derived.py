@@ -72,6 +72,7 @@ __all__ = [
     "order1_forms",
     "near_one_forms",
     "trace_indicator",
+    "trace_indicator_scaled",
     "half_period_forms",
     "fixed_point_map",
     "term_sizes",
@@ -125,6 +126,7 @@ _BACKENDS = {
         "cos": math.cos,
         "sinh": math.sinh,
         "cosh": math.cosh,
+        "exp": math.exp,
         "sqrt": math.sqrt,
         "atan2": math.atan2,
         "asin": math.asin,
@@ -136,6 +138,7 @@ _BACKENDS = {
         "cos": np.cos,
         "sinh": np.sinh,
         "cosh": np.cosh,
+        "exp": np.exp,
         "sqrt": np.sqrt,
         "atan2": np.arctan2,
         "asin": np.arcsin,
@@ -147,6 +150,7 @@ _BACKENDS = {
         "cos": mpmath.cos,
         "sinh": mpmath.sinh,
         "cosh": mpmath.cosh,
+        "exp": mpmath.exp,
         "sqrt": mpmath.sqrt,
         "atan2": mpmath.atan2,
         "asin": mpmath.asin,
@@ -161,6 +165,7 @@ _BACKENDS = {
         "cos": methodcaller("cos"),
         "sinh": methodcaller("sinh"),
         "cosh": methodcaller("cosh"),
+        "exp": methodcaller("exp"),
         "sqrt": methodcaller("sqrt"),
         "atan2": lambda a, b: arb.atan2(a, b),
         "asin": methodcaller("asin"),
@@ -1166,6 +1171,74 @@ def _trace_indicator(regime1, regime2) -> Form:
     D = sigma * (2 * C1 * C2 - kappa * S1 * S2) - 2 * sp.cosh(2 * zeta)
     title = f"trace indicator, half 1 {regime1}, half 2 {regime2}"
     return Form(title, (zeta, sigma, kappa, nu1, nu2), _derivatives(D, zeta, 2))
+
+
+@cache
+def trace_indicator_scaled(regime1, regime2) -> LazyForm:
+    """The trace-form indicator times ``exp(-2 zeta)`` (see :func:`_trace_indicator_scaled`),
+    derived when first needed beyond its pregenerated compilations."""
+    return LazyForm(
+        f"trace_indicator_scaled({regime1}, {regime2})",
+        lambda: _trace_indicator_scaled(regime1, regime2),
+    )
+
+
+@cache
+def _trace_indicator_scaled(regime1, regime2) -> Form:
+    """:func:`_trace_indicator` scaled by ``w = exp(-2 zeta)``, for where ``cosh(2 zeta)`` is
+    past the double range (both halves over-damped near ``m = 1`` at a tiny ``Q``: the window of
+    order 1 reaches ``zeta`` of several hundred), and where the balls of ``D``'s large, nearly
+    cancelling terms, which grow like ``exp(2 zeta)``, would need a fine bisection of the window.
+    ``D w`` has the zeros and the signs of ``D``.  The same arguments; the expressions are
+
+    - ``0, 1, 2``: ``D w`` and its first two derivatives in ``zeta``,
+    - ``3``: ``P w`` with ``P = dD/dsigma = 2 C1 C2 - kappa S1 S2`` (the window's start),
+    - ``4, 5``: the sizes of the terms of ``D w`` for its rounding bound, as
+      :func:`term_sizes`: ``sum |t_i|`` and a bound on ``sum |dt_i/dzeta|`` in which each
+      exponent's slope ``a_1 nu_1 + a_2 nu_2 + a_0`` counts as ``|a_1| nu_1 + |a_2| nu_2 + |a_0|``
+      (the rounding of ``nu_1 + nu_2 - 2`` is relative to its terms, not to the small
+      difference).
+
+    Each hyperbolic function is written as exponentials and each product of exponentials as one
+    ``exp(zeta (a_1 nu_1 + a_2 nu_2 + a_0))`` with ``a_0 <= -2 + |a_1| + |a_2|`` (``nu_i < 1``
+    over-damped): no term overflows.  ``D w`` and ``P w`` are checked against ``w`` times their
+    unscaled forms by :func:`analytic.identity.prove_zero`."""
+    import sympy as sp
+
+    from analytic.identity import prove_zero
+
+    form = _trace_indicator(regime1, regime2)
+    zeta, sigma = form.args[:2]
+    w = sp.exp(-2 * zeta)
+
+    def exponentials(e):
+        e = e.replace(sp.cosh, lambda x: (sp.exp(x) + sp.exp(-x)) / 2)
+        return e.replace(sp.sinh, lambda x: (sp.exp(x) - sp.exp(-x)) / 2)
+
+    def scaled(e):
+        e = sp.powsimp(sp.expand(exponentials(e), power_exp=False), combine="exp")
+        return e.replace(sp.exp, lambda x: sp.exp(sp.factor_terms(x)))
+
+    plain = (form.exprs[0] * w, sp.diff(form.exprs[0], sigma) * w)
+    Dw, Pw = (scaled(e) for e in plain)
+    for e, sc in zip(plain, (Dw, Pw), strict=True):
+        if sc.has(sp.cosh, sp.sinh) or not prove_zero(  # pragma: no cover - derivation guard
+            exponentials(e) - sc
+        ).holds:
+            raise AssertionError(f"scaled trace form is not {e}: {sc}")
+    total, slope = [], []
+    for t in sp.Add.make_args(Dw):
+        exps = [f for f in sp.Mul.make_args(t) if isinstance(f, sp.exp)]
+        coef = sp.Mul(*(f for f in sp.Mul.make_args(t) if not isinstance(f, sp.exp)))
+        grow = sp.Add(
+            *(sp.Abs(a) for f in exps for a in sp.Add.make_args(sp.expand(sp.diff(f.args[0], zeta))))
+        )
+        size = sp.Mul(*exps)
+        total.append(sp.Abs(coef) * size)
+        slope.append((sp.Abs(sp.diff(coef, zeta)) + sp.Abs(coef) * grow) * size)
+    exprs = _derivatives(Dw, zeta, 2) + (Pw, sp.Add(*total), sp.Add(*slope))
+    title = f"trace indicator times exp(-2 zeta), half 1 {regime1}, half 2 {regime2}"
+    return Form(title, form.args, exprs)
 
 
 @cache

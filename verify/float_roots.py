@@ -11,7 +11,7 @@ import math
 
 import numpy as np
 
-from .derived import term_sizes, trace_indicator, trace_window
+from .derived import term_sizes, trace_indicator, trace_indicator_scaled, trace_window
 
 __all__ = [
     "ERROR_BOUND",
@@ -62,7 +62,7 @@ def regime_of(u) -> str:
     return "under" if u > 0 else ("critical" if u == 0 else "over")
 
 
-def trace_window_ends(n: int, regimes, T, *, bits: int = 60):
+def trace_window_ends(n: int, regimes, T, *, bits: int = 60, scaled: bool = False):
     """The ``zeta``-window of order ``n`` (floats ``(za, zb)``; ``None`` if the order has none).
 
     Half 2 under-damped: ``Phi(zeta) = n pi -+ pi/2`` (``Phi`` increases strictly wherever it
@@ -72,6 +72,9 @@ def trace_window_ends(n: int, regimes, T, *, bits: int = 60):
     to a point beyond which ``D < 0`` is guaranteed by ``(2 + |kappa| zeta^2) exp(-(2 - nu1 - nu2)
     zeta) < 1`` (``zeta (2 - nu1 - nu2) > 2``) or, both halves over-damped, by ``max(2, 1 +
     |kappa|/(2 nu1 nu2)) exp(-(2 - nu1 - nu2) zeta) < 1``.
+
+    ``scaled``: the start from ``P exp(-2 zeta)`` (:func:`verify.derived.trace_indicator_scaled`,
+    the same signs), for a window past the double range, where ``cosh(2 zeta)`` overflows.
     """
     r1, r2 = regimes
     kappa, nu1, nu2 = float(T.kappa), float(T.nu1), float(T.nu2)
@@ -108,11 +111,18 @@ def trace_window_ends(n: int, regimes, T, *, bits: int = 60):
         return (za, zb) if za < zb else None
     if n != 1 or kappa <= 0:
         return None
-    form = trace_indicator(r1, r2)
-    Pf = form.compiled("math", 0)
+    if scaled:
+        Pw = trace_indicator_scaled(r1, r2).compiled("math", 3)
 
-    def P(z):  # D = sigma P - 2 cosh(2 zeta) with sigma = 1 gives P
-        return Pf(z, 1.0, kappa, nu1, nu2) + 2 * math.cosh(2 * z)
+        def P(z):  # P exp(-2 zeta): the sign of P
+            return Pw(z, 1.0, kappa, nu1, nu2)
+
+    else:
+        form = trace_indicator(r1, r2)
+        Pf = form.compiled("math", 0)
+
+        def P(z):  # D = sigma P - 2 cosh(2 zeta) with sigma = 1 gives P
+            return Pf(z, 1.0, kappa, nu1, nu2) + 2 * math.cosh(2 * z)
 
     a = 2 - nu1 - nu2
     zend = max(2 / a, 1.0)
@@ -139,12 +149,17 @@ def trace_window_ends(n: int, regimes, T, *, bits: int = 60):
     return lo, zend
 
 
-def damped_trace(n: int, regimes, T, window):
+def damped_trace(n: int, regimes, T, window, *, scaled: bool = False):
     """Friction, trace form, one order and depth: ``dict(a, b, top, dtop, lo, hi, doubt)`` in
     ``zeta``; ``doubt``: the sign of ``D`` at the maximiser is within rounding, or an edge's
-    estimated relative error exceeds :data:`DOUBT` (as :func:`_normal_doubt`)."""
+    estimated relative error exceeds :data:`DOUBT` (as :func:`_normal_doubt`).
+
+    ``scaled``: all of it in ``D exp(-2 zeta)``, its derivatives and its rounding bound
+    (:func:`verify.derived.trace_indicator_scaled`), for a window past the double range: the
+    same zeros and signs; ``top`` is its maximiser (``D > 0`` there where the interval exists, all
+    that the certified stage needs of it) and ``dtop`` its value."""
     sigma = -1.0 if n % 2 else 1.0
-    form = trace_indicator(*regimes)
+    form = trace_indicator_scaled(*regimes) if scaled else trace_indicator(*regimes)
     d01 = form.compiled("math", (0, 1))
     d12 = form.compiled("math", (1, 2))
     args = (sigma, float(T.kappa), float(T.nu1), float(T.nu2))
@@ -165,7 +180,8 @@ def damped_trace(n: int, regimes, T, window):
     else:
         top = float(zs[k])
     dtop = d01(top, *args)[0]
-    sizes = term_sizes(form).compiled("math", (0, 1))
+    # the sizes of the terms of D (or D exp(-2 zeta)), without overflow where scaled
+    sizes = form.compiled("math", (4, 5)) if scaled else term_sizes(form).compiled("math", (0, 1))
 
     def noise(z):  # as :func:`_noise`, the angles of size zeta
         total, slope = sizes(z, *args)

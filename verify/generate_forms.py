@@ -47,6 +47,18 @@ ENTRIES = (
         )
     ]
     + [
+        ("trace_indicator_scaled", ("over", "over"), b, o)
+        for b, o in (
+            ("math", (0, 1)),
+            ("math", (1, 2)),
+            ("math", 3),
+            ("math", (4, 5)),
+            ("arb", 0),
+            ("arb", 1),
+            ("arb", 2),
+        )
+    ]
+    + [
         (f"{forms}[{k}]", (), b, o)
         for forms, count in (("order1_forms", 2), ("near_one_forms", 3))
         for k in range(count)

@@ -57,6 +57,7 @@ from .derived import (
     near_one_forms,
     order1_forms,
     trace_indicator,
+    trace_indicator_scaled,
     trace_window,
 )
 from .enclosure import AtPrecision, edges_result, no_interval, sgn_of, theta_floor
@@ -1165,13 +1166,19 @@ def hump_trace(
         if none:
             return None, none
     Tf = trace_params(m, Q, _MATH, system)
+    scaled = False  # the float stage in D exp(-2 zeta) (past the double range)
     try:
         window = window or trace_window_ends(n, regimes, Tf)
     except OverflowError:  # D ~ exp(2 zeta) past the double range before the tail bound holds
-        raise CertificationError(
-            f"order {n}, m = {m}, Q = {Q}: the window of the trace form (both halves "
-            "over-damped) reaches beyond the range of double precision; not decided"
-        ) from None
+        if m_box is not None:
+            raise CertificationError(
+                f"order {n}, m = {m}, Q = {Q}: the window of the trace form (both halves "
+                "over-damped) reaches beyond the range of double precision; not decided"
+            ) from None
+        # at one depth the float stage takes D exp(-2 zeta) instead (the same signs and zeros,
+        # no overflow); the window is proven on D itself, in balls
+        window = trace_window_ends(n, regimes, Tf, scaled=True)
+        scaled = True
     if window is None:
         why = (
             "both halves are critically or over-damped: only order 1 can exist"
@@ -1179,7 +1186,10 @@ def hump_trace(
             else "no window"
         )
         return None, why
-    form = trace_indicator(*regimes)
+    # past the double range (at one depth) the proofs too take D exp(-2 zeta), the same signs
+    # and zeros: the balls of D's terms, which grow like exp(2 zeta) and nearly cancel at the
+    # upper edge, would need a fine bisection of a window hundreds of units wide
+    form = trace_indicator_scaled(*regimes) if scaled else trace_indicator(*regimes)
     D0, D1, D2 = (form.compiled("arb", k) for k in (0, 1, 2))
     P = AtPrecision(
         lambda: _params_at(m, Q, None, m_box, partial(trace_params, system=system)),
@@ -1247,7 +1257,8 @@ def hump_trace(
             break
     else:  # (at a depth alone a guard: its window is proven at the first margin)
         raise CertificationError(f"could not prove the window of order {n}: {wa}, {wb}")
-    fl = damped_trace(n, regimes, Tf, (za, zb))
+    fl = damped_trace(n, regimes, Tf, (za, zb), scaled=scaled)
+    over = n == 1 and tuple(regimes) == ("over", "over")
     h = _Hump(
         D=funcs[0],
         dD=funcs[1],
@@ -1263,10 +1274,9 @@ def hump_trace(
         shifts=(0.0, -math.pi * n / (4 * float(Q) * Tf.w0)),
         # over a range of depths, order 1 with both halves over-damped: D < 0 right of a point
         # by one test there (:func:`overdamped_beyond`; P holds every depth of the range)
+        # (and at one depth past the double range)
         beyond=(
-            (lambda z: overdamped_beyond(P(), z))
-            if m_box is not None and n == 1 and tuple(regimes) == ("over", "over")
-            else None
+            (lambda z: overdamped_beyond(P(), z)) if (m_box is not None or scaled) and over else None
         ),
     )
     return h, P
