@@ -112,6 +112,18 @@ def test_over_damped_window_past_double_range_against_the_monodromy(m, Q, digits
             assert _excess(edge - inward * 3 * err, m, Q, "exact", dps) < 0
 
 
+def test_over_damped_window_past_double_range_no_interval():
+    # just below the threshold in m at Q = 0.001 (between 0.99900175 and 0.999002), where the
+    # bound by log-convexity does not decide: D exp(-2 zeta) < 0 on the whole window, proven on
+    # balls (refused before); the reference monodromy agrees, |mu|max - 1 about -3.2e-4 at most
+    b = boundary(1, "0.99900175", Q="0.001", digits=15)
+    assert not b.exists and b.certified and not b.notes
+    with mpmath.workdps(40):
+        for i in range(121):  # over the interval of m = 0.999002 and beyond it
+            T = mpmath.mpf("0.0022") + i * mpmath.mpf("0.00001")
+            assert _excess(T, "0.99900175", "0.001", "exact", 40) < 0
+
+
 def test_over_damped_window_past_double_range_answers(capsys):
     # m = 0.999 just above the threshold in Q: the window's tail bound lies where exp(2 zeta) has
     # no double; refused before, answered from the scaled form (as the table, below)

@@ -1222,17 +1222,15 @@ def _trace_indicator_scaled(regime1, regime2) -> Form:
     plain = (form.exprs[0] * w, sp.diff(form.exprs[0], sigma) * w)
     Dw, Pw = (scaled(e) for e in plain)
     for e, sc in zip(plain, (Dw, Pw), strict=True):
-        if sc.has(sp.cosh, sp.sinh) or not prove_zero(  # pragma: no cover - derivation guard
-            exponentials(e) - sc
-        ).holds:
+        same = prove_zero(exponentials(e) - sc).holds
+        if sc.has(sp.cosh, sp.sinh) or not same:  # pragma: no cover - derivation guard
             raise AssertionError(f"scaled trace form is not {e}: {sc}")
     total, slope = [], []
     for t in sp.Add.make_args(Dw):
         exps = [f for f in sp.Mul.make_args(t) if isinstance(f, sp.exp)]
         coef = sp.Mul(*(f for f in sp.Mul.make_args(t) if not isinstance(f, sp.exp)))
-        grow = sp.Add(
-            *(sp.Abs(a) for f in exps for a in sp.Add.make_args(sp.expand(sp.diff(f.args[0], zeta))))
-        )
+        rates = [sp.expand(sp.diff(f.args[0], zeta)) for f in exps]
+        grow = sp.Add(*(sp.Abs(a) for r in rates for a in sp.Add.make_args(r)))
         size = sp.Mul(*exps)
         total.append(sp.Abs(coef) * size)
         slope.append((sp.Abs(sp.diff(coef, zeta)) + sp.Abs(coef) * grow) * size)

@@ -1276,7 +1276,9 @@ def hump_trace(
         # by one test there (:func:`overdamped_beyond`; P holds every depth of the range)
         # (and at one depth past the double range)
         beyond=(
-            (lambda z: overdamped_beyond(P(), z)) if (m_box is not None or scaled) and over else None
+            (lambda z: overdamped_beyond(P(), z))
+            if (m_box is not None or scaled) and over
+            else None
         ),
     )
     return h, P
