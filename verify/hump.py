@@ -1272,14 +1272,9 @@ def hump_trace(
         floor=0.0,
         # T = 2 Q zeta/pi and the offset T - n/(2 w0): accuracy relative to both
         shifts=(0.0, -math.pi * n / (4 * float(Q) * Tf.w0)),
-        # over a range of depths, order 1 with both halves over-damped: D < 0 right of a point
-        # by one test there (:func:`overdamped_beyond`; P holds every depth of the range)
-        # (and at one depth past the double range)
-        beyond=(
-            (lambda z: overdamped_beyond(P(), z))
-            if (m_box is not None or scaled) and over
-            else None
-        ),
+        # order 1 with both halves over-damped: D < 0 right of a point by one test there
+        # (:func:`overdamped_beyond`; P holds the depth, or every depth of the range)
+        beyond=(lambda z: overdamped_beyond(P(), z)) if over else None,
     )
     return h, P
 
