@@ -16,6 +16,7 @@ import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
+from analytic.system import PAPER
 from verify.existence import absence_reason, existence, existence_scan
 from verify.inputs import InputError
 from verify.solve import boundary
@@ -144,6 +145,33 @@ def test_the_tail_towards_one_is_decided_in_the_trace_form(order, Q):
         m = 1 - Fraction(1, 10**k)
         assert _sign_at(ex, m) == 1
         assert boundary(order, m, Q=Q, digits=10).exists
+
+
+@pytest.mark.parametrize("order,Q", [(1, "3/5"), (2, "3/5"), (3, "13/20")])
+def test_the_switch_to_the_trace_form_is_decided(order, Q):
+    """Was: an undecided sliver ``0.436408977556109 < m < 0.43640897755611`` (order 1 and 2 at Q =
+    3/5) where phase 1 comes within NEAR_CRITICAL of critical damping and the equations switch
+    from the normal to the trace form: a range ending there had another form at its end than
+    inside, and was split down to the resolution.  Both forms hold at that depth; the depths on
+    both sides agree with the certified boundary."""
+    from verify.existence import _regime_changes
+    from verify.params import form_for
+
+    Qx = Fraction(Q)
+    ex = _ex(order, Q, "exact")
+    d = Fraction(1, 10**9)
+    switches = [
+        c
+        for c in _regime_changes(Qx, PAPER)
+        if form_for(c - d, Qx, "exact")[0] != form_for(c + d, Qx, "exact")[0]
+    ]
+    assert switches
+    for c in switches:
+        assert not [r for r in ex.undecided if r[0] <= c <= r[1]], c
+        for m in (c - d, c, c + d):
+            sign = _sign_at(ex, m)
+            assert sign is not None, m
+            assert boundary(order, m, Q=Q, digits=10).exists == (sign == 1), m
 
 
 CASES = [

@@ -920,10 +920,19 @@ def _segments(n: int, Q: Fraction, damping: str, digits: int, budget: int, syste
 
 def _uniform_form(box, Q: Fraction, damping: str, system: System):
     """The equations (:func:`verify.params.form_for`) of a first range if its ends and middle
-    share them, else ``None`` (decided per sub-range)."""
+    share them, else ``None`` (decided per sub-range).  For the paper's system, the equations
+    of its inner depths (those of the middle) where only an end differs: every depth where the
+    equations change is a cut (:func:`_breakpoints`, exact rationals), so the inner depths share
+    them, and they hold at the ends as well -- at :data:`~verify.params.NEAR_CRITICAL` both forms
+    are valid (the normal form is only less well conditioned), and at a critical damping a half's
+    ``nu`` is ``0``, where the inner form's ``sin(nu zeta)/nu`` is a non-finite ball (undecided,
+    never wrong)."""
     lo, hi = box
-    kinds = {_form_of(x, Q, damping, system) for x in (lo, (lo + hi) / 2, hi)}
-    return kinds.pop() if len(kinds) == 1 else None
+    mid = _form_of((lo + hi) / 2, Q, damping, system)
+    kinds = {_form_of(x, Q, damping, system) for x in (lo, hi)} | {mid}
+    if len(kinds) == 1 or system.is_paper:
+        return mid
+    return None
 
 
 def _round_fraction(mid: Fraction, lo: Fraction, hi: Fraction) -> Fraction:
