@@ -73,6 +73,8 @@ __all__ = [
     "near_one_forms",
     "trace_indicator",
     "trace_indicator_scaled",
+    "trace_indicator_halves",
+    "HALF_SQUARE",
     "half_period_forms",
     "fixed_point_map",
     "term_sizes",
@@ -1162,15 +1164,76 @@ def _trace_indicator(regime1, regime2) -> Form:
     """``sigma tr(M) e^(gamma T) - 2 cosh(gamma T)`` in ``zeta = gamma T/2`` for the exact model
     with the halves in the given regimes (``2 C1 C2 - kappa S1 S2`` with the half-period functions
     of :func:`half_period_forms`); positive inside an interval."""
-    import sympy as sp
 
     s = _symbols()
     zeta, sigma, kappa, nu1, nu2 = (s[k] for k in ("zeta", "sigma", "kappa", "nu1", "nu2"))
     C1, S1 = half_period_forms(regime1)
     C2, S2 = (e.subs(nu1, nu2) for e in half_period_forms(regime2))
-    D = sigma * (2 * C1 * C2 - kappa * S1 * S2) - 2 * sp.cosh(2 * zeta)
+    D = _trace_sum(zeta, sigma, kappa, C1, S1, C2, S2)
     title = f"trace indicator, half 1 {regime1}, half 2 {regime2}"
     return Form(title, (zeta, sigma, kappa, nu1, nu2), _derivatives(D, zeta, 2))
+
+
+def _trace_sum(zeta, sigma, kappa, C1, S1, C2, S2):
+    """The trace-form indicator ``sigma (2 C1 C2 - kappa S1 S2) - 2 cosh(2 zeta)`` of the halves'
+    functions ``C_i``, ``S_i`` (:func:`half_period_forms`)."""
+    import sympy as sp
+
+    return sigma * (2 * C1 * C2 - kappa * S1 * S2) - 2 * sp.cosh(2 * zeta)
+
+
+#: ``u = HALF_SQUARE[regime] nu**2`` of a half (``nu = |Omega|/gamma``): its functions of
+#: :func:`half_period_forms` obey ``C' = -u S`` and ``S' = C`` in ``zeta`` in every regime
+#: (checked by :func:`_trace_indicator_halves`), so ``u`` is ``(Omega/gamma)^2`` with its sign
+HALF_SQUARE = {"under": 1, "critical": 0, "over": -1}
+
+
+@cache
+def trace_indicator_halves() -> LazyForm:
+    """The trace-form indicator in the halves' functions themselves (see
+    :func:`_trace_indicator_halves`), derived when first needed beyond its pregenerated
+    compilations."""
+    return LazyForm("trace_indicator_halves()", _trace_indicator_halves)
+
+
+@cache
+def _trace_indicator_halves() -> Form:
+    """``D`` of :func:`_trace_indicator` and its first two derivatives in ``zeta`` as functions of
+    ``(zeta, sigma, kappa, C1, S1, C2, S2, u1, u2)``: the values of the halves' functions at
+    ``zeta`` are arguments, and their derivatives are ``C_i' = -u_i S_i``, ``S_i' = C_i`` (``u_i``
+    of :data:`HALF_SQUARE`).  Both rules are proven on :func:`half_period_forms` of every regime
+    (:func:`analytic.identity.prove_zero`), so this one form holds in each of them and across a
+    critical damping (where ``nu = 0``), with ``C``, ``S`` evaluated by the caller in whatever
+    way stays finite there (``S = zeta sinc(nu zeta)``, not ``sin(nu zeta)/nu``)."""
+    import sympy as sp
+
+    from analytic.identity import prove_zero
+
+    s = _symbols()
+    zeta, sigma, kappa, nu1 = (s[k] for k in ("zeta", "sigma", "kappa", "nu1"))
+    for regime, sign in HALF_SQUARE.items():
+        C, S = half_period_forms(regime)
+        u = sign * nu1**2
+        for rule in (sp.diff(C, zeta) + u * S, sp.diff(S, zeta) - C):
+            if not prove_zero(rule):  # pragma: no cover - derivation guard
+                raise AssertionError(f"the rules C' = -u S, S' = C fail for {regime}: {rule}")
+    C1, S1, C2, S2 = sp.symbols("C_1 S_1 C_2 S_2", real=True)
+    u1, u2 = sp.symbols("u_1 u_2", real=True)
+    funcs = {v: sp.Function(f"f_{v}")(zeta) for v in (C1, S1, C2, S2)}
+    rules = {
+        sp.Derivative(funcs[C1], zeta): -u1 * funcs[S1],
+        sp.Derivative(funcs[S1], zeta): funcs[C1],
+        sp.Derivative(funcs[C2], zeta): -u2 * funcs[S2],
+        sp.Derivative(funcs[S2], zeta): funcs[C2],
+    }
+    back = {f: v for v, f in funcs.items()}
+    exprs = [_trace_sum(zeta, sigma, kappa, *(funcs[v] for v in (C1, S1, C2, S2)))]
+    for _ in range(2):
+        exprs.append(sp.expand(sp.diff(exprs[-1], zeta).subs(rules)))
+    args = (zeta, sigma, kappa, C1, S1, C2, S2, u1, u2)
+    return Form(
+        "trace indicator in the halves' functions", args, tuple(e.subs(back) for e in exprs)
+    )
 
 
 @cache

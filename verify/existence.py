@@ -638,6 +638,20 @@ def _decide(
     kind, regimes = form
     if kind != "normal" and not system.is_paper:
         return None
+    if kind != "normal":
+        touching = _critical_end(lo, hi, Q, damping, regimes)
+        if touching is not None:  # a half critically damped at an end (verify.bridge)
+            from .bridge import decide
+
+            narrow = hi - lo < max(lo, Fraction(1, 2**1000)) / 2**30
+            try:
+                sign = decide(
+                    n, regimes, touching, _box_trace_params(lo, hi, Q), 4 * _NEGATIVE_PIECES, narrow
+                )
+            except (ValueError, ZeroDivisionError, OverflowError, ArithmeticError):
+                sign = 0
+            if sign:
+                return sign
     if kind != "normal" and n == 1 and tuple(regimes) == ("over", "over"):
         # both halves over-damped at every depth of the range (u1 falls and u2 rises with m: the
         # ends and the middle decide it): no interval at any period where kappa <= 6 nu1 nu2
@@ -699,6 +713,18 @@ def _decide(
     except (ValueError, ZeroDivisionError, OverflowError):  # pragma: no cover - guard
         return 0
     return 0
+
+
+def _critical_end(lo, hi, Q, damping, regimes) -> int | None:
+    """The half (``0`` or ``1``) critically damped at an end of the range ``[lo, hi]`` whose inner
+    depths have ``regimes`` (none critical), or ``None``."""
+    if "critical" in regimes:
+        return None
+    for x in (lo, hi):
+        kind, ends = _form_of(x, Q, damping)
+        if kind != "normal" and "critical" in ends:
+            return ends.index("critical")
+    return None
 
 
 #: the evaluations of each bisection in a range's proof that ``D < 0`` (:func:`_negative_on_box`)

@@ -75,6 +75,7 @@ ENTRIES = (
         for p in (-1, 1)
         for c, o in ((4, (0, 1, 2, 3, 4, 5, 6)), (3, (0, 1, 2, 3)))
     ]
+    + [("trace_indicator_halves", (), "arb", o) for o in (0, 1, 2)]
     + [("edge_equation_linear[0]", (), "numpy", (0, 1, 2))]
     + [("edge_equation_linear[1]", (), "numpy", (0, 1))]
     + [("edge_equation_trig", (), "numpy", (0, 1, 2))]

@@ -1312,6 +1312,21 @@ def _atan2(y, x):
     return arb.atan2(y, x)
 
 
+def phase_of(z, kappa, nu2, C1, S1):
+    """The trace form's phase ``Phi = nu2 zeta + atan2(kappa S1, 2 nu2 C1)`` (half 2
+    under-damped) from half 1's functions ``C1``, ``S1`` at ``zeta = z`` (balls or jets)."""
+    return nu2 * z + _atan2(kappa * S1, 2 * nu2 * C1)
+
+
+def tail_negative(kappa, a, z) -> bool:
+    """``D < 0`` at every ``zeta >= z`` (balls ``kappa``, ``a``, ``z``): where ``|C_i| <= B_i`` and
+    ``|S_i| <= zeta B_i`` with ``B_1 B_2 <= exp((2 - a) zeta)``, ``|sigma (2 C1 C2 - kappa S1 S2)|
+    <= (2 + |kappa| zeta^2) exp((2 - a) zeta)`` and ``2 cosh(2 zeta) > exp(2 zeta)``, so ``D < 0``
+    where ``(2 + |kappa| zeta^2) exp(-a zeta) < 1``; the bound decreases once ``a zeta > 2``."""
+    tail = (2 + abs(kappa) * z * z) * (-a * z).exp()
+    return bool(tail < 1 and z * a > 2)
+
+
 def trace_phase(regimes, P, z, m_box=None, m=None, Q=None) -> arb:
     """The phase ``Phi(zeta)`` of the trace form (half 2 under-damped), as a ball; with
     ``m_box`` (and its middle ``m``, and ``Q``) for every depth of the range, by the mean-value
@@ -1323,7 +1338,7 @@ def trace_phase(regimes, P, z, m_box=None, m=None, Q=None) -> arb:
     def phase(p):
         C1 = win[0](z, 1, p.kappa, p.nu1, p.nu2)
         S1 = win[1](z, 1, p.kappa, p.nu1, p.nu2)
-        return p.nu2 * z + _atan2(p.kappa * S1, 2 * p.nu2 * C1)
+        return phase_of(z, p.kappa, p.nu2, C1, S1)
 
     if m_box is None:
         return phase(P())
@@ -1444,11 +1459,9 @@ def prove_no_window(n: int, regimes, P, ztail: float, m_box=None, m=None, Q=None
     with ctx.workprec(96):
         p = P()
         z2 = ball(ztail)
-        a = 2 - p.nu1
-        tail = (2 + abs(p.kappa) * z2 * z2) * (-a * z2).exp()
         pi = arb.pi()
         ph = trace_phase(regimes, P, z2, m_box, m, Q)
-        return bool(tail < 1 and z2 * a > 2 and ph < n * pi - pi / 2)
+        return tail_negative(p.kappa, 2 - p.nu1, z2) and bool(ph < n * pi - pi / 2)
 
 
 def _prove_window(n, regimes, P, za, zb, m_box=None, m=None, Q=None) -> bool:
@@ -1463,10 +1476,7 @@ def _prove_window(n, regimes, P, za, zb, m_box=None, m=None, Q=None) -> bool:
                 return trace_phase(regimes, P, ball(z), m_box, m, Q)
 
             pi = arb.pi()
-            z2 = ball(zb)
-            a = 2 - p.nu1
-            tail = (2 + abs(p.kappa) * z2 * z2) * (-a * z2).exp()
-            beyond = bool(tail < 1 and z2 * a > 2) or bool(
+            beyond = tail_negative(p.kappa, 2 - p.nu1, ball(zb)) or bool(
                 phi(zb) > n * pi + pi / 2 and phi(zb) < (n + 1) * pi + pi / 2
             )
             return bool(phi(za) < n * pi - pi / 2 and phi(za) > (n - 1) * pi - pi / 2) and beyond
@@ -1479,8 +1489,7 @@ def _prove_window(n, regimes, P, za, zb, m_box=None, m=None, Q=None) -> bool:
         # zeta once a zeta > 2 (the bound then decreases)
         a = 2 - p.nu1 - p.nu2
         z2 = ball(zb)
-        tail = (2 + abs(p.kappa) * z2 * z2) * (-a * z2).exp()
-        beyond = bool(tail < 1 and z2 * a > 2)
+        beyond = tail_negative(p.kappa, a, z2)
         if not beyond and r1 == "over" and r2 == "over":
             # both over-damped: 2 C1 C2 + |kappa| S1 S2 = (1 + k) cosh(s zeta) + (1 - k)
             # cosh(d zeta) <= max(2, 1 + k) cosh(s zeta), k = |kappa|/(2 nu1 nu2): D < 0 where

@@ -486,6 +486,19 @@ def trace_params(m, Q, B: Backend, system: System = PAPER) -> TraceParams:
     q2 = 4 * Q * Q
     kappa = q2 * ((1 + m) / ((1 - m) * (1 - m)) + (1 - m) / ((1 + m) * (1 + m))) - 2
     u1, u2 = (q2 - 1 - m) / (1 + m), (q2 - 1 + m) / (1 - m)
-    nu1 = _root(abs(u1), B) if u1 != 0 else _lift(Fraction(0), B)
-    nu2 = _root(abs(u2), B) if u2 != 0 else _lift(Fraction(0), B)
-    return TraceParams(_lift(kappa, B), nu1, nu2, _lift(Q, B), omega_av(m, B))
+    return TraceParams(_lift(kappa, B), _nu(u1, B), _nu(u2, B), _lift(Q, B), omega_av(m, B))
+
+
+def _nu(u, B: Backend):
+    """``nu = sqrt|u|``, and exactly 0 where ``u`` is.  A ball that holds 0 (a range of depths
+    ending at a critical damping) gives ``nu`` from 0 up to the root of its largest magnitude,
+    every value it holds (a ball's ``!= 0`` is true only where it excludes 0, and ``abs`` of it
+    still reaches below 0)."""
+    if isinstance(u, arb):
+        if u.is_zero():
+            return _lift(Fraction(0), B)
+        if u.contains(0):
+            return abs(u).nonnegative_part().sqrt()
+    elif u == 0:
+        return _lift(Fraction(0), B)
+    return _root(abs(u), B)
