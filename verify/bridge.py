@@ -34,13 +34,25 @@ def half_values(regime: str, nu, z) -> tuple:
     """``(C, S)`` of a half in ``regime`` (:func:`verify.derived.half_period_forms`: ``cos(nu
     zeta)``, ``sin(nu zeta)/nu``; ``cosh``, ``sinh(nu zeta)/nu``; ``1``, ``zeta``) at ``zeta = z``,
     as balls that stay finite where the ball ``nu`` holds 0: ``S = zeta sinc(nu zeta)``, and over-
-    damped the real part of ``sinc`` at ``i nu zeta`` (``sinh(x)/x``)."""
+    damped ``zeta sinh(x)/x`` with ``x = nu zeta``.  The four functions are even in ``x``;
+    ``cosh(x)`` and ``sinh(x)/x`` increase with ``|x|``, ``cos(x)`` and ``sinc(x)`` decrease for
+    ``|x| <= 3`` (``< pi``): there their values at the ends of ``|x|``'s range bound them, so a
+    ball ``x`` near 0 of width ``r`` gives them to ``O(r^2)``, not to ``O(r)`` as the functions
+    of a ball do (:func:`verify.params.trace_params` gives ``nu`` from 0 up: not centred on 0)."""
     if regime == "critical":
         return arb(1), z
     x = nu * z
+    lo, hi = x.abs_lower(), x.abs_upper()
     if regime == "under":
-        return x.cos(), z * x.sinc()
-    return x.cosh(), z * acb(0, x).sinc().real
+        if not hi <= 3:
+            return x.cos(), z * x.sinc()
+        return lo.cos().union(hi.cos()), z * lo.sinc().union(hi.sinc())
+    return lo.cosh().union(hi.cosh()), z * _sinhc(lo).union(_sinhc(hi))
+
+
+def _sinhc(t):
+    """``sinh(t)/t`` at a point ``t >= 0`` (1 at 0)."""
+    return acb(0, t).sinc().real
 
 
 #: the factors tried, in turn, on the float point of the tail bound
