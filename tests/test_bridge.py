@@ -79,3 +79,19 @@ def test_a_threshold_next_to_the_critical_damping_of_phase_two():
         m = ms + (Fraction(1, d) if d else 0)
         (sign,) = {s for lo, hi, s in ex.segments if lo <= m <= hi}
         assert sign == 1 and boundary(1, m, Q=Q, digits=10).exists, d
+
+
+def test_ranges_next_to_the_critical_damping_are_decided_in_the_halves_functions():
+    """Q = 0.2140127 (threshold of order 1 just below m* = 1 - 4 Q^2) and Q = 0.6267345 (just
+    above m* = 4 Q^2 - 1): ranges a few of their widths from m* were left undecided (4.5e-7 and
+    1e-6 wide; 2.1e-6 above m*), their sin(nu zeta)/nu balls wide for nu's size; they are
+    decided as the ranges ending at m* are, and agree with the boundary."""
+    for Q, ds in (("0.2140127", (-(10**10), 10**6)), ("0.6267345", (10**10, 10**6))):
+        Qx = Fraction(Q)
+        ms = abs(1 - 4 * Qx * Qx)
+        ex = existence(1, Qx)
+        assert not ex.undecided, Q
+        for d in ds:
+            m = ms + Fraction(1, d)
+            signs = {s for lo, hi, s in ex.segments if lo <= m <= hi}
+            assert signs == {1 if boundary(1, m, Q=Qx, digits=10).exists else -1}, (Q, d)
