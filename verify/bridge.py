@@ -34,27 +34,41 @@ def half_values(regime: str, nu, z) -> tuple:
     """``(C, S)`` of a half in ``regime`` (:func:`verify.derived.half_period_forms`: ``cos(nu
     zeta)``, ``sin(nu zeta)/nu``; ``cosh``, ``sinh(nu zeta)/nu``; ``1``, ``zeta``) at ``zeta = z``,
     as balls that stay finite where the ball ``nu`` holds 0: ``S = zeta sinc(nu zeta)``, and over-
-    damped the real part of ``sinc`` at ``i nu zeta`` (``sinh(x)/x``)."""
+    damped ``zeta sinh(x)/x`` with ``x = nu zeta``.  The four functions are even in ``x``;
+    ``cosh(x)`` and ``sinh(x)/x`` increase with ``|x|``, ``cos(x)`` and ``sinc(x)`` decrease for
+    ``|x| <= 3`` (``< pi``): there their values at the ends of ``|x|``'s range bound them, so a
+    ball ``x`` near 0 of width ``r`` gives them to ``O(r^2)``, not to ``O(r)`` as the functions
+    of a ball do (:func:`verify.params.trace_params` gives ``nu`` from 0 up: not centred on 0)."""
     if regime == "critical":
         return arb(1), z
     x = nu * z
+    lo, hi = x.abs_lower(), x.abs_upper()
     if regime == "under":
-        return x.cos(), z * x.sinc()
-    return x.cosh(), z * acb(0, x).sinc().real
+        if not hi <= 3:
+            return x.cos(), z * x.sinc()
+        return lo.cos().union(hi.cos()), z * lo.sinc().union(hi.sinc())
+    return lo.cosh().union(hi.cosh()), z * _sinhc(lo).union(_sinhc(hi))
+
+
+def _sinhc(t):
+    """``sinh(t)/t`` at a point ``t >= 0`` (1 at 0)."""
+    return acb(0, t).sinc().real
 
 
 #: the factors tried, in turn, on the float point of the tail bound
 _TAIL_GROW = (1.0, 1.1, 1.5, 2.0)
 #: points of the float search for the maximiser of ``D`` on ``[0, ztail]``
 _GRID = 96
-#: the relative margins tried on the window of half 2's phase (half 1 critical at the end)
+#: the relative margins tried on the window of half 2's phase (half 1 critical at or next to the
+#: range)
 _WIDEN = (1e-3, 0.02, 0.1)
 
 
 def decide(n: int, regimes, touching: int, P, budget: int, narrow: bool) -> int:
     """``+1`` (the interval of order ``n`` exists at every depth of the range), ``-1`` (at none)
-    or ``0`` (not decided) for a range of depths one end of which is a critical damping of half
-    ``touching + 1`` (``0`` or ``1``); ``regimes`` are those of its inner depths, ``P()`` the
+    or ``0`` (not decided) for a range of depths at or next to a critical damping of half
+    ``touching + 1`` (``0`` or ``1``; the bounds below hold for any range of these regimes, the
+    critical depth in it or not); ``regimes`` are those of its inner depths, ``P()`` the
     trace parameters as balls holding every depth (:class:`verify.enclosure.AtPrecision`);
     ``budget`` evaluations for the bisection, ``narrow`` for a range within the resolution (the
     value at the maximiser tried at higher precisions).
@@ -62,15 +76,16 @@ def decide(n: int, regimes, touching: int, P, budget: int, narrow: bool) -> int:
     - **Half 2 not under-damped inside** (with half 1 over-damped: ``Q < 1/2``): no half rotates
       at any depth of the range, so only order 1 can exist.  Its window lies in ``[0, zt]``,
       beyond which ``D < 0`` (:func:`verify.hump.tail_negative`).
-    - **Half 2 under-damped inside, and critical at the end:** its phase ``Phi(zt) < n pi - pi/2``
-      shows that no order ``n >= 2`` reaches its window before ``zt`` (``Phi`` increases wherever
-      it exceeds ``pi/2``).  Order 1's window lies in ``[0, zt]``; a point ``zeta`` with ``D > 0``
-      belongs to it where ``kappa S1 > 0``, ``C1 > 0``, ``zeta kappa S1 > 2 C1`` and ``nu2 zeta <
-      pi``: then ``atan2(kappa S1, 2 nu2 C1) = pi/2 - atan(2 nu2 C1/(kappa S1)) >= pi/2 - 2 nu2
-      C1/(kappa S1)``, so ``Phi - pi/2 >= nu2 (zeta - 2 C1/(kappa S1)) > 0`` for ``nu2 > 0``, and
-      ``Phi <= nu2 zeta + pi/2 < 3 pi/2`` (at the critical end itself only order 1 exists).
-    - **Half 1 critical at the end, half 2 under-damped:** the order's window ``[za, zb]`` is
-      proven by the phase at its ends, as :func:`verify.hump.hump_trace` proves it.
+    - **Half 2 under-damped inside, and critical at or next to the range:** its phase ``Phi(zt) <
+      n pi - pi/2`` shows that no order ``n >= 2`` reaches its window before ``zt`` (``Phi``
+      increases wherever it exceeds ``pi/2``).  Order 1's window lies in ``[0, zt]``; a point
+      ``zeta`` with ``D > 0`` belongs to it where ``kappa S1 > 0``, ``C1 > 0``, ``zeta kappa S1 >
+      2 C1`` and ``nu2 zeta < pi``: then ``atan2(kappa S1, 2 nu2 C1) = pi/2 - atan(2 nu2
+      C1/(kappa S1)) >= pi/2 - 2 nu2 C1/(kappa S1)``, so ``Phi - pi/2 >= nu2 (zeta - 2 C1/(kappa
+      S1)) > 0`` for ``nu2 > 0``, and ``Phi <= nu2 zeta + pi/2 < 3 pi/2`` (at the critical depth
+      itself only order 1 exists).
+    - **Half 1 critical at or next to the range, half 2 under-damped:** the order's window ``[za,
+      zb]`` is proven by the phase at its ends, as :func:`verify.hump.hump_trace` proves it.
 
     ``-1`` where ``D < 0`` on the window (bisection), ``+1`` where ``D > 0`` at the float
     maximiser within it."""
@@ -230,7 +245,7 @@ def _in_window(n, regimes, touching, P, phase, t) -> bool:
     if r2 != "under":
         return n == 1  # no half rotates
     pi = arb.pi()
-    if touching == 1:  # half 2 critical at the end: order 1 only, by the bound of decide
+    if touching == 1:  # half 2 critical at or next to the range: order 1 by the bound of decide
         if n != 1:
             return False
         p = P()

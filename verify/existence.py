@@ -31,6 +31,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, fields
 from fractions import Fraction
+from functools import lru_cache
 
 import mpmath
 import numpy as np
@@ -640,7 +641,7 @@ def _decide(
         return None
     if kind != "normal":
         touching = _critical_end(lo, hi, Q, damping, regimes)
-        if touching is not None:  # a half critically damped at an end (verify.bridge)
+        if touching is not None:  # a half critically damped at or next to an end (verify.bridge)
             from .bridge import decide
 
             narrow = hi - lo < max(lo, Fraction(1, 2**1000)) / 2**30
@@ -717,14 +718,40 @@ def _decide(
 
 def _critical_end(lo, hi, Q, damping, regimes) -> int | None:
     """The half (``0`` or ``1``) critically damped at an end of the range ``[lo, hi]`` whose inner
-    depths have ``regimes`` (none critical), or ``None``."""
+    depths have ``regimes`` (none critical), or at a depth outside it within
+    :data:`_NEAR_CRITICAL_RANGES` of its widths; else ``None``.  Next to that depth the half's
+    ``nu`` is a ball wide for its size, whose ``sin(nu zeta)/nu`` is wide too; the halves' functions
+    of :mod:`verify.bridge` stay tight there (its bounds hold over any range with these regimes)."""
     if "critical" in regimes:
         return None
     for x in (lo, hi):
         kind, ends = _form_of(x, Q, damping)
         if kind != "normal" and "critical" in ends:
             return ends.index("critical")
+    if damping != "exact":
+        return None
+    for c, half in _critical_depths(Q):
+        gap = lo - c if c <= lo else c - hi if c >= hi else None
+        if gap is not None and gap <= _NEAR_CRITICAL_RANGES * (hi - lo):
+            return half
     return None
+
+
+@lru_cache(maxsize=64)
+def _critical_depths(Q: Fraction) -> tuple:
+    """``(depth, half)`` of each depth where a half of the paper's pendulum is critically damped
+    (among the exact model's regime changes, :func:`_regime_changes`)."""
+    out = []
+    for c in sorted(_regime_changes(Q, PAPER)):
+        kind, ends = _form_of(c, Q, "exact")
+        if kind != "normal" and "critical" in ends:
+            out.append((c, ends.index("critical")))
+    return tuple(out)
+
+
+#: how many of its widths a range may lie from a critical damping and still be decided in the
+#: halves' functions (:func:`_critical_end`) before the forms of its regimes
+_NEAR_CRITICAL_RANGES = 64
 
 
 #: the evaluations of each bisection in a range's proof that ``D < 0`` (:func:`_negative_on_box`)
