@@ -174,6 +174,21 @@ def test_the_switch_to_the_trace_form_is_decided(order, Q):
             assert boundary(order, m, Q=Q, digits=10).exists == (sign == 1), m
 
 
+def test_a_tiny_q_near_one_is_decided_over_ranges():
+    """Was, at Q = 1/1000: undecided from m = 0.9990005 to 0.99996948 and in pieces up to the
+    critical damping at m = 0.999996.  Over a range of depths the ball of half 2's ``u2 = (4 Q^2
+    - 1 + m)/(1 - m)`` counted ``m`` twice and lost ``4 Q^2`` against 1, and with it ``2 - nu1 -
+    nu2`` (``trace_params``); written ``4 Q^2/(1 - m) - 1`` it keeps it.  One undecided range of
+    7e-5 is left below, at the threshold; above it the interval exists up to m -> 1, as the
+    certified boundary finds."""
+    ex = _ex(1, "1/1000", "exact")
+    assert all(hi < Fraction(99908, 100000) for _, hi in ex.undecided), ex.undecided
+    assert ex.open_to_one
+    for m in ("0.9991", "0.9995", "0.999996", "0.99999"):
+        assert _sign_at(ex, Fraction(m)) == 1
+        assert boundary(1, m, Q="1/1000", digits=10).exists
+
+
 CASES = [
     (3, "7", "exact"),
     (3, "7", "paper"),

@@ -485,7 +485,9 @@ def trace_params(m, Q, B: Backend, system: System = PAPER) -> TraceParams:
         return TraceParams(tv["kappa"], tv["nu1"], tv["nu2"], _lift(Q, B), w0)
     q2 = 4 * Q * Q
     kappa = q2 * ((1 + m) / ((1 - m) * (1 - m)) + (1 - m) / ((1 + m) * (1 + m))) - 2
-    u1, u2 = (q2 - 1 - m) / (1 + m), (q2 - 1 + m) / (1 - m)
+    # (Omega_i/gamma)^2 with its sign, each depth counted once: over a range of depths a ball of
+    # (q2 - 1 - m)/(1 + m) loses q2 against 1 (Q small, both halves over-damped near m = 1)
+    u1, u2 = q2 / (1 + m) - 1, q2 / (1 - m) - 1
     return TraceParams(_lift(kappa, B), _nu(u1, B), _nu(u2, B), _lift(Q, B), omega_av(m, B))
 
 
