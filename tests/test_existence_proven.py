@@ -189,6 +189,26 @@ def test_a_tiny_q_near_one_is_decided_over_ranges():
         assert boundary(1, m, Q="1/1000", digits=10).exists
 
 
+@pytest.mark.parametrize("order,Q", [(1, "0.501"), (2, "0.5075")])
+def test_q_just_above_half_is_decided(order, Q):
+    """Was, for Q just above 1/2: undecided near m -> 0 (``0 < m < 0.0015`` at Q = 0.501) or just
+    below the switch to the trace form (``0.0253 < m < 0.0277`` at Q = 0.5075), where phase 1
+    nears critical damping and the normal form degenerates; those ranges took the budget, and the
+    threshold was left undecided too.  Such a range is now tried in the trace form as well (both
+    halves under-damped), and the threshold lies between two depths 2e-9 apart that the
+    certified boundary decides apart."""
+    ex = _ex(order, Q, "exact")
+    assert not ex.undecided, ex.undecided
+    (t,) = ex.thresholds
+    lo, hi = t.enclosure
+    d = Fraction(1, 10**9)
+    assert not boundary(order, lo - d, Q=Q, digits=20).exists
+    assert boundary(order, hi + d, Q=Q, digits=20).exists
+    for m in ("0.00001", "0.0014", "0.026"):
+        assert _sign_at(ex, Fraction(m)) == -1
+        assert not boundary(order, m, Q=Q, digits=10).exists
+
+
 CASES = [
     (3, "7", "exact"),
     (3, "7", "paper"),

@@ -948,6 +948,10 @@ def _segments(n: int, Q: Fraction, damping: str, digits: int, budget: int, syste
             tail_count += tail
             form = forms.pop((lo, hi))
             sign = _decide(n, lo, hi, Q, damping, bits, fl, system, form)
+            if sign == 0 and _near_critical_normal(lo, hi, Q, damping, system, form):
+                # the normal form degenerates as phase 1 nears critical damping (its terms O(1)
+                # where D is O(nu1)); the trace form holds for both halves under-damped as well
+                sign = _decide(n, lo, hi, Q, damping, bits, None, system, _UNDER_UNDER)
             if sign is None:  # undecided for good
                 done.append((lo, hi, 0))
                 continue
@@ -969,6 +973,28 @@ def _segments(n: int, Q: Fraction, damping: str, digits: int, budget: int, syste
         else:
             out.append([lo, hi, sign])
     return [tuple(x) for x in out], count
+
+
+#: the trace form with both halves under-damped (:func:`verify.params.form_for`'s choice within
+#: :data:`~verify.params.NEAR_CRITICAL` of critical damping)
+_UNDER_UNDER = ("trace", ("under", "under"))
+
+#: a range in the normal form is tried in the trace form too where phase 1's ``Omega1/gamma`` is
+#: below this at its middle (:func:`_near_critical_normal`)
+_NORMAL_NEAR = 4 * NEAR_CRITICAL
+
+
+def _near_critical_normal(lo, hi, Q, damping: str, system: System, form) -> bool:
+    """Whether an undecided range in the normal form (the exact model, the paper's system) lies
+    where phase 1 is near critical damping: ``Omega1/gamma < _NORMAL_NEAR`` at its middle.  The
+    trace form holds there as well (both halves under-damped at every depth of the range: the
+    normal form is chosen only where they are)."""
+    if form is None or form[0] != "normal" or damping != "exact" or Q is None:
+        return False
+    if not system.is_paper:
+        return False
+    nu1 = trace_params((lo + hi) / 2, Q, backend("math")).nu1
+    return float(nu1) < _NORMAL_NEAR
 
 
 def _uniform_form(box, Q: Fraction, damping: str, system: System):
