@@ -209,6 +209,21 @@ def test_q_just_above_half_is_decided(order, Q):
         assert not boundary(order, m, Q=Q, digits=10).exists
 
 
+def test_no_threshold_is_named_next_to_an_undecided_range():
+    """Was, at Q = 1/1000, m = 1/2: "below the threshold m = 0.999069213867188", a number that is
+    only where the proven interval begins: the threshold lies somewhere in the undecided range
+    below it.  The reason now names the range proven without the interval and the undecided one;
+    where the threshold is proven it is named as before."""
+    ex = _ex(1, "1/1000", "exact")
+    assert not ex.thresholds
+    why = ex.where(Fraction(1, 2))
+    assert "threshold" not in why and "proven absent for 0 < m < 0.9990015" in why
+    assert "could not be decided (0.9990015" in why
+    assert (
+        _ex(1, "0.3", "exact").where(Fraction(1, 2)) == "below the threshold m = 0.755565920740151"
+    )
+
+
 CASES = [
     (3, "7", "exact"),
     (3, "7", "paper"),

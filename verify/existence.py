@@ -161,11 +161,28 @@ class Existence:
         """Why the interval does or does not exist at the exact depth ``m``: ``"exists"``,
         ``"below the threshold m = ..."``, ``"in the gap ... around the a:b closing ..."``,
         ``"above ..."``, ``"undecided ..."`` (from the proof, :attr:`segments`)."""
-        for lo, hi, sign in self.segments:
+        segs = self.segments
+        for j, (lo, hi, sign) in enumerate(segs):
             if not lo <= m <= hi:
                 continue
             if sign == 1:
                 return "exists"
+            # a range proven without the interval next to an undecided one: neither its end nor
+            # the next range's start is a threshold
+            near = [
+                s
+                for s in segs[max(j - 1, 0) : j + 2]
+                if s[2] == 0 and s is not segs[j] and (s[0], s[1]) in self.undecided
+            ]
+            if sign == -1 and near:
+                a, b = self._text(lo, up=True), self._text(hi, up=False)
+                und = ", ".join(
+                    f"{self._text(u[0], up=False)} < m < {self._text(u[1], up=True)}" for u in near
+                )
+                return (
+                    f"the interval is proven absent for {a} < m < {b}, next to depths where "
+                    f"existence could not be decided ({und})"
+                )
             ranges = self._ranges()
             if sign == 0 and (lo, hi) in self.undecided:
                 a, b = self._text(lo, up=False), self._text(hi, up=True)
