@@ -25,7 +25,7 @@ from flint import acb, arb, ctx
 
 from .certify import prove_sign
 from .derived import HALF_SQUARE, trace_indicator_halves
-from .hump import phase_of, tail_negative
+from .hump import newton_maximiser, phase_of, tail_negative
 
 __all__ = ["half_values", "decide"]
 
@@ -225,15 +225,7 @@ def _float_top(funcs, a: float, b: float) -> float | None:
                 best, top = v, z
         if top is None:
             return None
-        t = arb(top)
-        for _ in range(30):
-            d1, d2 = funcs[1](t).mid(), funcs[2](t).mid()
-            if d2 == 0 or not d1.is_finite() or not d2.is_finite():
-                break
-            step = d1 / d2
-            t = (t - step).mid()
-            if abs(step) < abs(t) * arb(2) ** -50:
-                break
+        t = newton_maximiser(funcs[1], funcs[2], arb(top), 30, arb(2) ** -50)
     tf = float(t)
     return tf if a < tf < b else top
 

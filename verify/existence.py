@@ -844,16 +844,12 @@ def _polish_top(h, top, bits: int, a: float, b: float):
     """The maximiser of ``D`` refined by Newton's method on ``D'`` (ball midpoints) to about
     ``bits`` bits: near a threshold ``max D`` is tiny and the float maximiser is not good
     enough (any point serves for the proofs; a better one makes them succeed)."""
-    t = _exact_ball(top)
+    from .hump import newton_maximiser
+
     with ctx.workprec(2 * bits + 40):
-        for _ in range(4):
-            d1, d2 = h.dD(t).mid(), h.d2D(t).mid()
-            if d2 == 0 or not d1.is_finite() or not d2.is_finite():
-                break
-            step = d1 / d2
-            t = (t - step).mid()
-            if abs(step) < abs(t) * arb(2) ** (-2 * bits) + arb(2) ** (-4 * bits):
-                break
+        t = newton_maximiser(
+            h.dD, h.d2D, _exact_ball(top), 4, arb(2) ** (-2 * bits), arb(2) ** (-4 * bits)
+        )
     if not a < t < b:
         return top
     return t

@@ -1312,6 +1312,22 @@ def _atan2(y, x):
     return arb.atan2(y, x)
 
 
+def newton_maximiser(dD, d2D, t, steps: int, rel, tiny=0):
+    """The maximiser of ``D`` refined by Newton's method on ``D'`` from the ball ``t`` (ball
+    midpoints, at the current precision): at most ``steps`` steps, stopping after one below
+    ``|t| rel + tiny``, or where ``D''`` is 0 or a value is not finite.  Any point serves the
+    proofs that use it; a better one makes them succeed."""
+    for _ in range(steps):
+        d1, d2 = dD(t).mid(), d2D(t).mid()
+        if d2 == 0 or not d1.is_finite() or not d2.is_finite():
+            break
+        step = d1 / d2
+        t = (t - step).mid()
+        if abs(step) < abs(t) * rel + tiny:
+            break
+    return t
+
+
 def phase_of(z, kappa, nu2, C1, S1):
     """The trace form's phase ``Phi = nu2 zeta + atan2(kappa S1, 2 nu2 C1)`` (half 2
     under-damped) from half 1's functions ``C1``, ``S1`` at ``zeta = z`` (balls or jets)."""
