@@ -213,7 +213,8 @@ def test_no_threshold_is_named_next_to_an_undecided_range():
     """Was, at Q = 1/1000, m = 1/2: "below the threshold m = 0.999069213867188", a number that is
     only where the proven interval begins: the threshold lies somewhere in the undecided range
     below it.  The reason now names the range proven without the interval and the undecided one;
-    where the threshold is proven it is named as before."""
+    where the threshold is proven it is named as before, also with an undecided range on the
+    other side."""
     ex = _ex(1, "1/1000", "exact")
     assert not ex.thresholds
     why = ex.where(Fraction(1, 2))
@@ -221,6 +222,10 @@ def test_no_threshold_is_named_next_to_an_undecided_range():
     assert "could not be decided (0.9990015" in why
     assert (
         _ex(1, "0.3", "exact").where(Fraction(1, 2)) == "below the threshold m = 0.755565920740151"
+    )
+    # an undecided range below (m -> 0 at Q = 1/2) leaves the proven threshold above as it is
+    assert (
+        _ex(1, "1/2", "exact").where(Fraction(1, 2)) == "below the threshold m = 0.634519350000923"
     )
 
 

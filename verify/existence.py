@@ -167,22 +167,6 @@ class Existence:
                 continue
             if sign == 1:
                 return "exists"
-            # a range proven without the interval next to an undecided one: neither its end nor
-            # the next range's start is a threshold
-            near = [
-                s
-                for s in segs[max(j - 1, 0) : j + 2]
-                if s[2] == 0 and s is not segs[j] and (s[0], s[1]) in self.undecided
-            ]
-            if sign == -1 and near:
-                a, b = self._text(lo, up=True), self._text(hi, up=False)
-                und = ", ".join(
-                    f"{self._text(u[0], up=False)} < m < {self._text(u[1], up=True)}" for u in near
-                )
-                return (
-                    f"the interval is proven absent for {a} < m < {b}, next to depths where "
-                    f"existence could not be decided ({und})"
-                )
             ranges = self._ranges()
             if sign == 0 and (lo, hi) in self.undecided:
                 a, b = self._text(lo, up=False), self._text(hi, up=True)
@@ -194,6 +178,33 @@ class Existence:
                 )
             before = [r for r in ranges if self._value(r[1]) <= _mpf(m)]
             after = [r for r in ranges if self._value(r[0]) >= _mpf(m)]
+            # the reasons below name the ends of the ranges next to this one as thresholds, or
+            # say there is none: not where an undecided range lies between
+            below = (
+                [segs[j - 1]]
+                if j > 0 and (segs[j - 1][0], segs[j - 1][1]) in self.undecided
+                else []
+            )
+            above = (
+                [segs[j + 1]]
+                if j + 1 < len(segs) and (segs[j + 1][0], segs[j + 1][1]) in self.undecided
+                else []
+            )
+            named = {
+                (False, True): above,  # below the threshold
+                (False, False): list(self.undecided),  # at no depth
+                (True, False): below,  # above the last range
+                (True, True): below + above,  # in a gap
+            }[(bool(before), bool(after))]
+            if named:
+                a, b = self._text(lo, up=True), self._text(hi, up=False)
+                und = ", ".join(
+                    f"{self._text(u[0], up=False)} < m < {self._text(u[1], up=True)}" for u in named
+                )
+                return (
+                    f"the interval is proven absent for {a} < m < {b}, next to depths where "
+                    f"existence could not be decided ({und})"
+                )
             if not before and after:
                 return f"below the threshold m = {self._text(after[0][0], up=True)}"
             if not before and not after:
