@@ -21,6 +21,7 @@ from floquet_tangency import peak_growth, tangency
 from analytic.closings import closings
 from analytic.system import system
 from verify.existence import closing_depths, existence
+from verify.floquet import growth_factor
 from verify.inputs import InputError
 from verify.params import NEAR_CRITICAL
 from verify.solve import boundary
@@ -46,6 +47,10 @@ def _above(t, rel=1e-4) -> Fraction:
         ("pendulum", "1/3", 1, 7, "exact"),
         ("pendulum", "98/100", 1, 7, "paper"),  # extreme duty
         ("torsion", "1/3", 2, 40, "paper"),
+        # thresholds where a phase is over-damped (the trace form over depth ranges)
+        ("pendulum", "1/3", 1, "3/5", "exact"),
+        ("torsion", "1/2", 2, "3/5", "exact"),
+        ("torsion", "1/3", 1, "3/5", "exact"),
     ],
 )
 def test_threshold_agrees_with_the_floquet_tangency(name, duty, n, Q, damping):
@@ -104,35 +109,54 @@ def test_closing_gap_at_duty_one_third():
         assert abs(t.value - m_ref) < 1e-14 * m_ref
 
 
-def test_meissner_near_critical_phase_is_undecided_not_guessed():
+def test_meissner_past_critical_damping_of_phase_one():
     """Meissner, exact model, Q = 7: phase 1 (omega_1^2 = 1 - m) is critically damped at
     1 - m = 1/(4 Q^2), i.e. m = 195/196, and the trace form takes over where omega_1^2 <
-    gamma^2 (1 + NEAR_CRITICAL^2).  Over depth ranges that form is proven for the paper's system
-    only: for this member the range is reported undecided, and everything below it is proven."""
+    gamma^2 (1 + NEAR_CRITICAL^2).  The trace form's parameters over a range of depths are
+    derived for every member: the whole axis is decided, the interval exists from its threshold
+    up to m -> 1, and the Floquet growth is above 1 on both sides of the critical depth and
+    past it (phase 1 over-damped)."""
     ex = existence(1, 7, system="meissner", damping="exact", digits=15)
     eps2 = Fraction(NEAR_CRITICAL) ** 2
     cut = 1 - Fraction(1, 196) * (1 + eps2)  # omega_1^2 = gamma^2 (1 + eps^2)
-    ((lo, hi),) = ex.undecided
-    assert lo == cut and hi > 1 - Fraction(1, 10**15)
     assert cut < Fraction(195, 196)
-    ((a, _b),) = ex.intervals
-    assert 0.2 < a < 0.25
-    assert [seg[2] for seg in ex.segments] == [-1, 0, 1, 0]  # the threshold, exists, undecided
-    assert ex.segments[2][1] == cut
-    assert "undecided" in str(ex)
+    assert not ex.undecided
+    ((a, b),) = ex.intervals
+    assert 0.2 < a < 0.25 and b == 1
+    assert [seg[2] for seg in ex.segments] == [-1, 0, 1]  # the threshold between
+    assert len(ex.thresholds) == 1
+    sysv = system("meissner")
+    for mm in (cut + Fraction(1, 10**6), Fraction(195, 196), Fraction(998, 1000)):
+        assert ex.where(mm) == "exists", ex.where(mm)
+        growth, _ = peak_growth(1, 7, mm, _centre(1, mm, 7, sysv, "exact"), system="meissner")
+        assert growth > 1, (mm, growth)
 
 
 def test_critical_damping_of_phase_one_at_duty_one_third():
     """Pendulum, D = 1/3, Q = 0.6, exact model: phase 1 (omega_1^2 = 1/(1+m)) is critically damped
-    at m = 4 Q^2 - 1 = 0.44; below its near-critical cut no interval of order 1 exists (proven),
-    above it the answer is undecided (trace form) -- never a wrong range."""
+    at m = 4 Q^2 - 1 = 0.44, and over-damped above it.  The whole axis is decided: no interval
+    below the threshold (which lies in the over-damped range, at the Floquet tangency:
+    :func:`test_threshold_agrees_with_the_floquet_tangency`), the interval above it up to
+    m -> 1; the Floquet growth agrees on both sides of the critical depth."""
     ex = existence(1, "0.6", system=system("pendulum", duty="1/3"), damping="exact")
-    eps2 = Fraction(NEAR_CRITICAL) ** 2
-    cut = Fraction(144, 100) / (1 + eps2) - 1  # 1/(1+m) = gamma^2 (1 + eps^2)
-    assert ex.intervals == []
-    ((lo, _hi),) = ex.undecided
-    assert lo == cut
-    assert [s[2] for s in ex.segments] == [-1, 0]
+    assert not ex.undecided
+    ((a, b),) = ex.intervals
+    assert 0.44 < a < 0.7 and b == 1
+    assert [s[2] for s in ex.segments] == [-1, 0, 1]  # the threshold between
+    assert len(ex.thresholds) == 1
+    sysv = system("pendulum", duty="1/3")
+    Q = Fraction(3, 5)
+    mm = Fraction(9, 10)
+    T = _centre(1, mm, Q, sysv, "exact")
+    assert growth_factor(mm, T, Q, "exact", system="pendulum", duty="1/3", dps=30) > 1
+    for mm in (Fraction(11, 25), Fraction(1, 2)):  # at the critical depth and past it: no interval
+        assert ex.where(mm) != "exists"
+        # T_1 = T_av/2 (T/T0 units): the growth below 1 over the whole neighbourhood of T_1
+        T1 = 1 / (2 * (Fraction(1, 3) / (1 + mm) ** 0.5 + Fraction(2, 3) / (1 - mm) ** 0.5))
+        for j in range(1, 60):
+            T = T1 * j / 30
+            g = growth_factor(mm, T, Q, "exact", system="pendulum", duty="1/3", dps=20)
+            assert g < 1, (mm, T, g)
 
 
 def test_the_paper_system_is_unchanged_by_the_family_route():

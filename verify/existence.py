@@ -647,14 +647,13 @@ def _decide(
     fl=None,
     system: System = PAPER,
     form=None,
-) -> int | None:
+) -> int:
     """``+1``: the interval exists at every depth of ``[lo, hi]`` (a point ``T`` with ``D > 0`` in
     the order's window, the same for all of them); ``-1``: at none (``D < 0`` on the whole window
     for all of them); ``0``: not decided on this range.  ``D`` is evaluated with the parameters as
     balls that hold every depth of the range (:func:`verify.solve.depth_ball`); ``fl`` is the
-    float stage at the middle (:func:`_float_stages`), only a starting point.  ``None``: not
-    decided and not to be split (another member of the family in the trace form, whose proofs over
-    depth ranges are not implemented).  ``form``: the equations of the whole range, where known
+    float stage at the middle (:func:`_float_stages`), only a starting point.  ``form``: the
+    equations of the whole range, where known
     already (:func:`_uniform_form` of a range holding it)."""
     from .hump import hump_box, hump_trace
 
@@ -665,17 +664,20 @@ def _decide(
             return 0  # a change of equations inside: split there
         form = kinds.pop()
     kind, regimes = form
-    if kind != "normal" and not system.is_paper:
-        return None
     if kind != "normal":
-        touching = _critical_end(lo, hi, Q, damping, regimes)
+        touching = _critical_end(lo, hi, Q, damping, regimes, system)
         if touching is not None:  # a half critically damped at or next to an end (verify.bridge)
             from .bridge import decide
 
             narrow = hi - lo < max(lo, Fraction(1, 2**1000)) / 2**30
             try:
                 sign = decide(
-                    n, regimes, touching, _box_trace_params(lo, hi, Q), 4 * _NEGATIVE_PIECES, narrow
+                    n,
+                    regimes,
+                    touching,
+                    _box_trace_params(lo, hi, Q, system),
+                    4 * _NEGATIVE_PIECES,
+                    narrow,
                 )
             except (ValueError, ZeroDivisionError, OverflowError, ArithmeticError):
                 sign = 0
@@ -688,7 +690,7 @@ def _decide(
 
         with ctx.workprec(64):
             try:
-                if overdamped_no_interval(_box_trace_params(lo, hi, Q)()):
+                if overdamped_no_interval(_box_trace_params(lo, hi, Q, system)()):
                     return -1
             except (ValueError, ZeroDivisionError, ArithmeticError):  # pragma: no cover - guard
                 pass
@@ -696,21 +698,23 @@ def _decide(
         if kind == "normal":
             h = hump_box(n, lo, hi, Q, damping, float_stage=fl, system=system)
         else:
-            h, why = hump_trace(n, mid, Q, regimes, m_box=(lo, hi))
+            h, why = hump_trace(n, mid, Q, regimes, m_box=(lo, hi), system=system)
             if h is None and n == 1 and regimes[1] != "under":
                 # both halves over-damped, no sign change of P at the middle: D < 0 is to be
                 # proven on all of [0, zend] (beyond it the tail bound)
-                T = trace_params(mid, Q, backend("math"))
+                T = trace_params(mid, Q, backend("math"), system)
                 a = 2 - float(T.nu1) - float(T.nu2)
                 if a > 0:
                     zend = max(2 / a, 1.0) * (1 + 1e-6)
                     while abs(float(T.kappa)) * zend * zend * math.exp(-a * zend) >= 0.25:
                         zend *= 1.5
-                    h, why = hump_trace(n, mid, Q, regimes, m_box=(lo, hi), window=(1e-9, zend))
+                    h, why = hump_trace(
+                        n, mid, Q, regimes, m_box=(lo, hi), window=(1e-9, zend), system=system
+                    )
             if h is None:
                 # both halves (critically or) over-damped: no rotation, only order 1 can exist;
                 # else the phase does not reach the order's window before D < 0 for good
-                return -1 if _no_window_on_box(n, lo, hi, Q, regimes) else 0
+                return -1 if _no_window_on_box(n, lo, hi, Q, regimes, system) else 0
     except (CertificationError, ValueError, ZeroDivisionError, OverflowError, ArithmeticError):
         return 0
     top = h.top
@@ -720,7 +724,7 @@ def _decide(
         top = _polish_top(h.point or h, start, bits, h.a, h.b)
         if fl is not None:
             fl["polished"] = top
-    in_window = kind == "normal" or _in_trace_window(n, lo, hi, Q, regimes, top)
+    in_window = kind == "normal" or _in_trace_window(n, lo, hi, Q, regimes, top, system)
     if (narrow or math.isfinite(h.top) and h.dtop > 0) and h.a <= top <= h.b and in_window:
         for prec in (64, 128, 256) if narrow else (64, 128):
             with ctx.workprec(prec):
@@ -744,7 +748,7 @@ def _decide(
     return 0
 
 
-def _critical_end(lo, hi, Q, damping, regimes) -> int | None:
+def _critical_end(lo, hi, Q, damping, regimes, system: System = PAPER) -> int | None:
     """The half (``0`` or ``1``) critically damped at an end of the range ``[lo, hi]`` whose inner
     depths have ``regimes`` (none critical), or at a depth outside it within
     :data:`_NEAR_CRITICAL_RANGES` of its widths; else ``None``.  Next to that depth the half's
@@ -753,12 +757,12 @@ def _critical_end(lo, hi, Q, damping, regimes) -> int | None:
     if "critical" in regimes:
         return None
     for x in (lo, hi):
-        kind, ends = _form_of(x, Q, damping)
+        kind, ends = _form_of(x, Q, damping, system)
         if kind != "normal" and "critical" in ends:
             return ends.index("critical")
     if damping != "exact":
         return None
-    for c, half in _critical_depths(Q):
+    for c, half in _critical_depths(Q, system):
         gap = lo - c if c <= lo else c - hi if c >= hi else None
         if gap is not None and gap <= _NEAR_CRITICAL_RANGES * (hi - lo):
             return half
@@ -766,12 +770,12 @@ def _critical_end(lo, hi, Q, damping, regimes) -> int | None:
 
 
 @lru_cache(maxsize=64)
-def _critical_depths(Q: Fraction) -> tuple:
-    """``(depth, half)`` of each depth where a half of the paper's pendulum is critically damped
-    (among the exact model's regime changes, :func:`_regime_changes`)."""
+def _critical_depths(Q: Fraction, system: System = PAPER) -> tuple:
+    """``(depth, half)`` of each depth where a half of ``system`` is critically damped (among the
+    exact model's regime changes, :func:`_regime_changes`)."""
     out = []
-    for c in sorted(_regime_changes(Q, PAPER)):
-        kind, ends = _form_of(c, Q, "exact")
+    for c in sorted(_regime_changes(Q, system)):
+        kind, ends = _form_of(c, Q, "exact", system)
         if kind != "normal" and "critical" in ends:
             out.append((c, ends.index("critical")))
     return tuple(out)
@@ -786,18 +790,18 @@ _NEAR_CRITICAL_RANGES = 64
 _NEGATIVE_PIECES = 60
 
 
-def _box_trace_params(lo, hi, Q):
+def _box_trace_params(lo, hi, Q, system: System = PAPER):
     from .enclosure import AtPrecision
     from .hump import box_prec, depth_ball
 
     def make():
         Qb = arb(Q.numerator) / Q.denominator
-        return trace_params(depth_ball((lo, hi)), Qb, backend("arb"))
+        return trace_params(depth_ball((lo, hi)), Qb, backend("arb"), system)
 
     return AtPrecision(make, box_prec((lo, hi)))
 
 
-def _in_trace_window(n, lo, hi, Q, regimes, z) -> bool:
+def _in_trace_window(n, lo, hi, Q, regimes, z, system: System = PAPER) -> bool:
     """``|Phi(z) - n pi| < pi/2`` for every depth of the range (half 2 under-damped), so that a
     point with ``D > 0`` there belongs to order ``n``; with both halves over-damped only order 1
     has a window."""
@@ -807,23 +811,23 @@ def _in_trace_window(n, lo, hi, Q, regimes, z) -> bool:
         return n == 1
     if not (isinstance(z, arb) or math.isfinite(z)):
         return False
-    P = _box_trace_params(lo, hi, Q)
+    P = _box_trace_params(lo, hi, Q, system)
     try:
         with ctx.workprec(96):
-            ph = trace_phase(regimes, P, _exact_ball(z), (lo, hi), (lo + hi) / 2, Q)
+            ph = trace_phase(regimes, P, _exact_ball(z), (lo, hi), (lo + hi) / 2, Q, system)
             pi = arb.pi()
             return bool(abs(ph - n * pi) < pi / 2)
     except (ValueError, ZeroDivisionError, ArithmeticError):
         return False
 
 
-def _no_window_on_box(n, lo, hi, Q, regimes) -> bool:
+def _no_window_on_box(n, lo, hi, Q, regimes, system: System = PAPER) -> bool:
     from .float_roots import trace_window_ends  # noqa: F401  (the float tail bound below is its rule)
     from .hump import prove_no_window
 
     if regimes[1] != "under":
         return n > 1
-    T = trace_params((lo + hi) / 2, Q, backend("math"))
+    T = trace_params((lo + hi) / 2, Q, backend("math"), system)
     a = 2 - float(T.nu1)
     if not a > 0:
         return False
@@ -833,10 +837,10 @@ def _no_window_on_box(n, lo, hi, Q, regimes) -> bool:
     # the tail bound needs zeta a > 2 for every depth of the range, and z holds it at the middle
     # with a margin of 1e-6 only: where a's ball is wider, a larger zeta serves as well (the
     # phase, which grows with zeta, must still stay under the order's window there)
-    P = _box_trace_params(lo, hi, Q)
+    P = _box_trace_params(lo, hi, Q, system)
     for grow in _NO_WINDOW_GROW:
         try:
-            if prove_no_window(n, regimes, P, z * grow, (lo, hi), (lo + hi) / 2, Q):
+            if prove_no_window(n, regimes, P, z * grow, (lo, hi), (lo + hi) / 2, Q, system):
                 return True
         except (ValueError, ZeroDivisionError, ArithmeticError):
             return False
@@ -930,6 +934,9 @@ def _regime_changes(Q: Fraction, system: System) -> set[Fraction]:
         return set()
     g2, e2 = Fraction(1, 4) / Fraction(Q) ** 2, Fraction(NEAR_CRITICAL) ** 2
     roots = regime_roots(system.name).compiled("exact")(g2, e2)
+    if not all(isinstance(root, Fraction | int) for root in roots):  # pragma: no cover - guard
+        # the ranges between cuts share their equations only if the cuts are the changes exactly
+        raise AssertionError(f"{system.label}: a regime change that is not rational: {roots}")
     return {Fraction(root) for root in roots if 0 < root < 1}
 
 
@@ -976,9 +983,6 @@ def _segments(n: int, Q: Fraction, damping: str, digits: int, budget: int, syste
                 # the normal form degenerates as phase 1 nears critical damping (its terms O(1)
                 # where D is O(nu1)); the trace form holds for both halves under-damped as well
                 sign = _decide(n, lo, hi, Q, damping, bits, None, system, _UNDER_UNDER)
-            if sign is None:  # undecided for good
-                done.append((lo, hi, 0))
-                continue
             splittable = hi - lo > max(lo, Fraction(1, 2**1000)) / 2 ** (bits + 2)
             if sign == 0 and splittable:
                 mid = _round_fraction((lo + hi) / 2, lo, hi)
@@ -1009,33 +1013,29 @@ _NORMAL_NEAR = 4 * NEAR_CRITICAL
 
 
 def _near_critical_normal(lo, hi, Q, damping: str, system: System, form) -> bool:
-    """Whether an undecided range in the normal form (the exact model, the paper's system) lies
-    where phase 1 is near critical damping: ``Omega1/gamma < _NORMAL_NEAR`` at its middle.  The
-    trace form holds there as well (both halves under-damped at every depth of the range: the
-    normal form is chosen only where they are)."""
+    """Whether an undecided range in the normal form (the exact model) lies where phase 1 is near
+    critical damping: ``Omega1/gamma < _NORMAL_NEAR`` at its middle (``u1 = (Omega1/gamma)^2`` of
+    :func:`verify.system_params.trace_atoms`, before any scaling by the duty).  The trace form
+    holds there as well (both halves under-damped at every depth of the range: the normal form is
+    chosen only where they are)."""
+    from .system_params import canonical, trace_atoms
+
     if form is None or form[0] != "normal" or damping != "exact" or Q is None:
         return False
-    if not system.is_paper:
-        return False
-    nu1 = trace_params((lo + hi) / 2, Q, backend("math")).nu1
-    return float(nu1) < _NORMAL_NEAR
+    u1 = trace_atoms(canonical(system), (lo + hi) / 2, Q, backend("math"))[1]
+    return u1 < _NORMAL_NEAR**2
 
 
 def _uniform_form(box, Q: Fraction, damping: str, system: System):
-    """The equations (:func:`verify.params.form_for`) of a first range if its ends and middle
-    share them, else ``None`` (decided per sub-range).  For the paper's system, the equations
-    of its inner depths (those of the middle) where only an end differs: every depth where the
-    equations change is a cut (:func:`_breakpoints`, exact rationals), so the inner depths share
-    them, and they hold at the ends as well -- at :data:`~verify.params.NEAR_CRITICAL` both forms
-    are valid (the normal form is only less well conditioned), and at a critical damping a half's
-    ``nu`` is ``0``, where the inner form's ``sin(nu zeta)/nu`` is a non-finite ball (undecided,
-    never wrong)."""
+    """The equations (:func:`verify.params.form_for`) of a first range: those of its inner depths
+    (the middle's).  Every depth where the equations change is a cut (:func:`_breakpoints`: the
+    regime changes are exact rationals, :func:`_regime_changes`), so the inner depths share them,
+    and they hold at the ends as well -- at :data:`~verify.params.NEAR_CRITICAL` both forms are
+    valid (the normal form is only less well conditioned), and at a critical damping a half's
+    ``nu`` is ``0``, the limit of the inner regime's functions (:mod:`verify.bridge` takes them
+    there; :func:`verify.params.trace_params` gives ``nu`` a ball from 0 up)."""
     lo, hi = box
-    mid = _form_of((lo + hi) / 2, Q, damping, system)
-    kinds = {_form_of(x, Q, damping, system) for x in (lo, hi)} | {mid}
-    if len(kinds) == 1 or system.is_paper:
-        return mid
-    return None
+    return _form_of((lo + hi) / 2, Q, damping, system)
 
 
 def _round_fraction(mid: Fraction, lo: Fraction, hi: Fraction) -> Fraction:
@@ -1064,10 +1064,9 @@ def existence(
 
     ``system`` and ``duty`` choose the member of the family (:mod:`analytic.system`; a
     :class:`~analytic.system.System` passes through): the equations, the closings around which
-    the gaps open and the regime changes are derived from its description.  For another member
-    than the paper's pendulum the exact model's trace form (a phase critically or over-damped, or
-    phase 1 near it) is reported as undecided: its proofs over depth ranges are derived for the
-    paper's system only.  A custom system has no depth and is refused.
+    the gaps open and the regime changes are derived from its description, and so are the
+    parameters of the exact model's trace form over a range of depths
+    (:func:`verify.params.trace_params`).  A custom system has no depth and is refused.
 
     Returns an :class:`Existence`: ``.intervals`` (pairs of mpmath numbers, ``b = 1`` when the
     range is open towards ``m -> 1``), ``.thresholds`` (with enclosures), ``.undecided``,

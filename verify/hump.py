@@ -1204,11 +1204,14 @@ def hump_trace(
 
     funcs = [lambda z, F=F: F(z, *args()) for F in (D0, D1, D2)]
     if m_box is not None:  # the mean-value form in m (see hump_box), jets from the middle
-        Pm = AtPrecision(lambda: _params_at(m, Q, None, (m, m), trace_params), box_prec((m, m)))
+        Pm = AtPrecision(
+            lambda: _params_at(m, Q, None, (m, m), partial(trace_params, system=system)),
+            box_prec((m, m)),
+        )
 
         def jets():
             Qb = arb(Q.numerator) / Q.denominator
-            return trace_params(Jet(depth_ball(m_box), 1), Jet(Qb), _ARB)
+            return trace_params(Jet(depth_ball(m_box), 1), Jet(Qb), _ARB, system)
 
         Pj = AtPrecision(jets, box_prec(m_box))
         dM = AtPrecision(
@@ -1229,7 +1232,7 @@ def hump_trace(
     za, zb = window
     if m_box is not None:  # the union of the windows at the two ends of the range
         for x in m_box:
-            Tx = trace_params(x, Q, _MATH)
+            Tx = trace_params(x, Q, _MATH, system)
             wx = trace_window_ends(n, regimes, Tx)
             if wx is None and regimes[1] != "under":
                 continue  # the given window covers it
@@ -1252,7 +1255,7 @@ def hump_trace(
     for widen in (1e-9,) if m_box is None else _RANGE_WIDEN:
         wa = za * (1 - (widen if m_box is None or regimes[1] == "under" else _RANGE_START))
         wb = zb * (1 + widen)
-        if _prove_window(n, regimes, P, wa, wb, m_box, m, Q):
+        if _prove_window(n, regimes, P, wa, wb, m_box, m, Q, system):
             za, zb = wa, wb
             break
     else:  # (at a depth alone a guard: its window is proven at the first margin)
@@ -1343,7 +1346,7 @@ def tail_negative(kappa, a, z) -> bool:
     return bool(tail < 1 and z * a > 2)
 
 
-def trace_phase(regimes, P, z, m_box=None, m=None, Q=None) -> arb:
+def trace_phase(regimes, P, z, m_box=None, m=None, Q=None, system=PAPER) -> arb:
     """The phase ``Phi(zeta)`` of the trace form (half 2 under-damped), as a ball; with
     ``m_box`` (and its middle ``m``, and ``Q``) for every depth of the range, by the mean-value
     form in ``m`` (jets) instead of ``P``."""
@@ -1360,8 +1363,8 @@ def trace_phase(regimes, P, z, m_box=None, m=None, Q=None) -> arb:
         return phase(P())
     with ctx.workprec(max(ctx.prec, box_prec(m_box))):
         Qb = arb(Q.numerator) / Q.denominator
-        mid = phase(trace_params(m, Q, _ARB))
-        jet = phase(trace_params(Jet(depth_ball(m_box), 1), Jet(Qb), _ARB))
+        mid = phase(trace_params(m, Q, _ARB, system))
+        jet = phase(trace_params(Jet(depth_ball(m_box), 1), Jet(Qb), _ARB, system))
         slope = jet.d if isinstance(jet, Jet) else 0
         return mid + slope * (depth_ball(m_box) - arb(m.numerator) / m.denominator)
 
@@ -1383,7 +1386,7 @@ def overdamped_no_interval(p) -> str | None:
     every depth of a range).  The reason, as a result's note, where this is proven; else
     ``None``.  ``s = nu1 + nu2 < 2`` holds by the model: an over-damped half has ``nu_i =
     sqrt(gamma^2 - omega_i^2)/gamma < 1`` (``omega_i^2 > 0``), scaled by its share of the period
-    (``2 D`` and ``2 (1 - D)``, :func:`verify.system_params.trace_values`), which sum to 2.  The
+    (``2 D`` and ``2 (1 - D)``, :func:`verify.params.trace_params`), which sum to 2.  The
     first bound does not test it (over the balls of a range of depths it would often not be
     decided); the second one uses the ball of ``s`` and needs it below 2.
 
@@ -1465,7 +1468,9 @@ def overdamped_beyond(p, z: float) -> bool:
     return bool(falling and g - (k + 1) * ((nu1 - nu2) * zb).cosh() < 0)
 
 
-def prove_no_window(n: int, regimes, P, ztail: float, m_box=None, m=None, Q=None) -> bool:
+def prove_no_window(
+    n: int, regimes, P, ztail: float, m_box=None, m=None, Q=None, system=PAPER
+) -> bool:
     """Order ``n`` has no interval (half 2 under-damped): beyond ``ztail`` ``D < 0`` (the tail
     bound of :func:`verify.grid.trace_window_ends`), and below it the phase stays under ``n pi -
     pi/2`` (``Phi`` increases wherever it exceeds ``pi/2``: :mod:`verify.solve`), so the order's
@@ -1476,11 +1481,11 @@ def prove_no_window(n: int, regimes, P, ztail: float, m_box=None, m=None, Q=None
         p = P()
         z2 = ball(ztail)
         pi = arb.pi()
-        ph = trace_phase(regimes, P, z2, m_box, m, Q)
+        ph = trace_phase(regimes, P, z2, m_box, m, Q, system)
         return tail_negative(p.kappa, 2 - p.nu1, z2) and bool(ph < n * pi - pi / 2)
 
 
-def _prove_window(n, regimes, P, za, zb, m_box=None, m=None, Q=None) -> bool:
+def _prove_window(n, regimes, P, za, zb, m_box=None, m=None, Q=None, system=PAPER) -> bool:
     """The window ends enclose the order's window (and nothing of the same parity beyond it);
     with ``m_box`` for every depth of that range (the phase by the mean-value form)."""
     r1, r2 = regimes
@@ -1489,7 +1494,7 @@ def _prove_window(n, regimes, P, za, zb, m_box=None, m=None, Q=None) -> bool:
         if r2 == "under":
 
             def phi(z):
-                return trace_phase(regimes, P, ball(z), m_box, m, Q)
+                return trace_phase(regimes, P, ball(z), m_box, m, Q, system)
 
             pi = arb.pi()
             beyond = tail_negative(p.kappa, 2 - p.nu1, ball(zb)) or bool(

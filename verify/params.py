@@ -32,8 +32,10 @@ with ``V = ((1+m)^2 nu1 + (1-m)^2 nu2)/(1-m^2)``, ``d = 4m/(1-m^2)`` and
 polynomial).  ``K' - 2`` is a sum of squares: ``r'^2 > 0`` always.
 
 When a half is critically or over-damped (``u_i <= 0``) the normal form does not apply; the trace
-form ``2 C1 C2 - kappa S1 S2`` does, with ``kappa = K' nu1 nu2 = 4Q^2((1+m)/(1-m)^2 +
-(1-m)/(1+m)^2) - 2`` and ``nu_i = sqrt(|u_i|/(1 +- m))``.
+form ``2 C1 C2 - kappa S1 S2`` does, with ``kappa = K' nu1 nu2`` and ``nu_i = Omega_i/gamma``, whose
+parameters are not rearranged here: :func:`trace_params` evaluates the forms sympy derives for
+every member of the family (:func:`analytic.family.trace_forms`; for the pendulum ``kappa =
+4Q^2((1+m)/(1-m)^2 + (1-m)/(1+m)^2) - 2`` and ``nu_i^2 = |4Q^2/(1 +- m) - 1|``).
 
 Every function takes the depth ``m`` and quality factor ``Q`` as numbers of one back end
 (:func:`verify.derived.backend`) -- arb balls, mpmath numbers, floats or float64 arrays -- and
@@ -52,6 +54,7 @@ from flint import arb, fmpq
 from analytic.system import PAPER, System, phase_regimes
 
 from .derived import Backend
+from .system_params import _evaluate, canonical, trace_atoms
 
 __all__ = [
     "NormalParams",
@@ -471,24 +474,33 @@ def _exact_parts(m: Fraction, Q: Fraction) -> tuple:
 
 
 def trace_params(m, Q, B: Backend, system: System = PAPER) -> TraceParams:
-    """``kappa``, ``nu1``, ``nu2`` of the exact model's trace form (any regime).
+    """``kappa``, ``nu1``, ``nu2`` of the exact model's trace form (any regime), for every member
+    of the family: ``kappa = N/gamma^2`` and ``u_i = Omega_i^2/gamma^2`` as derived by sympy
+    (:func:`analytic.family.trace_forms`, compiled: :func:`verify.system_params.trace_atoms`),
+    ``nu_i = sqrt|u_i|``, and for a duty ``D`` other than 1/2 the phases' lengths folded in
+    (``nu1 -> 2 D nu1``, ``nu2 -> 2 (1 - D) nu2``, ``kappa -> 4 D (1 - D) kappa``, so that the form
+    of :func:`verify.derived.trace_indicator`, written for two half periods, holds).
 
-    With exact ``m``, ``Q`` the signs of ``u_i`` are exact, and a critically damped half gets
-    ``nu_i = 0`` exactly (its forms do not use it).  Other members of the family and duties:
-    :func:`verify.system_params.trace_values` (phase lengths folded into ``kappa, nu_i``).
+    ``m``, ``Q``: exact (the signs of ``u_i`` are then exact, and a critically damped half gets
+    ``nu_i = 0`` exactly: its forms do not use it), numbers of ``B``, or jets over balls with
+    ``arb`` (:class:`verify.certify.Jet`).  ``w0``: the undamped ``omega_av/omega0``.
     """
-    if system is not PAPER and not system.is_paper:
-        from .system_params import normal_values, trace_values
+    if system is not PAPER:
+        system = canonical(system)
+    kappa, u1, u2 = trace_atoms(system, m, Q, B)
+    nu1, nu2 = _nu(u1, B), _nu(u2, B)
+    D = system.duty
+    if system is not PAPER and D != _HALF:
+        if isinstance(kappa, Fraction):
+            kappa *= 4 * D * (1 - D)
+        else:
+            kappa = kappa * _lift(4 * D * (1 - D), B)
+        nu1, nu2 = nu1 * _lift(2 * D, B), nu2 * _lift(2 * (1 - D), B)
+    w0 = omega_av(m, B) if system.is_paper else _evaluate(system, m, None, "none", B)["w0"]
+    return TraceParams(_lift(kappa, B), nu1, nu2, _lift(Q, B), w0)
 
-        tv = trace_values(system, m, Q, B)
-        w0 = normal_values(system, m, None, "exact", B)["w0"]
-        return TraceParams(tv["kappa"], tv["nu1"], tv["nu2"], _lift(Q, B), w0)
-    q2 = 4 * Q * Q
-    kappa = q2 * ((1 + m) / ((1 - m) * (1 - m)) + (1 - m) / ((1 + m) * (1 + m))) - 2
-    # (Omega_i/gamma)^2 with its sign, each depth counted once: over a range of depths a ball of
-    # (q2 - 1 - m)/(1 + m) loses q2 against 1 (Q small, both halves over-damped near m = 1)
-    u1, u2 = q2 / (1 + m) - 1, q2 / (1 - m) - 1
-    return TraceParams(_lift(kappa, B), _nu(u1, B), _nu(u2, B), _lift(Q, B), omega_av(m, B))
+
+_HALF = Fraction(1, 2)
 
 
 def _nu(u, B: Backend):

@@ -17,7 +17,9 @@ and proves them again and compares the texts) carry the proof.  Custom systems a
 are derived (and proven) when first needed.
 
 The paper's own system (pendulum, ``D = 1/2``) keeps the hand-checked rearrangements of
-:mod:`verify.params`; this general route is tested against it.  A custom system whose phase 1 has
+:mod:`verify.params` for the normal form; this general route is tested against it.  The exact
+model's trace form takes its parameters from here for every member, the paper's included
+(:func:`trace_atoms`, from :func:`analytic.family.trace_forms`).  A custom system whose phase 1 has
 the higher frequency is evaluated with its phases exchanged (``D -> 1 - D``, ``k -> 1/k``): the
 monodromy is conjugate to the original one, so the multipliers and the chart are the same, and the
 solvers always see phase 1 as the low-frequency phase.
@@ -35,7 +37,7 @@ from analytic.system import System
 
 from .derived import Backend, _printer
 
-__all__ = ["canonical", "normal_values", "normal_jets", "trace_values"]
+__all__ = ["canonical", "normal_values", "normal_jets", "trace_atoms"]
 
 
 def canonical(system: System) -> System:
@@ -95,6 +97,15 @@ def _proven(system: System, damping: str):
 
 
 @cache
+def _proven_trace(system: System) -> list:
+    """``[kappa, u1, u2]`` of :func:`analytic.family.trace_forms` (proven as they are derived)."""
+    from analytic.family import trace_forms
+
+    values = trace_forms(system).values
+    return [values[name] for name in ("kappa", "u1", "u2")]
+
+
+@cache
 def _derive(system: System, damping: str, backends=STORED_BACKENDS) -> dict[str, str]:
     """The texts of ``system`` in the model ``damping`` (see :func:`derived_sources`)."""
     import sympy as sp
@@ -115,6 +126,12 @@ def _derive(system: System, damping: str, backends=STORED_BACKENDS) -> dict[str,
         key("atoms | fraction"): _source((S.m, S.Q), exprs, _FRACTION_NS),
         key("atoms | integers"): _source(_pq_symbols(), _integer_pairs(exprs), {}),
     }
+    trace = None
+    if getattr(damping, "value", damping) == "exact":
+        trace = _proven_trace(system)
+        out[key("trace | fraction")] = _source(
+            (S.m, S.Q), trace, _FRACTION_NS, cse=True, products=True
+        )
     if backends:
         from analytic.factoring import factor
 
@@ -128,6 +145,8 @@ def _derive(system: System, damping: str, backends=STORED_BACKENDS) -> dict[str,
             "atoms": _source((S.m, S.Q), exprs, ns, products=many),
             "atoms_om": _source((om, S.Q), near_one, ns, products=many),
         }
+        if trace is not None:
+            texts["trace"] = _source((S.m, S.Q), trace, ns, cse=True, products=True)
         for part, text in texts.items():
             out[key(f"{part} | {b}")] = arb_text(text) if b == "arb" else text
     return out
@@ -449,32 +468,25 @@ def _select(beta, pos, neg, B: Backend):
     return pos if beta >= 0 else neg
 
 
-def trace_values(system: System, m, Q, B: Backend) -> dict:
-    """The exact model's trace-form parameters for any regime: ``kappa``, ``nu1``, ``nu2``
-    (``|omega_i^2 - gamma^2|^(1/2) / gamma``) scaled to the phase lengths, so that the form of
-    :func:`verify.derived.trace_indicator`, written for two half periods, holds for any duty:
-    ``nu1 -> 2 D nu1``, ``nu2 -> 2 (1 - D) nu2`` and ``kappa -> 4 D (1 - D) kappa`` (the phase of
-    segment ``i`` is ``nu_i gamma t_i`` with ``gamma t_1 = 2 D zeta``, ``gamma t_2 = 2 (1-D)
-    zeta``, ``zeta = gamma T/2``).  ``m`` and ``Q`` exact; ``kappa = N/gamma^2``."""
-    system = canonical(system)
-    names, atoms, _ = _compiled(system, "exact")
-    vals = dict(
-        zip(
-            names,
-            atoms(Fraction(m) if system.uses_depth else Fraction(0), Fraction(Q)),
-            strict=True,
-        )
-    )
-    G2 = Fraction(vals["G"]) ** 2
-    Dv = system.duty
-    kappa = Fraction(vals["N"]) / G2 * 4 * Dv * (1 - Dv)
+def trace_atoms(system: System, m, Q, B: Backend) -> tuple:
+    """``(kappa, u1, u2)`` of the exact model's trace form for two half periods
+    (:func:`analytic.family.trace_forms`: ``kappa = N/gamma^2``, ``u_i = Omega_i^2/gamma^2``, the
+    caller scales them to the phases' lengths) of the canonical ``system`` at ``m``, ``Q``: exact
+    Fractions when both are exact, else numbers of ``B`` (balls, or jets over balls with ``arb``:
+    the forms are rational, written with ``+ - * /`` and integer powers only)."""
+    em, eQ = type(m) in _EXACT, type(Q) in _EXACT
+    if em and eQ:
+        return _trace_function(system, "fraction")(Fraction(m), Fraction(Q))
+    return _trace_function(system, B.name)(B.num(m) if em else m, B.num(Q) if eQ else Q)
 
-    def nu(z, scale):
-        z = Fraction(z)
-        return B.num(Fraction(0)) if z == 0 else B.sqrt(B.num(abs(z) / G2)) * B.num(scale)
 
-    return {
-        "kappa": B.num(kappa),
-        "nu1": nu(vals["O1"], 2 * Dv),
-        "nu2": nu(vals["O2"], 2 * (1 - Dv)),
-    }
+_EXACT = (Fraction, int)
+
+
+@cache
+def _trace_function(system: System, name: str):
+    """The compiled trace forms of ``system`` in ``name`` (a back end, or ``"fraction"``)."""
+    from .derived import backend
+
+    ns = _FRACTION_NS if name == "fraction" else backend(name).namespace
+    return _load(system, "exact", f"trace | {name}", ns)
