@@ -205,3 +205,79 @@ def test_form_for_every_system_by_its_integers():
                     hits = _form_for_system.cache_info().hits
                     assert form_for(m, Q, damping, sysv) == want
                     assert _form_for_system.cache_info().hits == hits + 1
+
+
+@pytest.mark.parametrize(
+    "name, duty",
+    [("pendulum", "1/2"), ("pendulum", "1/3"), ("torsion", "1/2"), ("meissner", "2/3")],
+)
+def test_trace_params_over_a_range_of_depths(name, duty):
+    """``kappa``, ``nu1``, ``nu2`` of :func:`verify.params.trace_params` for every member: over a
+    ball of depths (and of its jets, the slope in ``m``) they hold the values and the slopes at
+    every depth in it, ranges touching a critical damping (``nu = 0`` at an end) included.
+    Reference: the definitions ``kappa = (k omega1^2 + omega2^2/k - 2 gamma^2)/gamma^2`` and
+    ``nu_i^2 = |omega_i^2 - gamma^2|/gamma^2`` (in units of ``omega0``) from the system's own
+    description (:meth:`analytic.system.System.values`), scaled by the duty (``4 D (1 - D)``,
+    ``2 D``, ``2 (1 - D)``), evaluated in exact rationals; the slopes by central differences at
+    60 digits."""
+    from flint import arb
+
+    from analytic.system import system as make
+    from verify.certify import Jet
+    from verify.hump import depth_ball
+
+    sysv = make(name, duty=duty)
+    D = sysv.duty
+    A = backend("arb")
+
+    def exact(m, Q):
+        W1, W2, k = (sp.Rational(v) for v in sysv.values(sp.Rational(m.numerator, m.denominator)))
+        g2 = sp.Rational(1, 4) / sp.Rational(Q.numerator, Q.denominator) ** 2
+        kappa = (k * W1 + W2 / k - 2 * g2) / g2 * 4 * D * (1 - D)
+        return kappa, abs(W1 - g2) / g2 * (2 * D) ** 2, abs(W2 - g2) / g2 * (4 * (1 - D) ** 2)
+
+    def value(m, Q, i):
+        with mpmath.workdps(60):
+            v = exact(m, Q)[i]
+            return (
+                mpmath.mpf(sp.Rational(v).p) / sp.Rational(v).q
+                if i == 0
+                else mpmath.sqrt(mpmath.mpf(sp.Rational(v).p) / sp.Rational(v).q)
+            )
+
+    rng = random.Random(5)
+    Q = Fraction(3, 5)
+    g2 = Fraction(1, 4) / Q**2
+    # the depths where a phase is critically damped at this Q (W_i(m) = g2), from the laws
+    crit = [c for c in (1 / g2 - 1, 1 - 1 / g2, 1 - g2) if 0 < c < 1]
+    ranges = [(c - Fraction(1, 10**4), c) for c in crit] + [
+        (c, c + Fraction(1, 10**4)) for c in crit
+    ]
+    ranges += [
+        (lo, lo + Fraction(1, 10 ** rng.randint(3, 8)))
+        for lo in (Fraction(rng.randint(1, 9900), 10**4) for _ in range(6))
+    ]
+    ranges += [(Fraction(998, 1000), Fraction(999, 1000))]
+    for lo, hi in ranges:
+        with ctx.workprec(80):
+            Qb = arb(Q.numerator) / Q.denominator
+            P = trace_params(depth_ball((lo, hi)), Qb, A, sysv)
+            touching = any(lo <= c <= hi for c in crit)
+            # (a jet's nu over a range holding nu = 0 has no slope: |x| of it raises)
+            J = None if touching else trace_params(Jet(depth_ball((lo, hi)), 1), Jet(Qb), A, sysv)
+        got = (P.kappa, P.nu1, P.nu2)
+        jets = None if J is None else (J.kappa, J.nu1, J.nu2)
+        for j in range(7):
+            m = lo + (hi - lo) * Fraction(j, 6)
+            for i in range(3):
+                with ctx.workprec(200):
+                    ref = arb(mpmath.nstr(value(m, Q, i), 55))
+                    assert got[i].contains(ref), (name, duty, lo, hi, m, i, got[i], ref)
+                if 0 < j < 6 and jets is not None:
+                    h = Fraction(1, 10**20)
+                    with mpmath.workdps(60):
+                        slope = (value(m + h, Q, i) - value(m - h, Q, i)) * 10**20 / 2
+                    d = jets[i].d if isinstance(jets[i], Jet) else arb(0)
+                    with ctx.workprec(200):  # the difference quotient: good to ~1e-30
+                        ref = arb(mpmath.nstr(slope, 40))
+                        assert (d + arb(0, 1e-20)).contains(ref), (name, duty, lo, hi, m, i, d, ref)
