@@ -360,9 +360,9 @@ class Jet:
     """A first-order jet ``value + slope * dm`` over ``arb`` balls: evaluating a function on jets
     gives, with the value, an enclosure of its derivative with respect to one parameter (the
     derivative over a whole ball when the parameter's jet is ``Jet(ball, 1)``).  Supports what the
-    compiled forms use: ``+ - * /``, powers with integer exponents, ``sqrt``, ``sin``, ``cos``,
-    ``sinh``, ``cosh`` and the pairs ``sin_cos``, ``sinh_cosh``.  Used for the mean-value form
-    ``f(M) in f(mid) + f'(M) (M - mid)``."""
+    compiled forms use: ``+ - * /``, powers with integer exponents, ``sqrt``, ``exp``, ``sin``,
+    ``cos``, ``sinh``, ``cosh`` and the pairs ``sin_cos``, ``sinh_cosh``.  Used for the mean-value
+    form ``f(M) in f(mid) + f'(M) (M - mid)``."""
 
     __slots__ = ("v", "d")
 
@@ -452,6 +452,10 @@ class Jet:
 
     def sinh(self):
         return Jet(self.v.sinh(), self.v.cosh() * self.d)
+
+    def exp(self):
+        e = self.v.exp()
+        return Jet(e, e * self.d)
 
     def cosh(self):
         return Jet(self.v.cosh(), self.v.sinh() * self.d)

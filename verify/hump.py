@@ -1170,13 +1170,8 @@ def hump_trace(
     try:
         window = window or trace_window_ends(n, regimes, Tf)
     except OverflowError:  # D ~ exp(2 zeta) past the double range before the tail bound holds
-        if m_box is not None:
-            raise CertificationError(
-                f"order {n}, m = {m}, Q = {Q}: the window of the trace form (both halves "
-                "over-damped) reaches beyond the range of double precision; not decided"
-            ) from None
-        # at one depth the float stage takes D exp(-2 zeta) instead (the same signs and zeros,
-        # no overflow); the window is proven on D itself, in balls
+        # the float stage takes D exp(-2 zeta) instead (the same signs and zeros, no overflow);
+        # the window is proven on D itself, in balls
         window = trace_window_ends(n, regimes, Tf, scaled=True)
         scaled = True
     if window is None:
@@ -1233,7 +1228,10 @@ def hump_trace(
     if m_box is not None:  # the union of the windows at the two ends of the range
         for x in m_box:
             Tx = trace_params(x, Q, _MATH, system)
-            wx = trace_window_ends(n, regimes, Tx)
+            try:
+                wx = trace_window_ends(n, regimes, Tx, scaled=scaled)
+            except OverflowError:
+                wx = trace_window_ends(n, regimes, Tx, scaled=True)
             if wx is None and regimes[1] != "under":
                 continue  # the given window covers it
             if wx is None:  # the window ends at the tail bound there: reach past it
