@@ -268,3 +268,76 @@ def test_ranges_next_to_the_critical_damping_are_decided_in_the_halves_functions
             m = ms + Fraction(1, d)
             signs = {s for lo, hi, s in ex.segments if lo <= m <= hi}
             assert signs == {1 if boundary(1, m, Q=Qx, digits=10).exists else -1}, (Q, d)
+
+
+def _continuous_phase(system, m, Q, z):
+    """The trace form's phase at one depth with half 1 under-damped, lifted continuously from
+    ``zeta = 0`` in mpmath (60 digits): ``atan2`` plus ``2 pi`` for each time ``nu1 zeta`` has
+    passed an odd multiple of ``pi``, where ``(2 nu2 cos(nu1 zeta), kappa sin(nu1 zeta)/nu1)``
+    crosses the negative real axis (``kappa > 0``)."""
+    from verify.derived import backend
+    from verify.params import trace_params
+
+    with mpmath.workdps(60):
+        p = trace_params(m, Q, backend("mpmath"), system)
+        x = p.nu1 * z
+        turns = mpmath.floor((x / mpmath.pi + 1) / 2)
+        theta = mpmath.atan2(p.kappa * mpmath.sin(x) / p.nu1, 2 * p.nu2 * mpmath.cos(x))
+        return p.nu2 * z + theta + 2 * mpmath.pi * turns
+
+
+def _wrapping_case():
+    """Meissner, D = 99/100, Q = 100, m = 0.999974: phase 1 under-damped near critical damping
+    (``nu1 = 0.396`` after the duty's scaling; a normal-form range is tried in the trace form
+    there), and a range of depths around it."""
+    from analytic.system import System
+
+    system = System("meissner", Fraction(99, 100))
+    Q = Fraction(100)
+    m = Fraction(999974, 10**6)
+    assert form_for(m, Q, "exact", system) == ("normal", None)  # both halves under-damped
+    return system, Q, m, (m - Fraction(1, 10**12), m + Fraction(1, 10**12))
+
+
+def _right_or_not_given(calls, system, m, Q):
+    """Each call's phase at ``zeta = 3`` and ``9`` holds the continuous phase, or the call raises
+    ``ValueError`` (not decided), which it may only past ``nu1 zeta = pi`` (``zeta = 9``)."""
+    for zeta in (3, 9):
+        with ctx.workprec(96):
+            true = arb(mpmath.nstr(_continuous_phase(system, m, Q, mpmath.mpf(zeta)), 40))
+            for name, call in calls.items():
+                try:
+                    ph = call(arb(zeta))
+                except ValueError:
+                    assert zeta == 9, name
+                    continue
+                assert ph.overlaps(true), (name, zeta, ph, true)
+
+
+def test_the_phase_is_not_counted_past_half_one_turning_back():
+    """At ``zeta = 9`` (``nu1 zeta = 3.56``, inside the tail bound's reach) atan2's point has
+    crossed the negative real axis and atan2 is ``2 pi`` below the phase that numbers the orders
+    (49.337 for 55.620): an order's window would be taken for that of the order two below, and
+    a phase below an order's window at the tail point would not prove that the window is never
+    reached.  The trace form's phase at a depth and over a range is right or not given."""
+    from verify.hump import trace_phase
+
+    system, Q, m, (lo, hi) = _wrapping_case()
+    regimes = ("under", "under")
+    P = _box_trace_params(lo, hi, Q, system)
+    P1 = _box_trace_params(m, m, Q, system)
+    calls = {
+        "at a depth": lambda z: trace_phase(regimes, P1, z),
+        "over a range": lambda z: trace_phase(regimes, P, z, (lo, hi), m, Q, system),
+    }
+    _right_or_not_given(calls, system, m, Q)
+
+
+def test_the_halves_phase_is_not_counted_past_half_one_turning_back():
+    """The same over the balls of the halves' functions (:mod:`verify.bridge`, whose phase decides
+    the windows of ranges next to a critical damping)."""
+    from verify.bridge import _phase
+
+    system, Q, m, (lo, hi) = _wrapping_case()
+    P = _box_trace_params(lo, hi, Q, system)
+    _right_or_not_given({"halves' functions": lambda z: _phase("under", P(), z)}, system, m, Q)

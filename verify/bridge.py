@@ -101,9 +101,7 @@ def decide(n: int, regimes, touching: int, P, budget: int, narrow: bool) -> int:
         return (z, sigma, p.kappa, C1, S1, C2, S2, signs[0] * p.nu1**2, signs[1] * p.nu2**2)
 
     def phase(z):
-        p = P()
-        C1, S1 = half_values(r1, p.nu1, z)
-        return phase_of(z, p.kappa, p.nu2, C1, S1)
+        return _phase(r1, P(), z)
 
     funcs = [lambda z, F=F: F(*values(_ball(z))) for F in forms]
     with ctx.workprec(96):
@@ -152,6 +150,14 @@ def decide(n: int, regimes, touching: int, P, budget: int, narrow: bool) -> int:
         if prove_sign(funcs[0], funcs[1], a, b, -1, prec=prec, budget=budget):
             return -1
     return 0
+
+
+def _phase(r1: str, p, z):
+    """:func:`verify.hump.phase_of` at ``zeta = z`` from half 1's values (:func:`half_values`) in
+    regime ``r1``, for every depth the balls ``p`` hold (an under-damped half 1 needs ``nu1 zeta <
+    pi`` there, else :class:`ValueError`)."""
+    C1, S1 = half_values(r1, p.nu1, z)
+    return phase_of(z, p.kappa, p.nu2, C1, S1, p.nu1 if r1 == "under" else None)
 
 
 def _ball(z):

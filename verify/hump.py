@@ -1329,9 +1329,19 @@ def newton_maximiser(dD, d2D, t, steps: int, rel, tiny=0):
     return t
 
 
-def phase_of(z, kappa, nu2, C1, S1):
+def phase_of(z, kappa, nu2, C1, S1, nu1=None):
     """The trace form's phase ``Phi = nu2 zeta + atan2(kappa S1, 2 nu2 C1)`` (half 2
-    under-damped) from half 1's functions ``C1``, ``S1`` at ``zeta = z`` (balls or jets)."""
+    under-damped) from half 1's functions ``C1``, ``S1`` at ``zeta = z`` (balls or jets).
+
+    ``atan2`` gives the continuous phase (``0`` at ``zeta = 0``, increasing wherever ``Phi``
+    exceeds ``pi/2``, :mod:`verify.solve`) only while the point ``(2 nu2 C1, kappa S1)`` has not
+    crossed the negative real axis.  With half 1 critically or over-damped ``C1 > 0``: never.
+    With half 1 under-damped (``C1 = cos(nu1 zeta)``, ``S1 = sin(nu1 zeta)/nu1``, ``kappa > 0``)
+    it crosses at ``nu1 zeta = pi``, where ``atan2`` falls by ``2 pi`` and the orders would be
+    miscounted by two: ``nu1`` (a ball, given for an under-damped half 1) must then have ``nu1
+    zeta < pi``, else :class:`ValueError` (not decided)."""
+    if nu1 is not None and not bool(nu1 * z < arb.pi()):
+        raise ValueError("half 1 under-damped past nu1 zeta = pi: the phase's atan2 has wrapped")
     return nu2 * z + _atan2(kappa * S1, 2 * nu2 * C1)
 
 
@@ -1355,7 +1365,9 @@ def trace_phase(regimes, P, z, m_box=None, m=None, Q=None, system=PAPER) -> arb:
     def phase(p):
         C1 = win[0](z, 1, p.kappa, p.nu1, p.nu2)
         S1 = win[1](z, 1, p.kappa, p.nu1, p.nu2)
-        return phase_of(z, p.kappa, p.nu2, C1, S1)
+        # (over a range the jets give only the slope in m: the value is the middle's, checked)
+        nu1 = p.nu1 if r1 == "under" and not isinstance(p.nu1, Jet) else None
+        return phase_of(z, p.kappa, p.nu2, C1, S1, nu1)
 
     if m_box is None:
         return phase(P())
