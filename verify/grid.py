@@ -109,6 +109,7 @@ from .params import (
     normal_params,
     trace_params,
 )
+from .system_params import trace_atoms
 
 __all__ = [
     "boundary_grid",
@@ -2042,7 +2043,9 @@ def _double_grid(orders, dep: _Depths, cols, Qx, damping):
         return out, doubt
     Qexact = Fraction(Qx) if not isinstance(Qx, Fraction) else Qx
     h1, h2 = _halves(dep, cols, Qexact)
-    u1 = (4 * float(Qexact) ** 2 - 1 - ms) / (1 + ms)
+    # (Omega1/gamma)^2, the derived trace form's u1 (verify.params.trace_params): phase 1 near
+    # critical damping takes the trace form
+    u1 = trace_atoms(_paper_system(), ms, float(Qexact), _NP)[1]
     normal = (h1 == 1) & (u1 >= NEAR_CRITICAL**2)
     fr = (float(Qexact), "exact")
     if normal.all():  # (every depth: no subset to gather and put back)
