@@ -112,3 +112,40 @@ def test_range_ends_rounded_inwards():
     for a, b in e.interval_texts():
         assert lo <= Fraction(a) and Fraction(b) <= mid
     assert "0.999008178710937 < m < 0.999999046325684" in e.where(Fraction(999999, 10**6))
+
+
+def test_a_range_narrower_than_the_digits_prints_in_order():
+    """Ranges next to m = 1 between gaps (e.g. torsion at D = 1/50, whose closings crowd towards
+    m = 1) can be narrower than 15 digits resolve: rounded inwards at 15 digits the first would
+    print as ``1 < m < 0.999999999999999`` and the second as ``0.999999999999997 < m <
+    0.999999999999997``.  Each prints with as many more digits as it takes for its start to lie
+    below its end, still inside the proven range."""
+    from verify.existence import Existence
+
+    a1, b1 = 1 - Fraction(1, 2**51), 1 - Fraction(1, 2**52)  # 1 - 4.4e-16 .. 1 - 2.2e-16
+    a2, b2 = 1 - Fraction(3, 2**50), 1 - Fraction(5, 2**51)  # both print 0.999999999999997
+    e = Existence(
+        1,
+        Fraction(7),
+        "exact",
+        15,
+        (),
+        False,
+        undecided=((Fraction(1, 2), a2), (b2, a1), (b1, Fraction(1))),
+        segments=(
+            (Fraction(0), Fraction(1, 2), -1),
+            (Fraction(1, 2), a2, 0),
+            (a2, b2, 1),
+            (b2, a1, 0),
+            (a1, b1, 1),
+            (b1, Fraction(1), 0),
+        ),
+    )
+    texts = e.interval_texts()
+    assert len(texts) == 2
+    for (a, b), (lo, hi) in zip(texts, ((a2, b2), (a1, b1)), strict=True):
+        assert lo <= Fraction(a) < Fraction(b) <= hi, (a, b)
+    assert texts[0] == ["0.9999999999999974", "0.9999999999999977"]
+    assert all(len(t.replace("0.", "", 1)) <= 17 for pair in texts for t in pair)
+    for a, b in e.interval_texts():
+        assert f"{a} < m < {b}" in str(e)

@@ -135,7 +135,7 @@ class Existence:
             return e.value
         return mpmath.mpf(1) if e == 1 else _mpf(e)
 
-    def _text(self, e, *, up: bool) -> str:
+    def _text(self, e, *, up: bool, digits: int | None = None) -> str:
         """The end ``e`` of a range: a threshold's proven digits, else the exact rational rounded
         towards +inf (``up``) or -inf, so that a printed range where the interval exists lies
         inside the proven one (its start rounded up, its end down) and a printed undecided range
@@ -144,7 +144,19 @@ class Existence:
             return e.text()
         if e == 1:
             return "1"
-        return _directed_text(e, self.digits, up=up)
+        return _directed_text(e, self.digits if digits is None else digits, up=up)
+
+    def _inner(self, a, b) -> tuple[str, str]:
+        """The texts of a proven range ``a < m < b`` rounded inwards (:meth:`_text`), with as many
+        more digits than :attr:`digits` as it takes for the start to print below the end: a range
+        narrower than the resolution (next to ``m = 1``, between two gaps) would else print empty
+        or reversed (``1 < m < 0.999999999999999``)."""
+        for extra in range(0, _MORE_DIGITS + 1):
+            d = self.digits + extra
+            ta, tb = self._text(a, up=True, digits=d), self._text(b, up=False, digits=d)
+            if isinstance(a, Threshold) or isinstance(b, Threshold) or Fraction(ta) < Fraction(tb):
+                break
+        return ta, tb
 
     @property
     def intervals(self) -> list[tuple]:
@@ -152,7 +164,7 @@ class Existence:
         return [(self._value(a), self._value(b)) for a, b in self._ranges()]
 
     def interval_texts(self) -> list[list[str]]:
-        return [[self._text(a, up=True), self._text(b, up=False)] for a, b in self._ranges()]
+        return [list(self._inner(a, b)) for a, b in self._ranges()]
 
     def undecided_texts(self) -> list[list[str]]:
         return [[self._text(lo, up=False), self._text(hi, up=True)] for lo, hi in self.undecided]
@@ -197,7 +209,7 @@ class Existence:
                 (True, True): below + above,  # in a gap
             }[(bool(before), bool(after))]
             if named:
-                a, b = self._text(lo, up=True), self._text(hi, up=False)
+                a, b = self._inner(lo, hi)
                 und = ", ".join(
                     f"{self._text(u[0], up=False)} < m < {self._text(u[1], up=True)}" for u in named
                 )
@@ -521,6 +533,11 @@ def _refine(n, Q, damping, m_neg: float, m_pos: float, digits: int) -> Threshold
 def _enough(value, width: Fraction, digits: int) -> bool:
     with mpmath.workdps(30):
         return _mpf(width) <= abs(value) * mpmath.mpf(10) ** (-digits)
+
+
+#: the most digits :meth:`Existence._inner` adds to keep a narrow range's ends in order (a range
+#: ends at ``1 - 2^-K`` at the least, ``K`` a few bits past the resolution)
+_MORE_DIGITS = 40
 
 
 def _directed_text(x: Fraction, digits: int, *, up: bool) -> str:
