@@ -149,3 +149,37 @@ def test_a_range_narrower_than_the_digits_prints_in_order():
     assert all(len(t.replace("0.", "", 1)) <= 17 for pair in texts for t in pair)
     for a, b in e.interval_texts():
         assert f"{a} < m < {b}" in str(e)
+
+
+def test_a_narrow_range_from_a_threshold_prints_in_order():
+    """A range from a proven threshold to an undecided range (or the other way) narrower than
+    15 digits resolve: the threshold prints its proven digits and the rational end takes more
+    digits until the start prints below the end (was ``0.999999999999999 < m <
+    0.999999999999999`` and ``0.500000000000000 < m < 0.5``), still rounded inwards."""
+    import mpmath
+
+    from verify.existence import Existence, Threshold, _mpf
+
+    u, half = Fraction(1, 2**53), Fraction(1, 2)
+    cases = (
+        (1 - 6 * u - Fraction(1, 2**60), 1 - 6 * u, 1 - 5 * u),
+        (half - Fraction(1, 10**18), half, half + Fraction(3, 10**17)),
+    )
+    with mpmath.workprec(200):
+        for tlo, thi, b in cases:
+            t = Threshold(_mpf((tlo + thi) / 2), (tlo, thi), True, 15)
+            e = Existence(
+                1,
+                Fraction(7),
+                "exact",
+                15,
+                (t,),
+                False,
+                undecided=((b, Fraction(1)),),
+                segments=((Fraction(0), tlo, -1), (tlo, thi, 0), (thi, b, 1), (b, Fraction(1), 0)),
+            )
+            ((ta, tb),) = e.interval_texts()
+            assert ta == t.text()
+            assert Fraction(ta) < Fraction(tb) <= b, (ta, tb)
+            assert f"{ta} < m < {tb}" in str(e)
+            assert e.as_json()["intervals"] == [[ta, tb]]

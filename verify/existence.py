@@ -150,11 +150,17 @@ class Existence:
         """The texts of a proven range ``a < m < b`` rounded inwards (:meth:`_text`), with as many
         more digits than :attr:`digits` as it takes for the start to print below the end: a range
         narrower than the resolution (next to ``m = 1``, between two gaps) would else print empty
-        or reversed (``1 < m < 0.999999999999999``)."""
+        or reversed (``1 < m < 0.999999999999999``).  A threshold's end keeps its proven digits;
+        the other end, where it is a rational, takes the more digits."""
         for extra in range(0, _MORE_DIGITS + 1):
             d = self.digits + extra
             ta, tb = self._text(a, up=True, digits=d), self._text(b, up=False, digits=d)
-            if isinstance(a, Threshold) or isinstance(b, Threshold) or Fraction(ta) < Fraction(tb):
+            if isinstance(a, Threshold) and isinstance(b, Threshold):
+                break  # (neither text changes with the digits)
+            try:
+                if Fraction(ta) < Fraction(tb):
+                    break
+            except ValueError:  # pragma: no cover - every end prints as a decimal number
                 break
         return ta, tb
 
