@@ -51,6 +51,7 @@ from .inputs import (
     as_system,
 )
 from .params import NEAR_CRITICAL, exact_fraction, form_for, normal_params, trace_params
+from .system_params import canonical, trace_atoms
 
 __all__ = [
     "Existence",
@@ -667,25 +668,20 @@ def _decide(
     Q: Fraction,
     damping: str,
     bits: int,
-    fl=None,
-    system: System = PAPER,
-    form=None,
+    fl,
+    system: System,
+    form,
 ) -> int:
     """``+1``: the interval exists at every depth of ``[lo, hi]`` (a point ``T`` with ``D > 0`` in
     the order's window, the same for all of them); ``-1``: at none (``D < 0`` on the whole window
     for all of them); ``0``: not decided on this range.  ``D`` is evaluated with the parameters as
     balls that hold every depth of the range (:func:`verify.solve.depth_ball`); ``fl`` is the
-    float stage at the middle (:func:`_float_stages`), only a starting point.  ``form``: the
-    equations of the whole range, where known
-    already (:func:`_uniform_form` of a range holding it)."""
+    float stage at the middle (:func:`_float_stages`, or ``None``), only a starting point.
+    ``form``: the equations of the whole range (:func:`_uniform_form` of the first range holding
+    it)."""
     from .hump import hump_box, hump_trace
 
     mid = (lo + hi) / 2
-    if form is None:
-        kinds = {_form_of(x, Q, damping, system) for x in (lo, mid, hi)}
-        if len(kinds) != 1:
-            return 0  # a change of equations inside: split there
-        form = kinds.pop()
     kind, regimes = form
     if kind != "normal":
         touching = _critical_end(lo, hi, Q, damping, regimes, system)
@@ -972,8 +968,8 @@ def _segments(n: int, Q: Fraction, damping: str, digits: int, budget: int, syste
     top = 1 - Fraction(1, 2 ** (bits + 2))
     cuts = _breakpoints(n, Q, damping, top, system)
     pending = [(cuts[j], cuts[j + 1]) for j in range(len(cuts) - 1)]
-    # every depth where the equations change is a cut, so a first range whose ends and middle
-    # share the equations has them throughout; its sub-ranges inherit them
+    # every depth where the equations change is a cut, so a first range has the equations of
+    # its inner depths throughout (:func:`_uniform_form`); its sub-ranges inherit them
     forms = {b: _uniform_form(b, Q, damping, system) for b in pending}
     done: list[tuple] = []
     count = 0
@@ -1041,9 +1037,7 @@ def _near_critical_normal(lo, hi, Q, damping: str, system: System, form) -> bool
     :func:`verify.system_params.trace_atoms`, before any scaling by the duty).  The trace form
     holds there as well (both halves under-damped at every depth of the range: the normal form is
     chosen only where they are)."""
-    from .system_params import canonical, trace_atoms
-
-    if form is None or form[0] != "normal" or damping != "exact" or Q is None:
+    if form[0] != "normal" or damping != "exact" or Q is None:
         return False
     u1 = trace_atoms(canonical(system), (lo + hi) / 2, Q, backend("math"))[1]
     return u1 < _NORMAL_NEAR**2
