@@ -1,11 +1,15 @@
-"""Packaging beyond what pyproject.toml declares: the wheel carries the benchmark results the
-report reads (``benchmarks/results.json``, written by ``paramres bench``) as
-``paramres/data/bench-results.json``."""
+"""Packaging beyond what pyproject.toml declares:
+
+- the wheel carries the benchmark results the report reads (``benchmarks/results.json``, written
+  by ``paramres bench``) as ``paramres/data/bench-results.json``;
+- ``verify._digits``, the digits of a table's rows in C (``verify/_digits.c``), is built where a C
+  compiler and Python's headers are at hand.  It is optional: without them the package installs
+  all the same and prints the same digits from Python, only slower."""
 
 import shutil
 from pathlib import Path
 
-from setuptools import setup
+from setuptools import Extension, setup
 from setuptools.command.build_py import build_py
 
 SOURCE = Path(__file__).resolve().parent / "benchmarks" / "results.json"
@@ -20,4 +24,7 @@ class BuildWithData(build_py):
             shutil.copyfile(SOURCE, target)
 
 
-setup(cmdclass={"build_py": BuildWithData})
+setup(
+    cmdclass={"build_py": BuildWithData},
+    ext_modules=[Extension("verify._digits", ["verify/_digits.c"], optional=True)],
+)

@@ -196,12 +196,20 @@ def _fmt_time(s: float) -> str:
     return f"{s / 1e-9:.3g} ns"
 
 
+def _digits_note(m: dict) -> str:
+    """How the tables' digits were written in the run: ``verify._digits`` compiled, or the Python
+    loop alone (nothing for a run recorded before this was noted)."""
+    if "compiled digits" not in m:
+        return ""
+    return ", compiled digits" if m["compiled digits"] else ", digits in Python (not compiled)"
+
+
 def render(doc: dict) -> str:
     """The table of ratios, one line per scene."""
     m = doc["machine"]
     head = (
         f"paramres floors{' --quick' if doc['quick'] else ''}: {doc['date']}, {m['cpu']}, "
-        f"{m['cores']} cores (load {m['load']}), Python {m['python']}; "
+        f"{m['cores']} cores (load {m['load']}), Python {m['python']}{_digits_note(m)}; "
         f"{doc['seconds']:.0f} s\n"
         "ours and the floor timed alternately; medians per call (CPU time unless marked wall)\n"
     )
@@ -233,7 +241,7 @@ def markdown(doc: dict) -> str:
     m = doc["machine"]
     versions = ", ".join(
         f"{k} {m[k]}" for k in ("python", "numpy", "mpmath", "python-flint") if m.get(k)
-    )
+    ) + _digits_note(m)
     head = (
         f"Measured {doc['date']} (`paramres bench --floors{' --quick' if doc['quick'] else ''}`, "
         f"{doc['seconds']:.0f} s) on {m['cpu']}, {m['cores']} cores, load {m['load']}; "

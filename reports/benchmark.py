@@ -495,6 +495,8 @@ def machine() -> dict:
         pass
     import flint
 
+    from verify.result import _compiled_row
+
     return {
         "cpu": cpu,
         "cores": os.cpu_count(),
@@ -503,6 +505,8 @@ def machine() -> dict:
         "numpy": np.__version__,
         "mpmath": mpmath.__version__,
         "python-flint": getattr(flint, "__version__", "?"),
+        # the digits of a table's rows in C (verify._digits), or the Python loop alone
+        "compiled digits": _compiled_row is not None,
     }
 
 

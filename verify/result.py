@@ -364,6 +364,11 @@ class _FromBalls(Boundary):
 _COMPARED = tuple(f.name for f in fields(Boundary) if f.compare)
 
 
+try:  # the common case of _row_of_balls, compiled where the package was built with a C compiler
+    from ._digits import row as _compiled_row
+except ImportError:  # pragma: no cover - a build without one: the Python loop alone
+    _compiled_row = None
+
 #: a radius strictly between these is a double exactly (30-bit mantissas, normal doubles) and
 #: not an integer (``as_integer_ratio`` gives the odd mantissa over a power of two)
 _TINY, _HUGE = 2.0**-990, 1.0
@@ -389,6 +394,11 @@ def _row_of_balls(balls, dps: int) -> tuple[tuple, str | None] | None:
     scales = _ROW_SCALES.get(dps)
     if scales is None:
         scales = _ROW_SCALES[dps] = {}
+    if _compiled_row is not None:  # the same steps, compiled (:mod:`verify._digits`)
+        got = _compiled_row(balls, scales, _TEN_TUPLE, _ball_raw, dps)
+        if got is not None:
+            texts, bound = got
+            return texts, (_exact_bound(balls, texts) if bound is None else bound)
     texts = []
     most = wide = 0.0  # the largest error lies within 4.2 wide below most and 5.2 wide above
     exact = False  # the bound in integers
@@ -437,30 +447,52 @@ def _row_of_balls(balls, dps: int) -> tuple[tuple, str | None] | None:
             if man < 0:
                 text = "-" + text
         else:  # fewer digits, or no kept scale: :func:`_proven_raw` (its own test first)
-            f = float(x.rad())
-            if not (man and _TINY < f < _HUGE):
+            got = _ball_raw(x, man, exp, dps)
+            if got is None:
                 return None
-            rm, den = f.as_integer_ratio()  # exact: a radius has a 30-bit mantissa
-            text, dk = _proven_raw(
-                (man < 0, mag, exp, bc), (0, rm, 1 - den.bit_length(), rm.bit_length()), dps
-            )
-            if dk is None:  # huge exponents: mpmath's own path
-                return None
-            if dk[0] or bc > 1000:  # digits printed: their error cancels in doubles
+            text, e = got
+            if e is None:
                 exact = True
-            else:  # "0": the error is |x| + r exactly, in doubles to a relative 1e-15
-                e = _ldexp(float(mag), exp) + f
-                if e > most:
-                    most = e
+            elif e > most:
+                most = e
         texts.append(text)
-    # the largest error lies between most - 4.2 wide and most + 5.2 wide; the first is then at
-    # least most / 2 and off by half a unit in its last place at most (within _bound_between's
-    # margin)
+    texts = tuple(texts)
+    return texts, _row_bound(balls, texts, most, wide, exact)
+
+
+def _ball_raw(x, man: int, exp: int, dps: int) -> tuple[str, float | None] | None:
+    """A number of :func:`_row_of_balls` whose radius does not support every digit asked for
+    (or has no kept scale), printed by :func:`_proven_raw` (its own test first): its text and
+    its error ``|printed - x| + r`` in doubles, or ``None`` for the error where the digits
+    printed need the bound in integers; ``None`` (the general path) for a zero midpoint, a radius
+    outside ``(_TINY, _HUGE)`` or huge exponents.  ``man 2**exp`` is the midpoint."""
+    f = float(x.rad())
+    if not (man and _TINY < f < _HUGE):
+        return None
+    mag = -man if man < 0 else man
+    bc = mag.bit_length()
+    rm, den = f.as_integer_ratio()  # exact: a radius has a 30-bit mantissa
+    text, dk = _proven_raw(
+        (man < 0, mag, exp, bc), (0, rm, 1 - den.bit_length(), rm.bit_length()), dps
+    )
+    if dk is None:  # huge exponents: mpmath's own path
+        return None
+    if dk[0] or bc > 1000:  # digits printed: their error cancels in doubles
+        return text, None
+    # "0": the error is |x| + r exactly, in doubles to a relative 1e-15
+    return text, _ldexp(float(mag), exp) + f
+
+
+def _row_bound(balls, texts: tuple, most: float, wide: float, exact: bool) -> str:
+    """The bound of a row of :func:`_row_of_balls`: the largest error lies between ``most - 4.2
+    wide`` and ``most + 5.2 wide``; the first is then at least ``most / 2`` and off by half a
+    unit in its last place at most (within :func:`_bound_between`'s margin).  In integers
+    (:func:`_exact_bound`) where that does not decide it, or where ``exact`` asks for it."""
     if exact or most < 8.4 * wide:
         bound = None
     else:
         bound = _bound_between(most - 4.2 * wide, most + 5.2 * wide)
-    return tuple(texts), (_exact_bound(balls, texts) if bound is None else bound)
+    return _exact_bound(balls, texts) if bound is None else bound
 
 
 def _bound_between(least: float, most: float) -> str | None:
@@ -493,6 +525,8 @@ def _bound_between(least: float, most: float) -> str | None:
 
 #: ``10.0**j`` correctly rounded, for ``|j| <= 300``
 _TEN_DOUBLES = {j: (float(10**j) if j >= 0 else 1 / 10**-j) for j in range(-300, 301)}
+#: :data:`_TEN_DOUBLES` as a tuple, ``10.0**j`` at ``j + 300`` (:mod:`verify._digits`)
+_TEN_TUPLE = tuple(_TEN_DOUBLES[j] for j in range(-300, 301))
 #: the head of :func:`_bound_between`'s text by ``c``, the two digits (``"4.7e"`` for 47)
 _TWO_DIGITS = {c: f"{c // 10}.{c % 10}e" for c in range(11, 100)}
 _floor, _ceil, _log10, _ldexp = math.floor, math.ceil, math.log10, math.ldexp
