@@ -1,8 +1,9 @@
 /* The digits of a row of balls, compiled: verify.result._row_of_balls's loop.
  *
  * row(balls, scales, tens, general, dps) writes a row of a table from its arb balls, as the
- * Python loop of verify.result._row_of_balls does, step by step and with the same integer
- * operations (CPython's own integers):
+ * Python loop of verify.result._row_of_balls does, step by step: the same integer operations
+ * (CPython's own integers) up to the truncated digits n, whose division by the cut (a power of
+ * ten) and rounding are read off n's decimal text:
  *   - balls: the row's balls;
  *   - scales: verify.result._ROW_SCALES[dps], the scales of the digits by exponent plus bit
  *     count (tuples of verify.result._digit_scale);
@@ -12,8 +13,10 @@
  *   - dps: the digits asked for.
  * It returns (texts, bound): the texts, and the bound's text where doubles decide it (else None:
  * the bound in integers, verify.result._exact_bound).  It returns None where the Python loop
- * must write the row: a scale not kept yet (the Python loop keeps it), or a ball the general
- * steps leave to mpmath.  Nothing is kept between calls but the methods of the balls' type.
+ * must write the row: a scale not kept yet (the Python loop keeps it), a ball the general
+ * steps leave to mpmath, or a cut that is not the power of ten n's digits call for (none is
+ * met: the tests compare the two loops).  Nothing is kept between calls but the methods of the
+ * balls' type.
  *
  * Each step names the line of _row_of_balls it stands for.
  */
@@ -22,7 +25,12 @@
 #include <math.h>
 
 static PyObject *s_mid, *s_man_exp, *s_rel_accuracy_bits, *s_rad;
-static PyObject *one;
+/* the cut of a scale is 10**k with k from 5 to 7 (verify.result._digit_scale); up to 18 here,
+ * as a Python int and as an integer of 64 bits; at most 1400 digits (_digit_scale's reach) */
+#define MAX_CUT 18
+#define MAX_DIGITS 1400
+static PyObject *tens_to[MAX_CUT + 1];
+static unsigned long long pow10_u64[MAX_CUT + 1];
 
 /* the methods of the balls' type, looked up once per type (a row's balls share one) */
 static PyTypeObject *ball_type;
@@ -76,15 +84,12 @@ as_ll(PyObject *o, long long *out)
     return 0;
 }
 
-/* f"{digits[:split]}.{digits[split:]}{piece}" (split > 0) or piece + digits (split == 0), after
- * a "-" for a negative number */
+/* f"{D[:split]}.{D[split:]}{piece}" (split > 0) or piece + D (split == 0), after a "-" for a
+ * negative number; D the nd digits of str(D) */
 static PyObject *
-write_text(PyObject *digits, long long split, PyObject *piece, int negative)
+write_text(const char *d, Py_ssize_t nd, long long split, PyObject *piece, int negative)
 {
-    Py_ssize_t nd, np;
-    const char *d = PyUnicode_AsUTF8AndSize(digits, &nd);
-    if (d == NULL)
-        return NULL;
+    Py_ssize_t np;
     const char *p = PyUnicode_AsUTF8AndSize(piece, &np);
     if (p == NULL)
         return NULL;
@@ -154,12 +159,12 @@ general_ball(PyObject *general, PyObject *x, PyObject *man, long long exp, PyObj
 
 /* one ball of the row: its text, with most and wide updated; or TO_PYTHON, or FAILED */
 static int
-one_ball(PyObject *x, PyObject *scales, PyObject *general, PyObject *dps, PyObject **text,
-         double *most, double *wide, int *exact)
+one_ball(PyObject *x, PyObject *scales, PyObject *general, PyObject *dps_obj, long long dps,
+         PyObject **text, double *most, double *wide, int *exact)
 {
     int status = FAILED;
     PyObject *mid = NULL, *me = NULL, *man = NULL, *mag = NULL, *key = NULL, *count = NULL;
-    PyObject *t = NULL, *t2 = NULL, *n = NULL, *dm = NULL, *D = NULL, *rem = NULL;
+    PyObject *t = NULL, *t2 = NULL, *n = NULL;
     PyObject *digits = NULL;
     long long exp, acc, bc;
     *text = NULL;
@@ -228,15 +233,14 @@ one_ball(PyObject *x, PyObject *scales, PyObject *general, PyObject *dps, PyObje
     if (as_ll(PyTuple_GET_ITEM(sc, 0), &usable) < 0 || as_ll(PyTuple_GET_ITEM(sc, 1), &tiny) < 0)
         goto done;
     if (!(usable <= acc && acc < tiny)) {  /* else: the general steps (_ball_raw) */
-        status = general_ball(general, x, man, exp, dps, text, most, exact);
+        status = general_ball(general, x, man, exp, dps_obj, text, most, exact);
         goto done;
     }
     if (as_ll(PyTuple_GET_ITEM(sc, 2), &unit) < 0 || as_ll(PyTuple_GET_ITEM(sc, 3), &shift) < 0
         || as_ll(PyTuple_GET_ITEM(sc, 5), &fix) < 0)
         goto done;
     PyObject *p5 = PyTuple_GET_ITEM(sc, 4), *thr = PyTuple_GET_ITEM(sc, 6);
-    PyObject *tens = PyTuple_GET_ITEM(sc, 8), *cut = PyTuple_GET_ITEM(sc, 9);
-    PyObject *half = PyTuple_GET_ITEM(sc, 10), *splito = PyTuple_GET_ITEM(sc, 11);
+    PyObject *cut = PyTuple_GET_ITEM(sc, 9), *splito = PyTuple_GET_ITEM(sc, 11);
     PyObject *piece = PyTuple_GET_ITEM(sc, 12), *nines = PyTuple_GET_ITEM(sc, 13);
     PyObject *fewer = PyTuple_GET_ITEM(sc, 14);
     double u = PyFloat_AsDouble(PyTuple_GET_ITEM(sc, 7));
@@ -258,7 +262,8 @@ one_ball(PyObject *x, PyObject *scales, PyObject *general, PyObject *dps, PyObje
     n = PyNumber_Rshift(t2, count);
     if (n == NULL)
         goto done;
-    /* if n < thr: cut, half, split, piece, nines = fewer (one digit fewer) */
+    /* if n < thr: cut, half, split, piece, nines = fewer (one digit fewer; half is read off the
+     * digits below) */
     int fewer_digits = PyObject_RichCompareBool(n, thr, Py_LT);
     if (fewer_digits < 0)
         goto done;
@@ -268,7 +273,6 @@ one_ball(PyObject *x, PyObject *scales, PyObject *general, PyObject *dps, PyObje
             goto done;
         }
         cut = PyTuple_GET_ITEM(fewer, 0);
-        half = PyTuple_GET_ITEM(fewer, 1);
         splito = PyTuple_GET_ITEM(fewer, 2);
         piece = PyTuple_GET_ITEM(fewer, 3);
         nines = PyTuple_GET_ITEM(fewer, 4);
@@ -279,31 +283,46 @@ one_ball(PyObject *x, PyObject *scales, PyObject *general, PyObject *dps, PyObje
         PyErr_SetString(PyExc_TypeError, "a scale's pieces are texts");
         goto done;
     }
-    /* D, rem = divmod(n, cut) */
-    dm = PyNumber_Divmod(n, cut);
-    if (dm == NULL)
+    /* D, rem = divmod(n, cut), read off n's decimal digits: cut is 10**k with k = len - dps (n
+     * has the scale's count of digits, c or c - 1), D the first dps digits and rem the other k;
+     * anything else is the Python loop's */
+    digits = PyObject_Str(n);
+    if (digits == NULL)
         goto done;
-    D = PyTuple_GET_ITEM(dm, 0);
-    rem = PyTuple_GET_ITEM(dm, 1);
-    Py_INCREF(D);
-    Py_INCREF(rem);
-    /* if rem >= half: D += 1; rem = cut - rem (round half up) */
-    int up = PyObject_RichCompareBool(rem, half, Py_GE);
-    if (up < 0)
+    Py_ssize_t len;
+    const char *s = PyUnicode_AsUTF8AndSize(digits, &len);
+    if (s == NULL)
         goto done;
-    if (up) {
-        Py_SETREF(D, PyNumber_Add(D, one));
-        if (D == NULL)
-            goto done;
-        Py_SETREF(rem, PyNumber_Subtract(cut, rem));
-        if (rem == NULL)
-            goto done;
+    long long k = (long long)len - dps;
+    if (k < 1 || k > MAX_CUT || dps < 1 || dps > MAX_DIGITS) {
+        status = TO_PYTHON;
+        goto done;
+    }
+    int is_cut = PyObject_RichCompareBool(cut, tens_to[k], Py_EQ);
+    if (is_cut <= 0) {
+        if (is_cut == 0)
+            status = TO_PYTHON;
+        goto done;
+    }
+    char D[MAX_DIGITS];
+    memcpy(D, s, (size_t)dps);
+    unsigned long long rem = 0;
+    for (Py_ssize_t i = dps; i < len; i++)
+        rem = 10 * rem + (unsigned long long)(s[i] - '0');
+    /* if rem >= half: D += 1; rem = cut - rem (round half up: the first digit cut is 5 or more) */
+    int carried = 0;
+    if (s[dps] >= '5') {
+        rem = pow10_u64[k] - rem;
+        Py_ssize_t i = dps - 1;
+        while (i >= 0 && D[i] == '9')
+            D[i--] = '0';
+        if (i >= 0)
+            D[i] += 1;
+        else  /* if D == tens: a run of nines carried into 10**dps */
+            carried = 1;
     }
     /* e = rem * u; if acc < unit: e += float(x.rad()) */
-    double e = PyLong_AsDouble(rem);
-    if (e == -1.0 && PyErr_Occurred())
-        goto done;
-    e *= u;
+    double e = (double)(long long)rem * u;
     if (acc < unit) {
         Py_CLEAR(t);
         t = call0(m_rad, x, s_rad);
@@ -319,10 +338,7 @@ one_ball(PyObject *x, PyObject *scales, PyObject *general, PyObject *dps, PyObje
         *most = e;
     if (u > *wide)
         *wide = u;
-    /* if D == tens: text = nines; else the digits, the point and the piece; the sign */
-    int carried = PyObject_RichCompareBool(D, tens, Py_EQ);
-    if (carried < 0)
-        goto done;
+    /* the text: nines where carried, else the digits, the point and the piece; the sign */
     if (carried) {
         if (negative) {
             *text = PyUnicode_FromFormat("-%U", nines);
@@ -333,10 +349,7 @@ one_ball(PyObject *x, PyObject *scales, PyObject *general, PyObject *dps, PyObje
         }
     }
     else {
-        digits = PyObject_Str(D);
-        if (digits == NULL)
-            goto done;
-        *text = write_text(digits, split, piece, negative);
+        *text = write_text(D, (Py_ssize_t)dps, split, piece, negative);
     }
     if (*text != NULL)
         status = WRITTEN;
@@ -350,9 +363,6 @@ done:
     Py_XDECREF(t);
     Py_XDECREF(t2);
     Py_XDECREF(n);
-    Py_XDECREF(dm);
-    Py_XDECREF(D);
-    Py_XDECREF(rem);
     Py_XDECREF(digits);
     return status;
 }
@@ -397,6 +407,9 @@ row(PyObject *self, PyObject *const *args, Py_ssize_t nargs)
         return NULL;
     }
     PyObject *scales = args[1], *tens = args[2], *general = args[3], *dps = args[4];
+    long long dps_n = PyLong_AsLongLong(dps);
+    if (dps_n == -1 && PyErr_Occurred())
+        return NULL;
     if (!PyDict_Check(scales) || !PyTuple_Check(tens) || PyTuple_GET_SIZE(tens) != 601) {
         PyErr_SetString(PyExc_TypeError, "row(): scales a dict, tens a tuple of 601 floats");
         return NULL;
@@ -422,7 +435,7 @@ row(PyObject *self, PyObject *const *args, Py_ssize_t nargs)
     int exact = 0;
     for (Py_ssize_t i = 0; i < size; i++) {
         PyObject *text;
-        int status = one_ball(items[i], scales, general, dps, &text, &most, &wide, &exact);
+        int status = one_ball(items[i], scales, general, dps, dps_n, &text, &most, &wide, &exact);
         if (status != WRITTEN) {
             Py_DECREF(texts);
             Py_DECREF(seq);
@@ -471,8 +484,15 @@ PyInit__digits(void)
     s_man_exp = PyUnicode_InternFromString("man_exp");
     s_rel_accuracy_bits = PyUnicode_InternFromString("rel_accuracy_bits");
     s_rad = PyUnicode_InternFromString("rad");
-    one = PyLong_FromLong(1);
-    if (!s_mid || !s_man_exp || !s_rel_accuracy_bits || !s_rad || !one)
+    if (!s_mid || !s_man_exp || !s_rel_accuracy_bits || !s_rad)
         return NULL;
+    unsigned long long p = 1;
+    for (int k = 0; k <= MAX_CUT; k++) {
+        pow10_u64[k] = p;
+        tens_to[k] = PyLong_FromUnsignedLongLong(p);
+        if (tens_to[k] == NULL)
+            return NULL;
+        p *= 10;
+    }
     return PyModule_Create(&module);
 }
