@@ -183,3 +183,38 @@ def test_a_narrow_range_from_a_threshold_prints_in_order():
             assert Fraction(ta) < Fraction(tb) <= b, (ta, tb)
             assert f"{ta} < m < {tb}" in str(e)
             assert e.as_json()["intervals"] == [[ta, tb]]
+
+
+def test_an_undecided_range_prints_within_the_ranges_beside_it():
+    """Undecided ranges between the narrow proven ranges next to m = 1 (the case above): rounded
+    outwards at 15 digits, the one between them would print as ``0.999999999999997 < m < 1``, over
+    both proven ranges beside it.  Each undecided range prints with as many more digits as keep its
+    rounding within the ranges beside it, still holding the undecided range; a wide one keeps 15."""
+    from verify.existence import Existence
+
+    a1, b1 = 1 - Fraction(1, 2**51), 1 - Fraction(1, 2**52)
+    a2, b2 = 1 - Fraction(3, 2**50), 1 - Fraction(5, 2**51)
+    segments = (
+        (Fraction(0), Fraction(1, 2), -1),
+        (Fraction(1, 2), a2, 0),
+        (a2, b2, 1),
+        (b2, a1, 0),
+        (a1, b1, 1),
+        (b1, Fraction(1), 0),
+    )
+    undecided = ((Fraction(1, 2), a2), (b2, a1), (b1, Fraction(1)))
+    e = Existence(1, Fraction(7), "exact", 15, (), False, undecided=undecided, segments=segments)
+    texts = e.undecided_texts()
+    assert texts == [
+        ["0.5", "0.9999999999999974"],
+        ["0.9999999999999977", "0.9999999999999996"],
+        ["0.9999999999999997", "1"],
+    ]
+    for (a, b), (lo, hi) in zip(texts, undecided, strict=True):
+        assert Fraction(a) <= lo and hi <= Fraction(b)  # the undecided range held
+    # none covers a proven range printed beside it
+    for (a, b), (pa, pb) in zip(texts[1:], e.interval_texts(), strict=False):
+        assert not (Fraction(a) <= Fraction(pa) and Fraction(pb) <= Fraction(b))
+    assert "0.9999999999999977 < m < 0.9999999999999996" in str(e)
+    where = e.where(1 - Fraction(1, 2**50))
+    assert "0.9999999999999977 < m < 0.9999999999999996" in where

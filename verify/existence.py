@@ -173,8 +173,31 @@ class Existence:
     def interval_texts(self) -> list[list[str]]:
         return [list(self._inner(a, b)) for a, b in self._ranges()]
 
+    def _outer(self, lo: Fraction, hi: Fraction) -> tuple[str, str]:
+        """The texts of an undecided range ``lo < m < hi`` rounded outwards (:meth:`_text`),
+        with as many more digits than :attr:`digits` as it takes for the rounding to stay
+        within the ranges beside it (their far ends): next to ``m = 1``, where the proven ranges
+        between gaps are narrower than the resolution, an undecided range rounded at the
+        resolution would else print over a whole proven range beside it (``0.999999999999997 <
+        m < 1`` over ``0.9999999999999974 < m < 0.9999999999999977``)."""
+        segs = self.segments
+        j = next((i for i, s in enumerate(segs) if s[0] == lo and s[1] == hi), None)
+        below = segs[j - 1][0] if j is not None and j > 0 else None
+        above = segs[j + 1][1] if j is not None and j + 1 < len(segs) else None
+        for extra in range(0, _MORE_DIGITS + 1):
+            d = self.digits + extra
+            ta, tb = self._text(lo, up=False, digits=d), self._text(hi, up=True, digits=d)
+            try:
+                if (below is None or Fraction(ta) > below) and (
+                    above is None or Fraction(tb) < above
+                ):
+                    break
+            except ValueError:  # pragma: no cover - every end prints as a decimal number
+                break
+        return ta, tb
+
     def undecided_texts(self) -> list[list[str]]:
-        return [[self._text(lo, up=False), self._text(hi, up=True)] for lo, hi in self.undecided]
+        return [list(self._outer(lo, hi)) for lo, hi in self.undecided]
 
     def where(self, m: Fraction) -> str:
         """Why the interval does or does not exist at the exact depth ``m``: ``"exists"``,
@@ -188,7 +211,7 @@ class Existence:
                 return "exists"
             ranges = self._ranges()
             if sign == 0 and (lo, hi) in self.undecided:
-                a, b = self._text(lo, up=False), self._text(hi, up=True)
+                a, b = self._outer(lo, hi)
                 return f"m lies in the range {a} < m < {b} where existence could not be decided"
             if sign == 0:
                 return (
