@@ -10,6 +10,7 @@ import shutil
 from pathlib import Path
 
 from setuptools import Extension, setup
+from setuptools.command.build_ext import build_ext
 from setuptools.command.build_py import build_py
 
 SOURCE = Path(__file__).resolve().parent / "benchmarks" / "results.json"
@@ -24,7 +25,19 @@ class BuildWithData(build_py):
             shutil.copyfile(SOURCE, target)
 
 
+class BuildExtension(build_ext):
+    """The compiled digits' doubles are those of the Python loop, operation for operation: no
+    multiply-add contracted into one rounding (gcc and clang contract by default on some
+    machines, such as aarch64)."""
+
+    def build_extensions(self):
+        if self.compiler.compiler_type == "unix":
+            for extension in self.extensions:
+                extension.extra_compile_args.append("-ffp-contract=off")
+        super().build_extensions()
+
+
 setup(
-    cmdclass={"build_py": BuildWithData},
+    cmdclass={"build_py": BuildWithData, "build_ext": BuildExtension},
     ext_modules=[Extension("verify._digits", ["verify/_digits.c"], optional=True)],
 )

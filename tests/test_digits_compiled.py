@@ -141,3 +141,24 @@ def test_the_compiled_row_refuses_what_it_is_not_given(compiled):
     with pytest.raises(AttributeError):
         compiled([1.5], scales, tens, result._ball_raw, 50)
     assert compiled([], scales, tens, result._ball_raw, 50) == ((), None)
+
+
+def test_binary_exponents_far_out_go_to_the_python_loop(compiled, monkeypatch):
+    """A ball whose binary exponent is beyond 2**60 either way (where the exponent plus the
+    mantissa's bits could overflow C's integers) is left to the Python loop, which prints the
+    row as it would without the compiled loop."""
+    import flint
+
+    near = flint.arb("0.5 +/- 1e-20")
+    result._row_of_balls([near], 15)
+    scales = dict(result._ROW_SCALES[15])
+    some_scale = next(iter(scales.values()))
+    for shift in (2**60 + 1, 2**62, 2**63 + 5, -(2**62), -(2**63) - 5):
+        far = flint.arb("3 +/- 1e-19") * flint.arb(2) ** shift
+        man, exp = (int(v) for v in far.mid().man_exp())
+        assert abs(exp) > 2**60
+        # a scale planted where the far ball's would be: only the limit keeps C from using it
+        scales[exp + man.bit_length()] = some_scale
+        assert compiled([near, far], scales, result._TEN_TUPLE, result._ball_raw, 15) is None
+        fast, slow = _both([near, far], 15, monkeypatch)
+        assert fast == slow, shift

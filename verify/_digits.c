@@ -29,6 +29,8 @@ static PyObject *s_mid, *s_man_exp, *s_rel_accuracy_bits, *s_rad;
  * as a Python int and as an integer of 64 bits; at most 1400 digits (_digit_scale's reach) */
 #define MAX_CUT 18
 #define MAX_DIGITS 1400
+/* a ball's binary exponent beyond this goes to the Python loop (exp + bc stays in a long long) */
+#define EXP_LIMIT (1LL << 60)
 static PyObject *tens_to[MAX_CUT + 1];
 static unsigned long long pow10_u64[MAX_CUT + 1];
 
@@ -188,7 +190,8 @@ one_ball(PyObject *x, PyObject *scales, PyObject *general, PyObject *dps_obj, lo
     t = PyNumber_Index(PyTuple_GET_ITEM(me, 1));
     if (t == NULL)
         goto done;
-    if (as_ll(t, &exp) < 0) {  /* an exponent beyond a long long: the Python loop */
+    if (as_ll(t, &exp) < 0 || exp > EXP_LIMIT || exp < -EXP_LIMIT) {
+        /* an exponent so large that exp + bc could overflow a long long: the Python loop */
         PyErr_Clear();
         status = TO_PYTHON;
         goto done;
