@@ -114,36 +114,46 @@ def test_range_ends_rounded_inwards():
     assert "0.999008178710937 < m < 0.999999046325684" in e.where(Fraction(999999, 10**6))
 
 
-def test_a_range_narrower_than_the_digits_prints_in_order():
-    """Ranges next to m = 1 between gaps (e.g. torsion at D = 1/50, whose closings crowd towards
-    m = 1) can be narrower than 15 digits resolve: rounded inwards at 15 digits the first would
-    print as ``1 < m < 0.999999999999999`` and the second as ``0.999999999999997 < m <
-    0.999999999999997``.  Each prints with as many more digits as it takes for its start to lie
-    below its end, still inside the proven range."""
+#: narrow ranges next to m = 1, each narrower than 15 digits resolve
+_A1, _B1 = 1 - Fraction(1, 2**51), 1 - Fraction(1, 2**52)  # 1 - 4.4e-16 .. 1 - 2.2e-16
+_A2, _B2 = 1 - Fraction(3, 2**50), 1 - Fraction(5, 2**51)  # both print 0.999999999999997
+
+
+def _narrow_ranges_next_to_one():
+    """Order 1 at ``Q = 7`` proven to exist in the two narrow ranges (``_A2, _B2``) and (``_A1,
+    _B1``) next to m = 1, proven not to exist below 1/2, and undecided between and beside them
+    (as torsion at D = 1/50 leaves them, whose closings crowd towards m = 1)."""
     from verify.existence import Existence
 
-    a1, b1 = 1 - Fraction(1, 2**51), 1 - Fraction(1, 2**52)  # 1 - 4.4e-16 .. 1 - 2.2e-16
-    a2, b2 = 1 - Fraction(3, 2**50), 1 - Fraction(5, 2**51)  # both print 0.999999999999997
-    e = Existence(
+    return Existence(
         1,
         Fraction(7),
         "exact",
         15,
         (),
         False,
-        undecided=((Fraction(1, 2), a2), (b2, a1), (b1, Fraction(1))),
+        undecided=((Fraction(1, 2), _A2), (_B2, _A1), (_B1, Fraction(1))),
         segments=(
             (Fraction(0), Fraction(1, 2), -1),
-            (Fraction(1, 2), a2, 0),
-            (a2, b2, 1),
-            (b2, a1, 0),
-            (a1, b1, 1),
-            (b1, Fraction(1), 0),
+            (Fraction(1, 2), _A2, 0),
+            (_A2, _B2, 1),
+            (_B2, _A1, 0),
+            (_A1, _B1, 1),
+            (_B1, Fraction(1), 0),
         ),
     )
+
+
+def test_a_range_narrower_than_the_digits_prints_in_order():
+    """Ranges next to m = 1 between gaps (e.g. torsion at D = 1/50, whose closings crowd towards
+    m = 1) can be narrower than 15 digits resolve: rounded inwards at 15 digits the first would
+    print as ``1 < m < 0.999999999999999`` and the second as ``0.999999999999997 < m <
+    0.999999999999997``.  Each prints with as many more digits as it takes for its start to lie
+    below its end, still inside the proven range."""
+    e = _narrow_ranges_next_to_one()
     texts = e.interval_texts()
     assert len(texts) == 2
-    for (a, b), (lo, hi) in zip(texts, ((a2, b2), (a1, b1)), strict=True):
+    for (a, b), (lo, hi) in zip(texts, ((_A2, _B2), (_A1, _B1)), strict=True):
         assert lo <= Fraction(a) < Fraction(b) <= hi, (a, b)
     assert texts[0] == ["0.9999999999999974", "0.9999999999999977"]
     assert all(len(t.replace("0.", "", 1)) <= 17 for pair in texts for t in pair)
@@ -190,27 +200,14 @@ def test_an_undecided_range_prints_within_the_ranges_beside_it():
     outwards at 15 digits, the one between them would print as ``0.999999999999997 < m < 1``, over
     both proven ranges beside it.  Each undecided range prints with as many more digits as keep its
     rounding within the ranges beside it, still holding the undecided range; a wide one keeps 15."""
-    from verify.existence import Existence
-
-    a1, b1 = 1 - Fraction(1, 2**51), 1 - Fraction(1, 2**52)
-    a2, b2 = 1 - Fraction(3, 2**50), 1 - Fraction(5, 2**51)
-    segments = (
-        (Fraction(0), Fraction(1, 2), -1),
-        (Fraction(1, 2), a2, 0),
-        (a2, b2, 1),
-        (b2, a1, 0),
-        (a1, b1, 1),
-        (b1, Fraction(1), 0),
-    )
-    undecided = ((Fraction(1, 2), a2), (b2, a1), (b1, Fraction(1)))
-    e = Existence(1, Fraction(7), "exact", 15, (), False, undecided=undecided, segments=segments)
+    e = _narrow_ranges_next_to_one()
     texts = e.undecided_texts()
     assert texts == [
         ["0.5", "0.9999999999999974"],
         ["0.9999999999999977", "0.9999999999999996"],
         ["0.9999999999999997", "1"],
     ]
-    for (a, b), (lo, hi) in zip(texts, undecided, strict=True):
+    for (a, b), (lo, hi) in zip(texts, e.undecided, strict=True):
         assert Fraction(a) <= lo and hi <= Fraction(b)  # the undecided range held
     # none covers a proven range printed beside it
     for (a, b), (pa, pb) in zip(texts[1:], e.interval_texts(), strict=False):
