@@ -186,13 +186,9 @@ class Existence:
         above = segs[j + 1][1] if j is not None and j + 1 < len(segs) else None
         for extra in range(0, _MORE_DIGITS + 1):
             d = self.digits + extra
+            # (both ends rationals: their texts are decimal numbers)
             ta, tb = self._text(lo, up=False, digits=d), self._text(hi, up=True, digits=d)
-            try:
-                if (below is None or Fraction(ta) > below) and (
-                    above is None or Fraction(tb) < above
-                ):
-                    break
-            except ValueError:  # pragma: no cover - every end prints as a decimal number
+            if (below is None or Fraction(ta) > below) and (above is None or Fraction(tb) < above):
                 break
         return ta, tb
 
